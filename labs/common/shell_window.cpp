@@ -1,0 +1,255 @@
+// The windowed path of the shell: freeglut window, GLEW, Dear ImGui panel.
+// GLUT events go to ImGui first and are dropped when ImGui wants them
+// (as in Dear ImGui's GLUT + OpenGL2 example).
+#include "gl_util.h"
+#include "shell.h"
+
+#include <GL/freeglut.h>
+#include <imgui.h>
+#include <imgui_impl_glut.h>
+#include <imgui_impl_opengl2.h>
+
+#include <chrono>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <unistd.h>
+
+namespace wb {
+namespace {
+
+struct WindowState {
+    std::unique_ptr<Lab> lab;
+    ShellOptions opts;
+    std::string program;
+    View view;
+    bool panelVisible = true;
+    int frame = 0;
+    double frameMs = 0.0;         // CPU time of the last draw() + panel, milliseconds
+    double smoothMs = 0.0;        // the same, exponentially smoothed for reading
+    std::string lastScreenshot;   // path or error of the last screenshot, shown in the panel
+    bool screenshotRequested = false;
+    bool dragging = false;        // left button down outside the panel
+    bool moved = false;           // the drag moved far enough to be a rotation, not a click
+    int downX = 0, downY = 0, lastX = 0, lastY = 0;
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+};
+WindowState* g = nullptr;
+
+void quit() { glutLeaveMainLoop(); }
+
+void labKey(int code) {
+    if (code == 27) return quit();
+    if (!shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
+    glutPostRedisplay();
+}
+
+std::string timestampedName() {
+    char buf[64];
+    std::time_t t = std::time(nullptr);
+    std::strftime(buf, sizeof buf, "%Y%m%d-%H%M%S", std::localtime(&t));
+    std::string name = g->program;
+    auto slash = name.rfind('/');
+    if (slash != std::string::npos) name = name.substr(slash + 1);
+    return name + "-" + buf + ".png";
+}
+
+void saveScreenshot(const std::string& path) {
+    Image img = readFramebuffer(g->view.width, g->view.height);
+    std::string error;
+    g->lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
+    std::fprintf(stderr, "%s\n", g->lastScreenshot.c_str());
+}
+
+void drawPanel() {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+    ImGui::Begin(g->lab->title().c_str());
+    ImGui::Text("frame %.2f ms (%.0f fps)", g->smoothMs, g->smoothMs > 0 ? 1000.0 / g->smoothMs : 0.0);
+    if (ImGui::Button("Screenshot (PNG)")) g->screenshotRequested = true;
+    if (!g->lastScreenshot.empty()) ImGui::TextWrapped("%s", g->lastScreenshot.c_str());
+    if (ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const auto& k : g->lab->keys()) ImGui::BulletText("%-6s %s", k.key.c_str(), k.what.c_str());
+        ImGui::BulletText("%-6s %s", "h", "hide/show this panel");
+        ImGui::BulletText("%-6s %s", "+/-", "zoom (also the wheel)");
+        ImGui::BulletText("%-6s %s", "drag", "rotate the scene");
+        ImGui::BulletText("%-6s %s", "Esc", "quit");
+    }
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) g->lab->gui();
+    ImGui::End();
+}
+
+void display() {
+    auto t0 = std::chrono::steady_clock::now();
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplGLUT_NewFrame();
+    if (g->panelVisible) drawPanel();
+    ImGui::Render();
+
+    g->view.time = std::chrono::duration<double>(t0 - g->start).count();
+    glViewport(0, 0, g->view.width, g->view.height);
+    g->lab->draw(g->view);
+    bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames;
+    if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot); // scene only
+    if (g->panelVisible) {
+        // The panel draws with its own GL state; keep the lab's.
+        glPushAttrib(GL_ALL_ATTRIB_BITS);
+        glUseProgram(0);
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        glPopAttrib();
+    }
+    if (g->screenshotRequested) { // the button saves what the user sees, panel included
+        g->screenshotRequested = false;
+        saveScreenshot(timestampedName());
+    }
+    glutSwapBuffers();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    g->frameMs = ms;
+    g->smoothMs = g->frame == 0 ? ms : 0.9 * g->smoothMs + 0.1 * ms;
+    ++g->frame;
+    if (lastFrame) return quit();
+    glutPostRedisplay();
+}
+
+void reshape(int w, int h) {
+    ImGui_ImplGLUT_ReshapeFunc(w, h);
+    g->view.width = w > 0 ? w : 1;
+    g->view.height = h > 0 ? h : 1;
+}
+
+void keyboard(unsigned char c, int x, int y) {
+    ImGui_ImplGLUT_KeyboardFunc(c, x, y);
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
+    labKey(c);
+}
+
+void special(int key, int x, int y) {
+    ImGui_ImplGLUT_SpecialFunc(key, x, y);
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
+    labKey(kKeySpecial + key);
+}
+
+void mouse(int button, int state, int x, int y) {
+    ImGui_ImplGLUT_MouseFunc(button, state, x, y);
+    if (ImGui::GetIO().WantCaptureMouse && !g->dragging) return;
+    if (button != GLUT_LEFT_BUTTON) return;
+    if (state == GLUT_DOWN) {
+        g->dragging = true;
+        g->moved = false;
+        g->downX = g->lastX = x;
+        g->downY = g->lastY = y;
+    } else {
+        if (g->dragging && !g->moved) g->lab->click(x, y, g->view);
+        g->dragging = false;
+    }
+    glutPostRedisplay();
+}
+
+void motion(int x, int y) {
+    ImGui_ImplGLUT_MotionFunc(x, y);
+    if (!g->dragging) return;
+    if (std::abs(x - g->downX) + std::abs(y - g->downY) > 3) g->moved = true;
+    if (g->moved) {
+        g->view.yaw += 0.5f * float(x - g->lastX);
+        g->view.pitch += 0.5f * float(y - g->lastY);
+    }
+    g->lastX = x;
+    g->lastY = y;
+    glutPostRedisplay();
+}
+
+void wheel(int button, int dir, int x, int y) {
+    ImGui_ImplGLUT_MouseWheelFunc(button, dir, x, y);
+    if (ImGui::GetIO().WantCaptureMouse) return;
+    g->view.zoom *= dir > 0 ? 1.1f : 1.0f / 1.1f;
+    glutPostRedisplay();
+}
+
+// The headless renderer is the same lab compiled against OSMesa, installed next to us.
+int execHeadless(char** argv) {
+    char self[PATH_MAX] = {};
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) {
+        std::fprintf(stderr, "%s: cannot find my own executable\n", argv[0]);
+        return 1;
+    }
+    std::string path = std::string(self, size_t(n)) + "-headless";
+    execv(path.c_str(), argv);
+    std::perror((path + ": cannot start the headless renderer").c_str());
+    return 1;
+}
+
+} // namespace
+
+int runLab(int argc, char** argv, LabFactory factory) {
+    WindowState state;
+    g = &state;
+    state.lab = factory();
+    state.program = argv[0];
+    std::string error;
+    if (!parseOptions(argc, argv, state.lab->options(), state.opts, error)) {
+        std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
+        return 2;
+    }
+    if (state.opts.help) {
+        std::fputs(usageText(argv[0], *state.lab).c_str(), stdout);
+        return 0;
+    }
+    if (state.opts.headless) return execHeadless(argv);
+    const char* displayEnv = std::getenv("DISPLAY");
+    if (!displayEnv || !*displayEnv) {
+        std::fprintf(stderr, "%s: no display (DISPLAY is not set); render to a file with --headless --out FILE.png\n",
+                     argv[0]);
+        return 2;
+    }
+    std::vector<int> keys;
+    if (!parseKeys(state.opts.keys, keys, error) || !applyOptions(state.opts, *state.lab, error)) {
+        std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
+        return 2;
+    }
+
+    glutInit(&argc, argv);
+    glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
+    glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
+    glutInitWindowSize(state.opts.width, state.opts.height);
+    glutCreateWindow(state.lab->title().c_str());
+    state.view.width = state.opts.width;
+    state.view.height = state.opts.height;
+    GLenum glewStatus = glewInit();
+    if (glewStatus != GLEW_OK) {
+        std::fprintf(stderr, "%s: GLEW: %s\n", argv[0], reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
+        return 1;
+    }
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini littering the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGLUT_Init();
+    ImGui_ImplOpenGL2_Init();
+    glutDisplayFunc(display);
+    glutReshapeFunc(reshape);
+    glutKeyboardFunc(keyboard);
+    glutKeyboardUpFunc(ImGui_ImplGLUT_KeyboardUpFunc);
+    glutSpecialFunc(special);
+    glutSpecialUpFunc(ImGui_ImplGLUT_SpecialUpFunc);
+    glutMouseFunc(mouse);
+    glutMotionFunc(motion);
+    glutPassiveMotionFunc(ImGui_ImplGLUT_MotionFunc);
+    glutMouseWheelFunc(wheel);
+
+    state.lab->init();
+    for (int k : keys) labKey(k);
+    glutMainLoop();
+
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui_ImplGLUT_Shutdown();
+    ImGui::DestroyContext();
+    state.lab.reset(); // GL objects go while the context still exists
+    g = nullptr;
+    return 0;
+}
+
+} // namespace wb

@@ -1,0 +1,43 @@
+#include "test_lab.h"
+
+#include "common/gl.h"
+
+namespace wb::test {
+namespace {
+class TestLab : public Lab {
+public:
+    explicit TestLab(TestLabState* s) : s_(s ? s : &own_) {}
+    std::string title() const override { return "Test lab"; }
+    std::vector<KeyHelp> keys() const override { return {{"g", "green triangle"}}; }
+    void init() override { ++s_->initCalls; }
+    void draw(const View&) override {
+        ++s_->frames;
+        glClearColor(0, 0, 1, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glMatrixMode(GL_PROJECTION);
+        glLoadIdentity();
+        glMatrixMode(GL_MODELVIEW);
+        glLoadIdentity();
+        glColor3f(s_->green ? 0.f : 1.f, s_->green ? 1.f : 0.f, 0.f);
+        glBegin(GL_TRIANGLES); // covers the lower-left half of the viewport
+        glVertex2f(-1, -1);
+        glVertex2f(1, -1);
+        glVertex2f(-1, 1);
+        glEnd();
+    }
+    bool key(int k) override {
+        if (k != 'g') return false;
+        s_->green = !s_->green;
+        return true;
+    }
+    bool busy() const override { return s_->frames < 3; }
+
+private:
+    TestLabState own_;
+    TestLabState* s_;
+};
+} // namespace
+
+std::unique_ptr<Lab> makeTestLab(TestLabState* observe) { return std::make_unique<TestLab>(observe); }
+
+} // namespace wb::test
