@@ -1,0 +1,1 @@
+wb_test(lighting_test SOURCES lighting_test.cpp LIBS core)
