@@ -1,1 +1,3 @@
-# Filled in by the maths module.
+# Maths module: one target_sources line per part (affine/barycentric/bilinear; Bezier).
+target_sources(core PRIVATE src/affine.cpp)
+target_sources(core PRIVATE src/bezier.cpp src/bezier_shapes.cpp)

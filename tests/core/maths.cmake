@@ -1,0 +1,2 @@
+# Maths module tests: one wb_test per part (affine/barycentric/bilinear; Bezier).
+wb_test(affine_test SOURCES affine_test.cpp LIBS core)
