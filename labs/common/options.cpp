@@ -69,6 +69,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
                 error = "--frames '" + v + "': expected a positive count";
                 return false;
             }
+        } else if (arg == "--smoke") {
+            o.smoke = true;
         } else if (arg == "--screenshot") {
             if (!value(o.screenshot)) return false;
         } else if (arg.rfind("--", 0) == 0) {
@@ -145,7 +147,8 @@ std::string usageText(const std::string& program, const Lab& lab) {
       << "  --root DIR            folder with assets/ and shaders/ (default: the source tree;\n"
       << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
       << "  --frames N            windowed: quit after N frames (smoke tests)\n"
-      << "  --screenshot FILE.png windowed: save the last frame before quitting\n";
+      << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
+      << "  --smoke               windowed: press each one-letter key of the lab, a frame apart\n";
     for (const auto& o : lab.options()) {
         std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
         s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what << "\n";

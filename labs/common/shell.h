@@ -17,6 +17,10 @@ int runLab(int argc, char** argv, LabFactory factory);
 // Returns true when used. Esc is handled by each path (quit).
 bool shellKey(int code, View& view, bool& panelVisible);
 
+// Checks before any work that `path` can be written (creating it, then removing it if it
+// did not exist), so a long render never ends in "cannot write". False with a message naming it.
+bool checkWritable(const std::string& path, std::string& error);
+
 // Applies --root and the lab's own options; false with a message on a rejected option.
 bool applyOptions(const ShellOptions& opts, Lab& lab, std::string& error);
 

@@ -1,6 +1,11 @@
 #include "paths.h"
 #include "shell.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <sys/stat.h>
+
 namespace wb {
 
 bool shellKey(int code, View& view, bool& panelVisible) {
@@ -18,6 +23,23 @@ bool shellKey(int code, View& view, bool& panelVisible) {
     default:
         return false;
     }
+}
+
+bool checkWritable(const std::string& path, std::string& error) {
+    struct stat st {};
+    bool existed = stat(path.c_str(), &st) == 0;
+    if (existed && S_ISDIR(st.st_mode)) {
+        error = path + ": cannot write (it is a directory)";
+        return false;
+    }
+    std::FILE* f = std::fopen(path.c_str(), "ab");
+    if (!f) {
+        error = path + ": cannot write (" + std::strerror(errno) + ")";
+        return false;
+    }
+    std::fclose(f);
+    if (!existed) std::remove(path.c_str());
+    return true;
 }
 
 bool applyOptions(const ShellOptions& opts, Lab& lab, std::string& error) {

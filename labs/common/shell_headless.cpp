@@ -62,7 +62,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 2;
     }
     std::vector<int> keys;
-    if (!parseKeys(opts.keys, keys, error) || !applyOptions(opts, *lab, error)) {
+    if (!parseKeys(opts.keys, keys, error) || !checkWritable(opts.out, error) ||
+        !applyOptions(opts, *lab, error)) {
         std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
         return 2;
     }

@@ -27,6 +27,7 @@ struct WindowState {
     View view;
     bool panelVisible = true;
     int frame = 0;
+    std::vector<int> smokeKeys;   // --smoke: keys still to press, one per frame
     double frameMs = 0.0;         // CPU time of the last draw() + panel, milliseconds
     double smoothMs = 0.0;        // the same, exponentially smoothed for reading
     std::string lastScreenshot;   // path or error of the last screenshot, shown in the panel
@@ -83,6 +84,10 @@ void drawPanel() {
 
 void display() {
     auto t0 = std::chrono::steady_clock::now();
+    if (!g->smokeKeys.empty()) { // as if typed, through the same path as real key presses
+        labKey(g->smokeKeys.front());
+        g->smokeKeys.erase(g->smokeKeys.begin());
+    }
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGLUT_NewFrame();
     if (g->panelVisible) drawPanel();
@@ -92,7 +97,6 @@ void display() {
     glViewport(0, 0, g->view.width, g->view.height);
     g->lab->draw(g->view);
     bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames;
-    if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot); // scene only
     if (g->panelVisible) {
         // The panel draws with its own GL state; keep the lab's.
         glPushAttrib(GL_ALL_ATTRIB_BITS);
@@ -100,7 +104,9 @@ void display() {
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
         glPopAttrib();
     }
-    if (g->screenshotRequested) { // the button saves what the user sees, panel included
+    // --screenshot and the button save what the user sees, panel included (`h` hides it).
+    if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot);
+    if (g->screenshotRequested) {
         g->screenshotRequested = false;
         saveScreenshot(timestampedName());
     }
@@ -205,7 +211,9 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 2;
     }
     std::vector<int> keys;
-    if (!parseKeys(state.opts.keys, keys, error) || !applyOptions(state.opts, *state.lab, error)) {
+    if (!parseKeys(state.opts.keys, keys, error) ||
+        (!state.opts.screenshot.empty() && !checkWritable(state.opts.screenshot, error)) ||
+        !applyOptions(state.opts, *state.lab, error)) {
         std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
         return 2;
     }
@@ -242,12 +250,16 @@ int runLab(int argc, char** argv, LabFactory factory) {
 
     state.lab->init();
     for (int k : keys) labKey(k);
+    if (state.opts.smoke)
+        for (const auto& k : state.lab->keys())
+            if (k.key.size() == 1 && k.key[0] != 27) state.smokeKeys.push_back(static_cast<unsigned char>(k.key[0]));
     glutMainLoop();
 
     ImGui_ImplOpenGL2_Shutdown();
     ImGui_ImplGLUT_Shutdown();
     ImGui::DestroyContext();
     state.lab.reset(); // GL objects go while the context still exists
+    glutExit();        // destroys the window and its GL context (Mesa's buffers with them)
     g = nullptr;
     return 0;
 }
