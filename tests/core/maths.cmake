@@ -1,2 +1,3 @@
 # Maths module tests: one wb_test per part (affine/barycentric/bilinear; Bezier).
 wb_test(affine_test SOURCES affine_test.cpp LIBS core)
+wb_test(bezier_test SOURCES bezier_test.cpp LIBS core)
