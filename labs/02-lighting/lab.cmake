@@ -1,0 +1,2 @@
+add_lab(02-lighting lab02-lighting "Phong lighting: two cubes, keys 1-4, ambient, local viewer, emission, spot, subdivided faces, GLSL Phong"
+  SOURCES lighting_lab.cpp)

@@ -1,0 +1,440 @@
+#include "lighting_lab.h"
+
+#include "common/gl_util.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace wb {
+
+const char* comboName(int combo) {
+    switch (combo) {
+    case 1:
+        return "1: specular material + specular light";
+    case 2:
+        return "2: specular material + diffuse light";
+    case 3:
+        return "3: diffuse material + specular light";
+    default:
+        return "4: diffuse material + diffuse light";
+    }
+}
+
+Material comboMaterial(const LightingState& s) {
+    Material m;
+    m.ambient = {0.2, 0.2, 0.2, 1};
+    if (s.combo <= 2) { // the lab's listing: a dark green with a strong white highlight
+        m.diffuse = {0.0, 0.2, 0.0, 1};
+        m.specular = {0.6, 0.6, 0.6, 1};
+        m.shininess = 0.1 * 128;
+    } else { // matte: no GL_SPECULAR at all
+        m.diffuse = {0.1, 0.7, 0.1, 1};
+        m.specular = {0, 0, 0, 1};
+        m.shininess = 0;
+    }
+    if (s.emissionOn) m.emission = glm::dvec4(glm::dvec3(s.emission), 1);
+    return m;
+}
+
+Light comboLight(const LightingState& s) {
+    Light l;
+    l.ambient = {0, 0, 0, 1};
+    const glm::dvec4 c(glm::dvec3(s.lightColor), 1);
+    const bool specularLight = s.combo == 1 || s.combo == 3;
+    l.diffuse = specularLight ? glm::dvec4(0, 0, 0, 1) : c;
+    l.specular = specularLight ? c : glm::dvec4(0, 0, 0, 1);
+    l.position = glm::dvec4(s.lightPos);
+    l.constantAttenuation = s.attenuation.x;
+    l.linearAttenuation = s.attenuation.y;
+    l.quadraticAttenuation = s.attenuation.z;
+    if (s.spotOn) {
+        glm::dvec3 from =
+            s.lightPos.w != 0.0f ? glm::dvec3(s.lightPos) / double(s.lightPos.w) : glm::dvec3(0);
+        glm::dvec3 dir = glm::dvec3(s.spotTarget) - from;
+        l.spotDirection = glm::length(dir) > 0 ? dir : glm::dvec3(0, -1, 0);
+        l.spotCutoff = s.spotCutoff;
+        l.spotExponent = s.spotExponent;
+    }
+    return l;
+}
+
+LightModel lightModel(const LightingState& s) {
+    LightModel m;
+    m.ambient =
+        s.globalAmbientOn ? glm::dvec4(glm::dvec3(s.globalAmbient), 1) : glm::dvec4(0, 0, 0, 1);
+    m.localViewer = s.localViewer;
+    return m;
+}
+
+namespace {
+void toFloats(const glm::dvec4& v, GLfloat out[4]) {
+    for (int i = 0; i < 4; ++i)
+        out[i] = static_cast<GLfloat>(v[i]);
+}
+} // namespace
+
+void glApplyMaterial(const Material& m) {
+    GLfloat v[4];
+    toFloats(m.emission, v);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, v);
+    toFloats(m.ambient, v);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT, v);
+    toFloats(m.diffuse, v);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE, v);
+    toFloats(m.specular, v);
+    glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, v);
+    glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, static_cast<GLfloat>(m.shininess));
+}
+
+void glApplyLight(GLenum light, const Light& l) {
+    if (!l.enabled) {
+        glDisable(light);
+        return;
+    }
+    glEnable(light);
+    GLfloat v[4];
+    toFloats(l.ambient, v);
+    glLightfv(light, GL_AMBIENT, v);
+    toFloats(l.diffuse, v);
+    glLightfv(light, GL_DIFFUSE, v);
+    toFloats(l.specular, v);
+    glLightfv(light, GL_SPECULAR, v);
+    toFloats(l.position, v);
+    glLightfv(light, GL_POSITION, v);
+    toFloats(glm::dvec4(l.spotDirection, 0), v);
+    glLightfv(light, GL_SPOT_DIRECTION, v);
+    glLightf(light, GL_SPOT_CUTOFF, static_cast<GLfloat>(l.spotCutoff));
+    glLightf(light, GL_SPOT_EXPONENT, static_cast<GLfloat>(l.spotExponent));
+    glLightf(light, GL_CONSTANT_ATTENUATION, static_cast<GLfloat>(l.constantAttenuation));
+    glLightf(light, GL_LINEAR_ATTENUATION, static_cast<GLfloat>(l.linearAttenuation));
+    glLightf(light, GL_QUADRATIC_ATTENUATION, static_cast<GLfloat>(l.quadraticAttenuation));
+}
+
+void glApplyLightModel(const LightModel& m) {
+    GLfloat v[4];
+    toFloats(m.ambient, v);
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, v);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, m.localViewer ? GL_TRUE : GL_FALSE);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, m.twoSide ? GL_TRUE : GL_FALSE);
+}
+
+namespace {
+
+// The six faces of a cube of half-size 1: corners counter-clockwise seen from outside.
+struct Face {
+    glm::vec3 c[4];
+    glm::vec3 n;
+};
+const Face kFaces[6] = {
+    {{{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}, {0, 0, 1}},
+    {{{1, -1, -1}, {-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}}, {0, 0, -1}},
+    {{{1, -1, 1}, {1, -1, -1}, {1, 1, -1}, {1, 1, 1}}, {1, 0, 0}},
+    {{{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}}, {-1, 0, 0}},
+    {{{-1, 1, 1}, {1, 1, 1}, {1, 1, -1}, {-1, 1, -1}}, {0, 1, 0}},
+    {{{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}}, {0, -1, 0}},
+};
+
+// A cube whose faces are split into an N×N grid. Each grid vertex P gets the lab's
+// normal n_P = (a·n_A + b·n_B + c·n_C + d·n_D)/|…| with the bilinear weights of P in
+// the face (the barycentric coordinates of P with respect to the corners A, B, C, D).
+// centreNormals: the corner normals point from the cube centre through the corner.
+void drawCube(bool centreNormals, int n) {
+    for (const Face& f : kFaces) {
+        glm::vec3 cn[4];
+        for (int i = 0; i < 4; ++i)
+            cn[i] = centreNormals ? glm::normalize(f.c[i]) : f.n;
+        auto vertex = [&](int i, int j) {
+            float u = float(i) / float(n), v = float(j) / float(n);
+            float w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+            glm::vec3 p(0), nn(0);
+            for (int k = 0; k < 4; ++k) {
+                p += w[k] * f.c[k];
+                nn += w[k] * cn[k];
+            }
+            nn = glm::normalize(nn);
+            glNormal3f(nn.x, nn.y, nn.z);
+            glVertex3f(p.x, p.y, p.z);
+        };
+        glBegin(GL_QUADS);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                vertex(i, j);
+                vertex(i + 1, j);
+                vertex(i + 1, j + 1);
+                vertex(i, j + 1);
+            }
+        glEnd();
+    }
+}
+
+// A box of the given half-sizes with face normals (for the blocker).
+void drawBox(glm::vec3 half) {
+    glPushMatrix();
+    glScalef(half.x, half.y, half.z);
+    glEnable(GL_NORMALIZE); // the scale changes the normals' length
+    drawCube(false, 1);
+    glDisable(GL_NORMALIZE);
+    glPopMatrix();
+}
+
+// The light's position as an unlit marker: a small star for a positional light, an
+// arrow from the scene centre towards a directional one.
+void drawMarker(const glm::vec4& pos) {
+    glDisable(GL_LIGHTING);
+    glColor3f(1.0f, 0.9f, 0.2f);
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    if (pos.w != 0.0f) {
+        glm::vec3 p = glm::vec3(pos) / pos.w;
+        const float r = 0.18f;
+        for (int a = 0; a < 3; ++a) {
+            glm::vec3 d(0);
+            d[a] = r;
+            glVertex3f(p.x - d.x, p.y - d.y, p.z - d.z);
+            glVertex3f(p.x + d.x, p.y + d.y, p.z + d.z);
+        }
+    } else {
+        glm::vec3 d = glm::normalize(glm::vec3(pos)) * 4.0f;
+        glVertex3f(0, 0, 0);
+        glVertex3f(d.x, d.y, d.z);
+    }
+    glEnd();
+    glLineWidth(1.0f);
+    glEnable(GL_LIGHTING);
+}
+
+class LightingLab : public Lab {
+  public:
+    explicit LightingLab(LightingState* s) : s_(s ? s : &own_) {}
+    std::string title() const override { return "Lab 02 - Phong lighting"; }
+    std::vector<KeyHelp> keys() const override {
+        return {{"1", "specular material + specular light"},
+                {"2", "specular material + diffuse light"},
+                {"3", "diffuse material + specular light"},
+                {"4", "diffuse material + diffuse light"},
+                {"a", "global ambient on/off"},
+                {"v", "local / infinite viewer"},
+                {"e", "emission on/off"},
+                {"s", "smooth / flat shading"},
+                {"g", "vertex (Gouraud) / per-fragment GLSL Phong"},
+                {"[ ]", "face grid N down / up"},
+                {"w", "positional / directional light"},
+                {"t", "spot on/off"},
+                {"k", "attenuation on/off"},
+                {"m", "light marker on/off"},
+                {"b", "blocker between light and cube"},
+                {"arrows PgUp PgDn", "move the light"},
+                {", .", "spin the cubes"}};
+    }
+    void init() override {
+        // init() runs once per context (headless renders make a new one each time).
+        program_ = loadProgram("shaders/phong.vert", "shaders/phong.frag", programError_);
+    }
+    void draw(const View& view) override;
+    bool key(int k) override;
+    void gui() override;
+
+  private:
+    LightingState own_;
+    LightingState* s_;
+    GLuint program_ = 0;
+    std::string programError_;
+};
+
+void LightingLab::draw(const View& view) {
+    const LightingState& s = *s_;
+    glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    setPerspective(view, kLightingFovy, 1.0, 50.0);
+    glLoadIdentity();
+    glTranslated(0, 0, -kLightingDistance);
+    glRotatef(s.tilt, 1, 0, 0);
+    applyOrbit(view);
+
+    glShadeModel(s.smooth ? GL_SMOOTH : GL_FLAT);
+    glEnable(GL_LIGHTING);
+    glApplyLightModel(lightModel(s));
+    // Set in scene coordinates: the light turns with the scene when the mouse rotates it.
+    glApplyLight(GL_LIGHT0, comboLight(s));
+    glApplyMaterial(comboMaterial(s));
+
+    const bool glsl = s.shading == FaceShading::PhongGlsl && program_ != 0;
+    if (glsl) {
+        glUseProgram(program_);
+        glUniform1i(glGetUniformLocation(program_, "wbLightCount"), 1);
+        glUniform1i(glGetUniformLocation(program_, "wbLocalViewer"), s.localViewer ? 1 : 0);
+    }
+    const int n = std::clamp(s.subdivisions, 1, 64);
+    for (int side = 0; side < 2; ++side) {
+        glPushMatrix();
+        glTranslatef(side == 0 ? -kCubeOffset : kCubeOffset, 0, 0);
+        glRotatef(s.cubeSpin, 0, 1, 0);
+        drawCube(side == 1, n);
+        glPopMatrix();
+    }
+    if (s.showBlocker) { // halfway from the light to the top of the right cube: it casts no shadow
+        glm::vec3 light = s.lightPos.w != 0.0f ? glm::vec3(s.lightPos) / s.lightPos.w
+                                               : glm::vec3(kCubeOffset, 0, 0) +
+                                                     4.0f * glm::normalize(glm::vec3(s.lightPos));
+        glm::vec3 mid = 0.5f * (light + glm::vec3(kCubeOffset, 1, 0));
+        glPushMatrix();
+        glTranslatef(mid.x, mid.y, mid.z);
+        drawBox({0.6f, 0.05f, 0.6f});
+        glPopMatrix();
+    }
+    if (glsl) glUseProgram(0);
+    if (s.showMarker) drawMarker(s.lightPos);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+}
+
+bool LightingLab::key(int k) {
+    LightingState& s = *s_;
+    const float step = 0.25f;
+    switch (k) {
+    case '1':
+    case '2':
+    case '3':
+    case '4':
+        s.combo = k - '0';
+        return true;
+    case 'a':
+        s.globalAmbientOn = !s.globalAmbientOn;
+        return true;
+    case 'v':
+        s.localViewer = !s.localViewer;
+        return true;
+    case 'e':
+        s.emissionOn = !s.emissionOn;
+        return true;
+    case 's':
+        s.smooth = !s.smooth;
+        return true;
+    case 'g':
+        s.shading =
+            s.shading == FaceShading::Gouraud ? FaceShading::PhongGlsl : FaceShading::Gouraud;
+        return true;
+    case '[':
+        s.subdivisions = std::max(1, s.subdivisions / 2);
+        return true;
+    case ']':
+        s.subdivisions = std::min(64, s.subdivisions * 2);
+        return true;
+    case 'w':
+        s.lightPos.w = s.lightPos.w != 0.0f ? 0.0f : 1.0f;
+        return true;
+    case 't':
+        s.spotOn = !s.spotOn;
+        return true;
+    case 'k':
+        s.attenuation =
+            s.attenuation == glm::vec3(1, 0, 0) ? glm::vec3(0.2f, 0.1f, 0.05f) : glm::vec3(1, 0, 0);
+        return true;
+    case 'm':
+        s.showMarker = !s.showMarker;
+        return true;
+    case 'b':
+        s.showBlocker = !s.showBlocker;
+        return true;
+    case ',':
+        s.cubeSpin -= 10.0f;
+        return true;
+    case '.':
+        s.cubeSpin += 10.0f;
+        return true;
+    case kKeyLeft:
+        s.lightPos.x -= step;
+        return true;
+    case kKeyRight:
+        s.lightPos.x += step;
+        return true;
+    case kKeyDown:
+        s.lightPos.y -= step;
+        return true;
+    case kKeyUp:
+        s.lightPos.y += step;
+        return true;
+    case kKeyPageUp:
+        s.lightPos.z -= step;
+        return true;
+    case kKeyPageDown:
+        s.lightPos.z += step;
+        return true;
+    default:
+        return false;
+    }
+}
+
+void LightingLab::gui() {
+    LightingState& s = *s_;
+    ImGui::Text("Left cube: normals perpendicular to the faces.");
+    ImGui::Text("Right cube: normals from the cube centre through the vertex.");
+    ImGui::Separator();
+    ImGui::Text("Combination %s", comboName(s.combo));
+    for (int c = 1; c <= 4; ++c) {
+        if (c > 1) ImGui::SameLine();
+        if (ImGui::RadioButton(std::to_string(c).c_str(), s.combo == c)) s.combo = c;
+    }
+    ImGui::TextWrapped(
+        "A specular light only feeds GL_SPECULAR reflection and a diffuse light only "
+        "GL_DIFFUSE: with 3 the matte cubes show nothing but ambient light.");
+    ImGui::Separator();
+    ImGui::Checkbox("global ambient (a)", &s.globalAmbientOn);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("##ambient", &s.globalAmbient.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::Checkbox("local viewer (v)", &s.localViewer);
+    ImGui::Checkbox("emission (e)", &s.emissionOn);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("##emission", &s.emission.x, ImGuiColorEditFlags_NoInputs);
+    ImGui::Checkbox("smooth shading (s)", &s.smooth);
+    bool glsl = s.shading == FaceShading::PhongGlsl;
+    if (ImGui::Checkbox("per-fragment GLSL Phong (g)", &glsl))
+        s.shading = glsl ? FaceShading::PhongGlsl : FaceShading::Gouraud;
+    if (!programError_.empty()) ImGui::TextWrapped("shader: %s", programError_.c_str());
+    ImGui::SliderInt("face grid N ([ ])", &s.subdivisions, 1, 64);
+    ImGui::Separator();
+    bool positional = s.lightPos.w != 0.0f;
+    if (ImGui::Checkbox("positional light (w)", &positional))
+        s.lightPos.w = positional ? 1.0f : 0.0f;
+    ImGui::DragFloat3("light position", &s.lightPos.x, 0.05f);
+    ImGui::ColorEdit3("light colour", &s.lightColor.x);
+    ImGui::DragFloat3("kc kl kq (k)", &s.attenuation.x, 0.01f, 0.0f, 10.0f);
+    ImGui::Checkbox("spot (t)", &s.spotOn);
+    ImGui::DragFloat3("spot aims at", &s.spotTarget.x, 0.05f);
+    ImGui::SliderFloat("spot cutoff", &s.spotCutoff, 0.0f, 90.0f);
+    ImGui::SliderFloat("spot exponent", &s.spotExponent, 0.0f, 128.0f);
+    ImGui::Checkbox("light marker (m)", &s.showMarker);
+    ImGui::SameLine();
+    ImGui::Checkbox("blocker (b)", &s.showBlocker);
+    ImGui::SliderFloat("camera tilt", &s.tilt, -90.0f, 90.0f);
+    ImGui::Separator();
+    ImGui::TextWrapped("The light itself is invisible: hide the marker (m) and nothing shows where "
+                       "it is. The blocker (b) casts no shadow: GL lighting never asks whether "
+                       "anything lies between a vertex and the light.");
+    ImGui::TextWrapped("Highlight inside a face: with 4 vertices Gouraud only interpolates the "
+                       "vertex colours, so the brightest point is always a corner; split the face "
+                       "(N > 1) or use GLSL Phong on the right cube.");
+    ImGui::TextWrapped("Infinite viewer: every vertex sees the eye along +z, so h is the same for "
+                       "a whole flat face; the highlight needs normals that vary across the face "
+                       "(the right cube, N > 1).");
+    ImGui::TextWrapped("Local viewer: the direction to the eye changes across the face, so h "
+                       "changes too and even the flat-normal left cube can show a highlight inside "
+                       "a large subdivided face.");
+    if (s.spotOn && s.lightPos.w == 0.0f)
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "a directional light has no spot cone");
+}
+
+} // namespace
+
+std::unique_ptr<Lab> makeLightingLab() {
+    return std::make_unique<LightingLab>(nullptr);
+}
+std::unique_ptr<Lab> makeLightingLab(LightingState* observe) {
+    return std::make_unique<LightingLab>(observe);
+}
+
+} // namespace wb
