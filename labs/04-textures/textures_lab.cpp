@@ -1,0 +1,345 @@
+#include "textures_lab.h"
+
+#include "common/gl.h"
+#include "common/gl_util.h"
+#include "common/paths.h"
+#include "core/mesh.h"
+#include "environment.h"
+#include "texture_file.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+namespace wb {
+namespace {
+
+// A core mesh in float arrays for glDrawElements.
+struct GlMesh {
+    std::vector<float> positions, normals, texCoords;
+    std::vector<GLuint> indices;
+};
+
+GlMesh toGl(const Mesh& m) {
+    GlMesh g;
+    for (size_t i = 0; i < m.positions.size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            g.positions.push_back(float(m.positions[i][k]));
+            g.normals.push_back(float(m.normals[i][k]));
+        }
+        g.texCoords.push_back(float(m.texCoords[i].x));
+        g.texCoords.push_back(float(m.texCoords[i].y));
+    }
+    g.indices.assign(m.indices.begin(), m.indices.end());
+    return g;
+}
+
+void drawMesh(const GlMesh& g) {
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, g.positions.data());
+    glNormalPointer(GL_FLOAT, 0, g.normals.data());
+    glTexCoordPointer(2, GL_FLOAT, 0, g.texCoords.data());
+    glDrawElements(GL_TRIANGLES, GLsizei(g.indices.size()), GL_UNSIGNED_INT, g.indices.data());
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+}
+
+// Uploads `img` (top row first) so that t = 0 is its bottom row, as texture coordinates expect.
+void upload(GLuint tex, const Image& img) {
+    std::vector<uint8_t> rows(img.data.size());
+    const size_t stride = size_t(img.width) * 3;
+    for (int y = 0; y < img.height; ++y)
+        std::copy_n(&img.data[size_t(img.height - 1 - y) * stride], stride,
+                    &rows[size_t(y) * stride]);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, img.width, img.height, 0, GL_RGB, GL_UNSIGNED_BYTE,
+                 rows.data());
+    glGenerateMipmap(GL_TEXTURE_2D);
+}
+
+class TexturesLab : public Lab {
+  public:
+    explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_) {}
+    std::string title() const override { return "Lab 04 - textures"; }
+    std::vector<KeyHelp> keys() const override {
+        return {{"1", "flat textured object (wrap and filter show here)"},
+                {"2", "hand-made sphere"},
+                {"3", "hand-made torus"},
+                {"4", "mirror object: GL_SPHERE_MAP texgen"},
+                {"w", "GL_REPEAT / GL_CLAMP"},
+                {"f", "filter: nearest / linear / mipmaps"},
+                {"t", "texture: bricks / uv grid"},
+                {"o", "mirror object: sphere / torus"},
+                {"b", "background room on/off"},
+                {"Left/Right/Up/Down", "spin the object"}};
+    }
+    std::vector<OptionHelp> options() const override {
+        return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};
+    }
+    bool setOption(const std::string& name, const std::string& value, std::string& error) override {
+        if (name != "texture") return Lab::setOption(name, value, error);
+        s_->textureFiles[0] = value; // a bad file is reported at init and replaced by a checker
+        return true;
+    }
+
+    void init() override {
+        glGenTextures(2, textures_);
+        glGenTextures(1, &sphereMapTex_);
+        glGenTextures(1, &latLongTex_);
+        s_->message.clear();
+        for (int i = 0; i < 2; ++i) {
+            // A path given on the command line is used as typed; the defaults live under the asset
+            // root.
+            const std::string& f = s_->textureFiles[i];
+            const std::string path = f.rfind("assets/", 0) == 0 ? assetPath(f) : f;
+            Image img;
+            std::string msg;
+            if (!loadTextureImage(path, img, msg)) {
+                std::fprintf(stderr, "lab04: %s\n", msg.c_str());
+                s_->message += msg + "\n";
+            }
+            upload(textures_[i], img);
+        }
+        upload(latLongTex_, makeLatLongImage(512, 256));
+        sphere_ = toGl(makeSphere(1.2, 48, 24));
+        torus_ = toGl(makeTorus(1.1, 0.45, 64, 32));
+        room_ = toGl(makeSphere(30.0, 64, 32));
+    }
+
+    void draw(const View& view) override {
+        glViewport(0, 0, view.width, view.height);
+        glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        setPerspective(view, 45.0, 0.1, 100.0);
+        glLoadIdentity();
+        glTranslated(0.0, 0.0, -5.0);
+        applyOrbit(view);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_TEXTURE_2D);
+        glEnable(GL_NORMALIZE);
+        glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        if (s_->background && s_->scene == TextureScene::Mirror) drawRoom();
+
+        glPushMatrix();
+        if (s_->scene != TextureScene::Flat)
+            glRotated(25.0, 1.0, 0.0, 0.0); // show a pole / the hole
+        glRotated(s_->spinX, 1.0, 0.0, 0.0);
+        glRotated(s_->spinY, 0.0, 1.0, 0.0);
+        switch (s_->scene) {
+        case TextureScene::Flat:
+            drawFlat();
+            break;
+        case TextureScene::Sphere:
+            drawLit(sphere_);
+            break;
+        case TextureScene::Torus:
+            drawLit(torus_);
+            break;
+        case TextureScene::Mirror:
+            drawMirror(view);
+            break;
+        }
+        glPopMatrix();
+        glDisable(GL_TEXTURE_2D);
+    }
+
+    bool key(int k) override {
+        switch (k) {
+        case '1':
+            s_->scene = TextureScene::Flat, s_->texture = 0;
+            return true;
+        case '2':
+            s_->scene = TextureScene::Sphere, s_->texture = 1;
+            return true;
+        case '3':
+            s_->scene = TextureScene::Torus, s_->texture = 1;
+            return true;
+        case '4':
+            s_->scene = TextureScene::Mirror;
+            return true;
+        case 'w':
+            s_->repeat = !s_->repeat;
+            return true;
+        case 'f':
+            s_->filter = TextureFilter((int(s_->filter) + 1) % 3);
+            return true;
+        case 't':
+            s_->texture = 1 - s_->texture;
+            return true;
+        case 'o':
+            s_->mirrorTorus = !s_->mirrorTorus;
+            return true;
+        case 'b':
+            s_->background = !s_->background;
+            return true;
+        case kKeyLeft:
+            s_->spinY -= 10.0;
+            return true;
+        case kKeyRight:
+            s_->spinY += 10.0;
+            return true;
+        case kKeyUp:
+            s_->spinX -= 10.0;
+            return true;
+        case kKeyDown:
+            s_->spinX += 10.0;
+            return true;
+        default:
+            return false;
+        }
+    }
+
+    void gui() override {
+        int scene = int(s_->scene);
+        ImGui::Text("Scene (1-4)");
+        ImGui::RadioButton("flat", &scene, 1);
+        ImGui::SameLine();
+        ImGui::RadioButton("sphere", &scene, 2);
+        ImGui::SameLine();
+        ImGui::RadioButton("torus", &scene, 3);
+        ImGui::SameLine();
+        ImGui::RadioButton("mirror", &scene, 4);
+        s_->scene = TextureScene(scene);
+        ImGui::Checkbox("GL_REPEAT (w; off = GL_CLAMP)", &s_->repeat);
+        int filter = int(s_->filter);
+        ImGui::Combo("filter (f)", &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
+        s_->filter = TextureFilter(filter);
+        ImGui::Combo("texture (t)", &s_->texture, "bricks\0uv grid\0");
+        ImGui::Checkbox("mirror torus (o; off = sphere)", &s_->mirrorTorus);
+        ImGui::Checkbox("background room (b)", &s_->background);
+        float spin[2] = {float(s_->spinX), float(s_->spinY)};
+        if (ImGui::DragFloat2("spin x, y (arrows)", spin)) s_->spinX = spin[0], s_->spinY = spin[1];
+        ImGui::Text("sphere map rebuilt %d times (once per new view)", s_->sphereMapBuilds);
+        ImGui::TextWrapped("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
+                           "pole vertices take s at their slice's middle.");
+        if (!s_->message.empty())
+            ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%s", s_->message.c_str());
+    }
+
+  private:
+    void applyTextureParameters() {
+        const GLint wrap = s_->repeat ? GL_REPEAT : GL_CLAMP;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+        const GLint minF = s_->filter == TextureFilter::Nearest  ? GL_NEAREST
+                           : s_->filter == TextureFilter::Linear ? GL_LINEAR
+                                                                 : GL_LINEAR_MIPMAP_LINEAR;
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, minF);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER,
+                        s_->filter == TextureFilter::Nearest ? GL_NEAREST : GL_LINEAR);
+    }
+
+    void setLight() {
+        const GLfloat pos[] = {3.0f, 4.0f, 5.0f, 0.0f}; // directional, fixed in the world
+        const GLfloat white[] = {1, 1, 1, 1}, ambient[] = {0.25f, 0.25f, 0.25f, 1};
+        glLightfv(GL_LIGHT0, GL_POSITION, pos);
+        glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+        glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, white);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+    }
+
+    // A floor-like quad tilted away from the viewer; texture coordinates run from -1 to 3
+    // so GL_REPEAT shows 4×4 tiles and GL_CLAMP one tile with smeared edges, and the far
+    // end shows what each filter does with many texels per pixel.
+    void drawFlat() {
+        glBindTexture(GL_TEXTURE_2D, textures_[s_->texture]);
+        applyTextureParameters();
+        glDisable(GL_LIGHTING);
+        glColor3f(1, 1, 1);
+        glPushMatrix();
+        glRotated(-65.0, 1.0, 0.0, 0.0);
+        glBegin(GL_QUADS);
+        glNormal3f(0, 0, 1);
+        glTexCoord2f(-1, -1);
+        glVertex3f(-2.5f, -2.5f, 0);
+        glTexCoord2f(3, -1);
+        glVertex3f(2.5f, -2.5f, 0);
+        glTexCoord2f(3, 3);
+        glVertex3f(2.5f, 2.5f, 0);
+        glTexCoord2f(-1, 3);
+        glVertex3f(-2.5f, 2.5f, 0);
+        glEnd();
+        glPopMatrix();
+    }
+
+    void drawLit(const GlMesh& mesh) {
+        glBindTexture(GL_TEXTURE_2D, textures_[s_->texture]);
+        applyTextureParameters();
+        setLight();
+        drawMesh(mesh);
+        glDisable(GL_LIGHTING);
+    }
+
+    // The room at infinity on a big inside-out sphere with the latitude-longitude map.
+    void drawRoom() {
+        glBindTexture(GL_TEXTURE_2D, latLongTex_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glDisable(GL_LIGHTING);
+        glColor3f(1, 1, 1);
+        glDepthMask(GL_FALSE);
+        drawMesh(room_);
+        glDepthMask(GL_TRUE);
+    }
+
+    // GL_SPHERE_MAP texgen (section 1.5.3). The map is the environment seen from the
+    // object's centre in the current eye frame, so it is rebuilt when the viewer orbits:
+    // the reflection then moves with the viewer as a real mirror's would.
+    void drawMirror(const View& view) {
+        if (!haveMap_ || view.yaw != mapYaw_ || view.pitch != mapPitch_) {
+            glm::dmat4 r(1.0);
+            r = glm::rotate(r, glm::radians(double(view.pitch)), glm::dvec3(1, 0, 0));
+            r = glm::rotate(r, glm::radians(double(view.yaw)), glm::dvec3(0, 1, 0));
+            upload(sphereMapTex_, makeSphereMapImage(glm::dmat3(r), 256));
+            haveMap_ = true;
+            mapYaw_ = view.yaw;
+            mapPitch_ = view.pitch;
+            ++s_->sphereMapBuilds;
+        }
+        glBindTexture(GL_TEXTURE_2D, sphereMapTex_);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexGeni(GL_S, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+        glTexGeni(GL_T, GL_TEXTURE_GEN_MODE, GL_SPHERE_MAP);
+        glEnable(GL_TEXTURE_GEN_S);
+        glEnable(GL_TEXTURE_GEN_T);
+        glDisable(GL_LIGHTING); // a perfect mirror: all its colour is the reflection
+        glColor3f(1, 1, 1);
+        drawMesh(s_->mirrorTorus ? torus_ : sphere_);
+        glDisable(GL_TEXTURE_GEN_S);
+        glDisable(GL_TEXTURE_GEN_T);
+    }
+
+    TexturesLabState own_;
+    TexturesLabState* s_;
+    GLuint textures_[2] = {0, 0};
+    GLuint sphereMapTex_ = 0, latLongTex_ = 0;
+    bool haveMap_ = false;
+    float mapYaw_ = 0, mapPitch_ = 0;
+    GlMesh sphere_, torus_, room_;
+};
+
+} // namespace
+
+std::unique_ptr<Lab> makeTexturesLab() {
+    return std::make_unique<TexturesLab>(nullptr);
+}
+
+std::unique_ptr<Lab> makeTexturesLab(TexturesLabState* observe) {
+    return std::make_unique<TexturesLab>(observe);
+}
+
+} // namespace wb
