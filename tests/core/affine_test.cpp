@@ -2,6 +2,7 @@
 // for exercise 1.1, the course's own formulas written out literally, and long double
 // ray/plane intersections for the random property tests.
 #include "core/affine.h"
+#include "core/homogeneous.h"
 
 #include <catch2/catch.hpp>
 
@@ -276,4 +277,80 @@ TEST_CASE("bad input throws a clear error") {
     CHECK_THROWS_AS(shadowLineDirectional({1, 0, 0}, {0, 0}), std::invalid_argument);
     CHECK_THROWS_AS(mirrorLine({NAN, 1, 0}), std::invalid_argument);
     CHECK_THROWS_WITH(lineThrough({1, 2}, {1, 2}), Catch::Contains("coincide"));
+}
+
+TEST_CASE("batched transform: one 3xn product equals the point-by-point products") {
+    Rng rng;
+    std::vector<glm::dvec2> pts;
+    for (int i = 0; i < 1000; ++i)
+        pts.push_back(rng.vec2(10));
+    const glm::dmat3 m = shadowLinePoint(lineThrough({-3, 1}, {4, -2}), {0.5, 6});
+    const HomogeneousColumns<3> h = multiply(m, toHomogeneous(pts));
+    REQUIRE(h.cols == pts.size());
+    REQUIRE(h.data.size() == 3 * pts.size());
+    const ProjectedPoints<glm::dvec2> out = transformPoints(m, pts);
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+        const glm::dvec3 ref = m * glm::dvec3(pts[j], 1); // GLM's own product, the reference
+        // Same three products and two sums per entry; only the summation order may
+        // differ, so a few ulps of the largest term.
+        const double scale = 4 * kEps * (1 + glm::length(ref) + 100);
+        for (int r = 0; r < 3; ++r)
+            CHECK(std::abs(h.at(r, j) - ref[r]) <= scale);
+        if (ref.z != 0) {
+            REQUIRE(out.kinds[j] == PointKind::Finite);
+            CHECK(glm::length(out.points[j] - glm::dvec2(ref) / ref.z) <=
+                  1e-12 * (1 + glm::length(glm::dvec2(ref) / ref.z)));
+        }
+    }
+    CHECK(out.atInfinity == 0);
+    CHECK(out.undefined == 0);
+    // 4x4 version against GLM too.
+    std::vector<glm::dvec3> p3;
+    for (int i = 0; i < 100; ++i)
+        p3.push_back(rng.vec3(5));
+    const glm::dmat4 m4 = mirrorPlane({{1, 2, 3}, 4});
+    const ProjectedPoints<glm::dvec3> o3 = transformPoints(m4, p3);
+    for (std::size_t j = 0; j < p3.size(); ++j)
+        CHECK(glm::length(o3.points[j] - glm::dvec3(m4 * glm::dvec4(p3[j], 1))) <= 64 * kEps * 20);
+}
+
+TEST_CASE("batched transform: w = 0 gives a direction, the zero vector Undefined, never NaN") {
+    HomogeneousColumns<3> h;
+    h.cols = 6;
+    h.data = {3,     4,     0,      // w = 0: direction (0.6, 0.8)
+              1,     1,     1e-320, // x/w overflows: at infinity along (1,1)/√2
+              0,     0,     0,      // not a point
+              2,     -4,    -2,     // w < 0 is an ordinary point: (-1, 2)
+              NAN,   1,     1,      // bad input
+              1e300, 1e300, 0};     // huge direction: normalised without overflow
+    const ProjectedPoints<glm::dvec2> p = dehomogenize(h);
+    REQUIRE(p.points.size() == 6);
+    CHECK(p.kinds[0] == PointKind::AtInfinity);
+    CHECK(glm::length(p.points[0] - glm::dvec2(0.6, 0.8)) <= 2 * kEps);
+    CHECK(p.kinds[1] == PointKind::AtInfinity);
+    CHECK(glm::length(p.points[1] - glm::dvec2(1, 1) / std::sqrt(2.0)) <= 2 * kEps);
+    CHECK(p.kinds[2] == PointKind::Undefined);
+    CHECK(p.points[2] == glm::dvec2(0, 0));
+    CHECK(p.kinds[3] == PointKind::Finite);
+    CHECK(p.points[3] == glm::dvec2(-1, 2));
+    CHECK(p.kinds[4] == PointKind::Undefined);
+    CHECK(p.kinds[5] == PointKind::AtInfinity);
+    CHECK(glm::length(p.points[5] - glm::dvec2(1, 1) / std::sqrt(2.0)) <= 2 * kEps);
+    CHECK(p.atInfinity == 3);
+    CHECK(p.undefined == 2);
+    for (const glm::dvec2& v : p.points)
+        CHECK((std::isfinite(v.x) && std::isfinite(v.y)));
+}
+
+TEST_CASE("batched transform of a shadow with the light on the plane: S or Undefined") {
+    const Plane pl{{0, 1, 0}, 0};
+    const glm::dvec3 s{2, 0, -1};
+    const std::vector<glm::dvec3> pts{{0, 1, 0}, {3, 2, 1}, {5, 0, 5}, {1, -1, 1}};
+    const ProjectedPoints<glm::dvec3> out = transformPoints(shadowPoint(pl, s), pts);
+    CHECK(out.kinds[0] == PointKind::Finite);
+    CHECK(out.points[0] == s);
+    CHECK(out.points[1] == s);
+    CHECK(out.kinds[2] == PointKind::Undefined); // on the plane: the zero vector
+    CHECK(out.points[3] == s);                   // below the plane: also S
+    CHECK(out.undefined == 1);
 }
