@@ -1,0 +1,2 @@
+add_lab(06-bezier lab06-bezier "Bezier curves and patches: circle from two curves, sphere from two patches, error vs grid"
+  SOURCES bezier_lab.cpp)
