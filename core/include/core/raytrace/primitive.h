@@ -1,0 +1,43 @@
+#pragma once
+// The interface every traced object implements (seed 000's IGREENCluster.Intersect),
+// shaped so an acceleration structure can be added later: a bounding box, the
+// nearest hit inside an interval [tMin, tMax], and an any-hit query for shadow feelers.
+#include "core/raytrace/aabb.h"
+#include "core/raytrace/hit.h"
+#include "core/raytrace/ray.h"
+
+namespace wb::rt {
+
+class Primitive {
+  public:
+    virtual ~Primitive() = default;
+
+    // Nearest hit with tMin < t <= tMax. On success fills every field of `hit`
+    // (t, point, normals, cosVN, entering, solid, uv, material, primitive) and
+    // returns true; on failure leaves `hit` untouched. Never produces NaN/Inf:
+    // degenerate primitives simply report no hit.
+    virtual bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const = 0;
+
+    // Any hit in (tMin, tMax]: the shadow-feeler query. The default calls intersect().
+    virtual bool occluded(const Ray& ray, double tMin, double tMax) const {
+        Hit h;
+        return intersect(ray, tMin, tMax, h);
+    }
+
+    // A box enclosing the primitive (infinite for unbounded ones).
+    virtual Aabb bounds() const = 0;
+
+    // True for closed bodies (sphere, box, polyhedron, capped cylinder/cone, uncut
+    // ellipsoid, closed meshes): a ray crossing their surface changes medium.
+    virtual bool solid() const = 0;
+
+    int material = 0; // index into Scene::materials
+
+  protected:
+    // Completes a hit given t, point and outward normal: turns the normal against
+    // the ray, sets cosVN, entering, solid, material and primitive (seed 000:
+    // "the normal must face against the tracing ray").
+    void finishHit(const Ray& ray, Hit& hit) const;
+};
+
+} // namespace wb::rt

@@ -1,0 +1,79 @@
+#pragma once
+// Everything the tracer needs: primitives, materials, lights, background and the
+// course model's global parameters. Scenes are built in code; files come later.
+// Queries go through an Aggregate so that a BVH can replace the brute-force loop.
+#include "core/raytrace/light.h"
+#include "core/raytrace/material.h"
+#include "core/raytrace/primitive.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace wb::rt {
+
+class Scene;
+
+// A set of primitives answering ray queries. The default loops over all of them.
+class Aggregate {
+  public:
+    virtual ~Aggregate() = default;
+    // Nearest hit in (tMin, tMax].
+    virtual bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const = 0;
+    // Calls `visit` with the nearest hit of every primitive the ray meets in (tMin, tMax]
+    // (each primitive once, in no particular order); stops early when visit returns false.
+    virtual void forEachHit(const Ray& ray, double tMin, double tMax,
+                            const std::function<bool(const Hit&)>& visit) const = 0;
+};
+
+class BruteForce : public Aggregate {
+  public:
+    explicit BruteForce(const std::vector<std::unique_ptr<Primitive>>& prims) : prims_(prims) {}
+    bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
+    void forEachHit(const Ray& ray, double tMin, double tMax,
+                    const std::function<bool(const Hit&)>& visit) const override;
+
+  private:
+    const std::vector<std::unique_ptr<Primitive>>& prims_;
+};
+
+class Scene {
+  public:
+    Scene();
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    // Adds a material, returns its index.
+    int addMaterial(const Material& m);
+    // Adds a primitive with material index `materialIndex` (must exist: std::out_of_range).
+    template <class P> P& add(P prim, int materialIndex) {
+        auto p = std::make_unique<P>(std::move(prim));
+        P& ref = *p;
+        addPrimitive(std::move(p), materialIndex);
+        return ref;
+    }
+    void addPrimitive(std::unique_ptr<Primitive> prim, int materialIndex);
+    // Replaces the brute-force loop (nullptr restores it). The aggregate must refer to
+    // this scene's primitives and outlive its use.
+    void setAggregate(const Aggregate* aggregate) { aggregate_ = aggregate; }
+
+    bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+        return aggregate().intersect(ray, tMin, tMax, hit);
+    }
+    const Aggregate& aggregate() const { return aggregate_ ? *aggregate_ : bruteForce_; }
+
+    std::vector<std::unique_ptr<Primitive>> primitives;
+    std::vector<Material> materials;
+    std::vector<Light> lights;
+    glm::dvec3 background{128 / 255.0, 207 / 255.0, 1.0}; // seed 000's (128,207,255)
+    glm::dvec3 ambient{1.0};       // course model BA, 0..1 (seed 000: (255,255,255))
+    double distScale = 30.0;       // course model: SH = distScale/dist for point lights; 0 = SH 1
+    glm::dvec3 globalAmbient{0.2}; // phong model GL_LIGHT_MODEL_AMBIENT
+    Medium air;                    // medium of primary rays and outside every body
+
+  private:
+    BruteForce bruteForce_;
+    const Aggregate* aggregate_ = nullptr;
+};
+
+} // namespace wb::rt

@@ -1,0 +1,20 @@
+# Ray tracer core (issue 3): primitives, Whitted recursion, course and phong models.
+target_sources(core PRIVATE
+  src/raytrace/box.cpp
+  src/raytrace/camera.cpp
+  src/raytrace/course_model.cpp
+  src/raytrace/cylinder.cpp
+  src/raytrace/phong_model.cpp
+  src/raytrace/plane.cpp
+  src/raytrace/polyhedron.cpp
+  src/raytrace/primitive.cpp
+  src/raytrace/quadric.cpp
+  src/raytrace/ray.cpp
+  src/raytrace/rectangle.cpp
+  src/raytrace/render.cpp
+  src/raytrace/scene.cpp
+  src/raytrace/sphere.cpp
+  src/raytrace/texture.cpp
+  src/raytrace/tracer.cpp
+  src/raytrace/triangle.cpp
+)

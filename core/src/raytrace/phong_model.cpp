@@ -1,0 +1,70 @@
+#include "core/raytrace/phong_model.h"
+
+#include "core/lighting.h"
+#include "core/raytrace/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wb::rt {
+
+namespace {
+double clamp01(double x) {
+    return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
+}
+} // namespace
+
+Color PhongModel::background(const Scene& scene) const {
+    return scene.background;
+}
+
+Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, const Material& m,
+                         const glm::dvec3& surface, const std::vector<LightSample>& lights) const {
+    // The material as GL would have it.
+    wb::Material gm;
+    gm.emission = glm::dvec4(m.emission, 1);
+    gm.ambient = glm::dvec4(m.ka * surface, 1);
+    gm.diffuse = glm::dvec4(m.kd * surface, 1);
+    gm.specular = glm::dvec4(glm::dvec3(m.ks), 1);
+    gm.shininess = std::clamp(m.phongExp, 0.0, 128.0);
+    Color c = m.emission + glm::dvec3(gm.ambient) * scene.globalAmbient;
+    // Eye space = world translated so that the viewer (the ray's origin) is at 0.
+    const glm::dvec3 pos = hit.point - view.origin;
+    for (const LightSample& s : lights) {
+        const Light& l = *s.light;
+        wb::Light gl;
+        gl.ambient = glm::dvec4(l.ambient, 1);
+        gl.diffuse = glm::dvec4(l.colour, 1);
+        gl.specular = glm::dvec4(l.colour, 1);
+        gl.position = l.kind == Light::Kind::Point ? glm::dvec4(l.position - view.origin, 1)
+                                                   : glm::dvec4(-l.direction, 0);
+        gl.spotDirection = l.spotDirection;
+        gl.spotExponent = l.spotExponent;
+        gl.spotCutoff = l.spotCutoff;
+        gl.constantAttenuation = l.constantAttenuation;
+        gl.linearAttenuation = l.linearAttenuation;
+        gl.quadraticAttenuation = l.quadraticAttenuation;
+        const wb::LightTerms t = wb::lightTerms(gl, gm, true, pos, hit.normal);
+        // The shadow feeler scales what comes from the light directly, not its ambient.
+        c += t.attenuation * t.spot *
+             (glm::dvec3(gm.ambient) * l.ambient +
+              s.transmittance * (t.diffuse * glm::dvec3(gm.diffuse) * l.colour +
+                                 t.specular * glm::dvec3(gm.specular) * l.colour));
+    }
+    return c;
+}
+
+Color PhongModel::addScaled(const Color& base, const Color& term, double k) const {
+    return base + k * term;
+}
+
+Color PhongModel::scale(const Color& c, double s) const {
+    return c * s;
+}
+
+void PhongModel::toRgb8(const Color& c, uint8_t out[3]) const {
+    for (int i = 0; i < 3; ++i)
+        out[i] = uint8_t(std::lround(clamp01(c[i]) * 255.0));
+}
+
+} // namespace wb::rt

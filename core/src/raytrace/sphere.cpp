@@ -1,0 +1,63 @@
+#include "core/raytrace/sphere.h"
+
+#include "core/raytrace/quadratic.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wb::rt {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+namespace {
+bool finite3(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+} // namespace
+
+Sphere::Sphere(const glm::dvec3& c, double r) : centre(c), radius(r) {
+    if (!(r >= 0) || !std::isfinite(r) || !finite3(c))
+        throw std::invalid_argument("Sphere: radius must be finite and >= 0, centre finite");
+}
+
+bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    if (radius == 0) return false;
+    const glm::dvec3 f = ray.origin - centre;
+    const double h = glm::dot(f, ray.direction); // half b; a = 1 for a unit direction
+    // Distance from the centre to the ray's line (practical 11.1): r² − l² is the
+    // discriminant without the cancellation of h² − (|f|² − r²) for grazing rays.
+    const glm::dvec3 l = f - h * ray.direction;
+    const double ll = glm::length(l);
+    const double disc = (radius - ll) * (radius + ll);
+    const double fl = glm::length(f);
+    const double c = (fl - radius) * (fl + radius);
+    const QuadraticRoots roots = solveQuadratic(1.0, h, c, disc);
+    if (roots.count == 0) return false;
+    double t = roots.t0;
+    if (!(t > tMin && t <= tMax)) {
+        t = roots.t1;
+        if (!(t > tMin && t <= tMax)) return false;
+    }
+    glm::dvec3 p = ray.at(t);
+    glm::dvec3 n = p - centre;
+    const double nl = glm::length(n);
+    if (!(nl > 0)) return false;
+    n /= nl;
+    p = centre + radius * n; // refine onto the surface: error relative to |p|, not to |origin|
+    hit.t = t;
+    hit.point = p;
+    hit.outwardNormal = n;
+    hit.uv = glm::dvec2(std::atan2(n.y, n.x) / (2 * kPi) + 0.5,
+                        0.5 + std::asin(glm::clamp(n.z, -1.0, 1.0)) / kPi);
+    hit.hasUv = true;
+    finishHit(ray, hit);
+    return true;
+}
+
+Aabb Sphere::bounds() const {
+    return Aabb{centre - glm::dvec3(radius), centre + glm::dvec3(radius)};
+}
+
+} // namespace wb::rt

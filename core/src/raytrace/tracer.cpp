@@ -1,0 +1,138 @@
+#include "core/raytrace/tracer.h"
+
+#include "core/raytrace/texture.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace wb::rt {
+
+glm::dvec3 reflectDir(const glm::dvec3& e, const glm::dvec3& n) {
+    return glm::normalize(e - 2 * glm::dot(e, n) * n);
+}
+
+std::optional<glm::dvec3> refractDir(const glm::dvec3& v, const glm::dvec3& n, double eta) {
+    const double cv = -glm::dot(v, n);
+    const double d = 1 + eta * eta * (cv * cv - 1);
+    // d <= 0: total internal reflection (d == 0 is the critical angle itself: the
+    // refracted ray would run along the surface and carries nothing).
+    if (!(d > 0)) return std::nullopt;
+    return glm::normalize(eta * v + (eta * cv - std::sqrt(d)) * n);
+}
+
+double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
+                             double dist) const {
+    ++shadowRays;
+    Ray feeler;
+    feeler.origin = origin;
+    feeler.direction = dir;
+    double k = 1.0;
+    scene_.aggregate().forEachHit(feeler, tMin, dist, [&](const Hit& h) {
+        const double kt = scene_.materials[size_t(h.material)].kt;
+        if (kt < settings_.opaqueKt) {
+            k = 0.0; // an opaque blocker: no need to look further
+            return false;
+        }
+        k *= kt;
+        return true;
+    });
+    return k;
+}
+
+static double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
+    // How far along `dir` the point is as far from the surface as the RTG offset along
+    // the normal would put it. The cosine is floored at 1e-3 so that a light at grazing
+    // incidence (whose diffuse term is ~0 anyway) cannot push the start past blockers.
+    const double eps = glm::length(offsetRayOrigin(p, n) - p);
+    return eps / std::max(glm::dot(dir, n), 1e-3);
+}
+
+std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
+    std::vector<LightSample> out;
+    out.reserve(scene_.lights.size());
+    for (const Light& l : scene_.lights) {
+        LightSample s;
+        s.light = &l;
+        if (l.kind == Light::Kind::Point) {
+            const glm::dvec3 v = l.position - hit.point;
+            const double dist = glm::length(v);
+            s.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
+            s.distance = dist;
+        } else {
+            const double len = glm::length(l.direction);
+            s.toLight = len > 0 ? -l.direction / len : hit.normal;
+            s.distance = std::numeric_limits<double>::infinity();
+        }
+        if (glm::dot(s.toLight, hit.normal) > 0) {
+            // The feeler is the exact segment point–light, started where it is as far off
+            // the surface as the normal offset of reflected rays: a feeler that grazes a
+            // blocker's border (seed 000's does, exactly) is judged on the true line.
+            const double t0 = feelerStart(hit.point, hit.normal, s.toLight);
+            s.transmittance = t0 < s.distance ? transmittance(hit.point, s.toLight, t0, s.distance)
+                                              : 1.0; // the light is closer than the offset
+        } else {
+            s.transmittance = 0.0; // the surface faces away from the light
+        }
+        out.push_back(s);
+    }
+    return out;
+}
+
+Color Tracer::trace(const Ray& ray) const {
+    if (ray.depth == 0)
+        ++primaryRays;
+    else
+        ++secondaryRays;
+    Hit hit;
+    if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit))
+        return model_.background(scene_);
+    const Material& m = scene_.materials[size_t(hit.material)];
+    const glm::dvec3 surface =
+        (m.texture && hit.hasUv) ? sampleTexture(*m.texture, hit.uv) : m.colour;
+    Color c = model_.direct(scene_, ray, hit, m, surface, sampleLights(hit));
+
+    if (ray.depth < settings_.maxDepth) {
+        // Reflected ray: same side, same medium.
+        if (m.kr > 0 && ray.weight * m.kr >= settings_.minWeight) {
+            Ray r;
+            r.origin = offsetRayOrigin(hit.point, hit.normal);
+            r.direction = reflectDir(ray.direction, hit.normal);
+            r.weight = ray.weight * m.kr;
+            r.medium = ray.medium;
+            r.depth = ray.depth + 1;
+            c = model_.addScaled(c, trace(r), m.kr);
+        }
+        // Transmitted ray: through a thin (open) surface unchanged, into or out of a
+        // body by formula (7) with the ratio of the indices on both sides.
+        if (m.kt > 0 && ray.weight * m.kt >= settings_.minWeight) {
+            std::optional<glm::dvec3> dir = ray.direction;
+            Medium medium = ray.medium;
+            if (hit.solid) {
+                double eta;
+                if (hit.entering) {
+                    eta = ray.medium.refract / m.medium.refract;
+                    medium = m.medium;
+                } else {
+                    eta = m.medium.refract / scene_.air.refract;
+                    medium = scene_.air;
+                }
+                dir = refractDir(ray.direction, hit.normal, eta);
+            }
+            if (dir) {
+                Ray t;
+                t.origin = offsetRayOrigin(hit.point, -hit.normal);
+                t.direction = *dir;
+                t.weight = ray.weight * m.kt;
+                t.medium = medium;
+                t.depth = ray.depth + 1;
+                c = model_.addScaled(c, trace(t), m.kt);
+            }
+        }
+    }
+    // Attenuation along this ray's path in its medium (seed 000: in trace, after shading).
+    if (ray.medium.atten > 0) c = model_.scale(c, std::exp(-ray.medium.atten * hit.t));
+    return c;
+}
+
+} // namespace wb::rt

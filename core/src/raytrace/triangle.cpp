@@ -1,0 +1,62 @@
+#include "core/raytrace/triangle.h"
+
+#include <cmath>
+#include <utility>
+
+namespace wb::rt {
+
+Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool closedMesh)
+    : v0(a), v1(b), v2(c), closed_(closedMesh) {
+    const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
+    const double len = glm::length(n);
+    normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
+}
+
+bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    const glm::dvec3& dir = ray.direction;
+    // Woop–Benthin–Wald: kz = dominant axis of the direction; swap kx, ky to keep winding.
+    const glm::dvec3 ad = glm::abs(dir);
+    const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (dir[kz] < 0) std::swap(kx, ky);
+    const double sx = dir[kx] / dir[kz], sy = dir[ky] / dir[kz], sz = 1.0 / dir[kz];
+
+    const glm::dvec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
+    const double ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
+    const double bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
+    const double cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
+    double u = cx * by - cy * bx;
+    double v = ax * cy - ay * cx;
+    double w = bx * ay - by * ax;
+    if (u == 0 || v == 0 || w == 0) { // on an edge in double: decide in long double
+        using LD = long double;
+        u = double(LD(cx) * LD(by) - LD(cy) * LD(bx));
+        v = double(LD(ax) * LD(cy) - LD(ay) * LD(cx));
+        w = double(LD(bx) * LD(ay) - LD(by) * LD(ax));
+    }
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
+    const double det = u + v + w;
+    if (det == 0) return false; // ray in the triangle's plane, or degenerate projection
+    const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
+    const double t = (u * az + v * bz + w * cz) / det;
+    if (!(t > tMin && t <= tMax)) return false;
+    const double b0 = u / det, b1 = v / det, b2 = w / det;
+    hit.t = t;
+    hit.point = b0 * v0 + b1 * v1 + b2 * v2; // on the triangle, error relative to the vertices
+    hit.outwardNormal = normal_;
+    hit.uv = {b1, b2};
+    hit.hasUv = true;
+    finishHit(ray, hit);
+    return true;
+}
+
+Aabb Triangle::bounds() const {
+    Aabb b;
+    b.extend(v0);
+    b.extend(v1);
+    b.extend(v2);
+    return b;
+}
+
+} // namespace wb::rt

@@ -1,0 +1,9 @@
+# Ray tracer core tests (issue 3). The watertightness test shoots 10^6 rays in a
+# normal build and 10^5 under the sanitizers (WB_SANITIZED), which are ~20x slower.
+wb_test(raytrace_test
+  SOURCES
+    raytrace/seed000_test.cpp
+  LIBS core)
+if(WORKBENCH_SANITIZE)
+  target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)
+endif()
