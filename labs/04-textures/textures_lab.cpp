@@ -93,6 +93,7 @@ class TexturesLab : public Lab {
         glGenTextures(2, textures_);
         glGenTextures(1, &sphereMapTex_);
         glGenTextures(1, &latLongTex_);
+        haveMap_ = false; // a new context (a second headless render) has no sphere map yet
         s_->message.clear();
         for (int i = 0; i < 2; ++i) {
             // A path given on the command line is used as typed; the defaults live under the asset
