@@ -3,6 +3,8 @@
 wb_test(raytrace_test
   SOURCES
     raytrace/seed000_test.cpp
+    raytrace/primitives_test.cpp
+    raytrace/watertight_test.cpp
   LIBS core)
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)

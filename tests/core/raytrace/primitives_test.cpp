@@ -1,0 +1,359 @@
+// Each primitive against closed-form answers: hit, miss, origin inside, tangent,
+// grazing, parallel, behind the origin, far origin (|o| ~ 1e6), very near (t ~ 1e-7)
+// and very far (t ~ 1e7) hits. The expected t is exact by construction (the ray is
+// built from the hit point backwards with exactly representable numbers, or the
+// answer is computed in long double from a closed form).
+//
+// Tolerances: a correct double algorithm loses a few ULPs of the largest quantity it
+// combines, max(|origin|, t, size of the primitive). We allow 16 ULPs of that
+// (16·2^-52·scale), which still fails any cancellation-prone formula: e.g. the naive
+// h² − (|f|² − r²) discriminant for a grazing ray or a 1e6-far origin is wrong in
+// the 4th–8th digit (checked below against the reference).
+#include "core/raytrace/box.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/polyhedron.h"
+#include "core/raytrace/quadratic.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/rectangle.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace wb::rt;
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Ray makeRay(const glm::dvec3& o, const glm::dvec3& d) {
+    Ray r;
+    r.origin = o;
+    r.direction = glm::normalize(d);
+    return r;
+}
+
+double tol(double scale) {
+    return 16 * kEps * scale;
+}
+
+// Expects a hit at t with the given outward normal; checks the hit record's invariants.
+void expectHit(const Primitive& p, const Ray& r, double t, const glm::dvec3& outward, double scale,
+               double tMin = 0.0, double tMax = kInf) {
+    Hit h;
+    REQUIRE(p.intersect(r, tMin, tMax, h));
+    INFO("t " << h.t << " expected " << t);
+    CHECK(std::fabs(h.t - t) <= tol(scale));
+    CHECK(glm::length(h.outwardNormal - outward) <= 1e-9);
+    CHECK(std::fabs(glm::length(h.normal) - 1) <= 4 * kEps);
+    CHECK(h.cosVN <= 0);
+    CHECK(glm::dot(h.normal, r.direction) == Approx(h.cosVN).margin(1e-15));
+    CHECK(std::isfinite(h.point.x));
+    CHECK(std::isfinite(h.point.y));
+    CHECK(std::isfinite(h.point.z));
+    // Entering is decided by the sign of d·n, undefined for a tangent ray (d·n ~ 0).
+    if (std::fabs(glm::dot(r.direction, outward)) > 1e-12)
+        CHECK(h.entering == (p.solid() && glm::dot(r.direction, outward) < 0));
+}
+
+void expectMiss(const Primitive& p, const Ray& r, double tMin = 0.0, double tMax = kInf) {
+    Hit h;
+    CHECK_FALSE(p.intersect(r, tMin, tMax, h));
+}
+
+} // namespace
+
+TEST_CASE("quadratic: cancellation-free roots", "[raytrace][primitives]") {
+    // t² − 2·1e8·t + 1 = 0: roots 1e8 ± sqrt(1e16 − 1); the small one is 5e-9 (to 1e-25),
+    // which the textbook formula gets as 0 or 7.45e-9.
+    const QuadraticRoots r = solveQuadratic(1, -1e8, 1);
+    REQUIRE(r.count == 2);
+    CHECK(r.t0 == Approx(5e-9).epsilon(1e-15));
+    CHECK(r.t1 == Approx(2e8).epsilon(1e-15));
+    CHECK(solveQuadratic(1, 0, 1).count == 0);
+    const QuadraticRoots lin = solveQuadratic(0, 1, -4); // 2t − 4 = 0
+    REQUIRE(lin.count == 1);
+    CHECK(lin.t0 == 2);
+    CHECK(solveQuadratic(0, 0, 1).count == 0);
+    CHECK(solveQuadratic(1, 0, 0).count == 1);
+    CHECK(solveQuadratic(std::nan(""), 1, 1).count == 0);
+}
+
+TEST_CASE("sphere: hard cases", "[raytrace][primitives]") {
+    const Sphere s({0, 0, 0}, 1);
+    expectHit(s, makeRay({0, 0, 5}, {0, 0, -1}), 4, {0, 0, 1}, 5); // hit
+    expectMiss(s, makeRay({0, 2, 5}, {0, 0, -1}));                 // miss
+    expectHit(s, makeRay({0, 0, 0}, {1, 0, 0}), 1, {1, 0, 0}, 1);  // inside origin
+    expectHit(s, makeRay({0.5, 0, 0}, {-1, 0, 0}), 1.5, {-1, 0, 0}, 2);
+    expectMiss(s, makeRay({0, 0, 5}, {0, 0, 1}));                  // behind the origin
+    expectHit(s, makeRay({1, 0, 5}, {0, 0, -1}), 5, {1, 0, 0}, 5); // tangent: touches
+    expectMiss(s, makeRay({1 + 1e-9, 0, 5}, {0, 0, -1}));          // just outside
+    SECTION("grazing: x = 1 − 1e-9, exact answer 5 − sqrt((1−x)(1+x))") {
+        const double x = 1 - 1e-9; // 1 − x is exact (Sterbenz)
+        const long double a = sqrtl((1.0L - x) * (1.0L + x));
+        const Ray r = makeRay({x, 0, 5}, {0, 0, -1});
+        Hit h;
+        REQUIRE(s.intersect(r, 0, kInf, h));
+        CHECK(std::fabs(h.t - double(5.0L - a)) <= tol(5));
+        // The naive discriminant loses ~half the digits of a here.
+        const double naive = 5 - std::sqrt(25 - (x * x + 25 - 1));
+        CHECK(std::fabs(naive - double(5.0L - a)) > 100 * tol(5));
+        // The far root, from inside-out.
+        REQUIRE(s.intersect(r, h.t, kInf, h));
+        CHECK(std::fabs(h.t - double(5.0L + a)) <= tol(5));
+    }
+    SECTION("far origin |o| = 1e6, oblique") {
+        // Aim at the surface point q = (0.6, 0, 0.8) from q + 1e6·(0.8, 0, 0.6)... built so
+        // that the origin is exact: o = (800000.6, 0, 600000.8) is not exact, so the
+        // reference t is computed in long double from the rounded origin (closed form of
+        // the stable algorithm, 64-bit mantissa).
+        const glm::dvec3 o(800000.6, 0, 600000.8);
+        const glm::dvec3 d = glm::normalize(glm::dvec3(-0.8, 0, -0.6));
+        const Ray r = makeRay(o, d);
+        long double fx = o.x, fz = o.z, dx = r.direction.x, dz = r.direction.z;
+        const long double h = fx * dx + fz * dz;
+        const long double lx = fx - h * dx, lz = fz - h * dz;
+        const long double l = sqrtl(lx * lx + lz * lz);
+        const long double ref = -h - sqrtl((1 - l) * (1 + l));
+        Hit hit;
+        REQUIRE(s.intersect(r, 0, kInf, hit));
+        CHECK(std::fabs(hit.t - double(ref)) <= tol(1e6));
+        CHECK(std::fabs(glm::length(hit.point) - 1) <= 4 * kEps); // refined onto the surface
+        CHECK(glm::length(hit.point - glm::dvec3(0.6, 0, 0.8)) < 1e-9);
+    }
+    expectHit(s, makeRay({0, 0, 1e6}, {0, 0, -1}), 1e6 - 1, {0, 0, 1}, 1e6); // far, exact
+    expectHit(s, makeRay({0, 0, 1 + 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1},
+              1); // t ~ 1.2e-7
+    const Sphere farS({0, 0, -1e7}, 1);
+    expectHit(farS, makeRay({0, 0, 0}, {0, 0, -1}), 1e7 - 1, {0, 0, 1}, 1e7); // t ~ 1e7
+    expectMiss(s, makeRay({0, 0, 5}, {0, 0, -1}), 0, 3.9);                    // tMax respected
+    expectMiss(Sphere({0, 0, 0}, 0), makeRay({0, 0, 5}, {0, 0, -1}));         // zero radius
+    CHECK_THROWS_AS(Sphere({0, 0, 0}, -1), std::invalid_argument);
+}
+
+TEST_CASE("plane: hard cases", "[raytrace][primitives]") {
+    const Plane p({0, 0, 2}, {0, 0, 3}); // z = 2, normal normalised
+    CHECK(p.normal == glm::dvec3(0, 0, 1));
+    expectHit(p, makeRay({1, 1, 5}, {0, 0, -1}), 3, {0, 0, 1}, 5);
+    expectHit(p, makeRay({1, 1, -5}, {0, 0, 1}), 7, {0, 0, 1}, 7); // from the back
+    expectMiss(p, makeRay({0, 0, 5}, {0, 0, 1}));                  // behind
+    expectMiss(p, makeRay({0, 0, 5}, {1, 0, 0}));                  // parallel
+    expectMiss(p, makeRay({0, 0, 2}, {1, 0, 0}));                  // parallel, inside the plane
+    // Nearly parallel: d = (1, 0, −1e-9) normalised, from height 5: t = 3/|dz| ~ 3e9.
+    const Ray np = makeRay({0, 0, 5}, {1, 0, -1e-9});
+    Hit h;
+    REQUIRE(p.intersect(np, 0, kInf, h));
+    CHECK(h.t == Approx(3.0 / -np.direction.z).epsilon(1e-14));
+    CHECK(h.point.z == 2.0); // projected back onto the plane
+    expectMiss(p, np, 0, 1e9);
+    expectHit(p, makeRay({1e6, -1e6, 1e6}, {0, 0, -1}), 1e6 - 2, {0, 0, 1}, 1e6); // far origin
+    expectHit(p, makeRay({0, 0, 2 + 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1}, 2);
+    expectHit(p, makeRay({0, 0, 2 + 1e7}, {0, 0, -1}), 1e7, {0, 0, 1}, 1e7);
+    CHECK_THROWS_AS(Plane({0, 0, 0}, {0, 0, 0}), std::invalid_argument);
+    SECTION("texture bound by three points") {
+        Plane t({0, 0, 0}, {0, 0, 1});
+        t.bindTexture({1, 1, 0}, {3, 1, 0}, {1, 5, 0});
+        REQUIRE(t.intersect(makeRay({2, 3, 1}, {0, 0, -1}), 0, kInf, h));
+        REQUIRE(h.hasUv);
+        CHECK(h.uv.x == Approx(0.5));
+        CHECK(h.uv.y == Approx(0.5));
+        CHECK_THROWS_AS(t.bindTexture({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), std::invalid_argument);
+    }
+}
+
+TEST_CASE("rectangle: hard cases", "[raytrace][primitives]") {
+    const Rectangle r({0, 0, 0}, {2, 0, 0}, {0, 1, 0}); // 2×1 in z = 0
+    expectHit(r, makeRay({1, 0.5, 3}, {0, 0, -1}), 3, {0, 0, 1}, 3);
+    expectMiss(r, makeRay({3, 0.5, 3}, {0, 0, -1}));
+    expectHit(r, makeRay({2, 1, 3}, {0, 0, -1}), 3, {0, 0, 1}, 3);   // corner counts
+    expectHit(r, makeRay({0, 0.5, 3}, {0, 0, -1}), 3, {0, 0, 1}, 3); // edge counts
+    expectMiss(r, makeRay({2 + 1e-9, 0.5, 3}, {0, 0, -1}));          // just outside
+    expectMiss(r, makeRay({1, 0.5, 3}, {0, 0, 1}));                  // behind
+    expectMiss(r, makeRay({-1, 0.5, 0}, {1, 0, 0}));                 // parallel, in the plane
+    expectHit(r, makeRay({1, 0.5, -3}, {0, 0, 1}), 3, {0, 0, 1}, 3); // back side
+    expectHit(r, makeRay({1, 0.5, 1e6}, {0, 0, -1}), 1e6, {0, 0, 1}, 1e6);
+    expectHit(r, makeRay({1, 0.5, 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1}, 1);
+    // Grazing: nearly in-plane ray from far away still finds the right u.
+    const Ray g = makeRay({-1e3, 0.5, 1e-3}, {1e3 + 1, 0, -1e-3});
+    Hit h;
+    REQUIRE(r.intersect(g, 0, kInf, h));
+    CHECK(h.uv.x == Approx(1.0 / 2).margin(1e-9));
+    CHECK_THROWS_AS(Rectangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0}), std::invalid_argument);
+}
+
+TEST_CASE("triangle: hard cases", "[raytrace][primitives]") {
+    const Triangle t({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    expectHit(t, makeRay({0.25, 0.25, 2}, {0, 0, -1}), 2, {0, 0, 1}, 2);
+    expectMiss(t, makeRay({0.75, 0.75, 2}, {0, 0, -1}));
+    expectHit(t, makeRay({0, 0, 2}, {0, 0, -1}), 2, {0, 0, 1}, 2);       // through a vertex
+    expectHit(t, makeRay({0.5, 0.5, 2}, {0, 0, -1}), 2, {0, 0, 1}, 2);   // on the hypotenuse
+    expectMiss(t, makeRay({0.25, 0.25, 2}, {0, 0, 1}));                  // behind
+    expectMiss(t, makeRay({-1, 0.25, 0}, {1, 0, 0}));                    // in its plane
+    expectHit(t, makeRay({0.25, 0.25, -2}, {0, 0, 1}), 2, {0, 0, 1}, 2); // back side
+    // Far origin, oblique: aim at barycentric point (1/4, 1/4) from 1e6 away along an
+    // exactly representable direction (3, 4, 12)/13.
+    const glm::dvec3 q(0.25, 0.25, 0);
+    const glm::dvec3 d = glm::dvec3(3, 4, 12) / 13.0;
+    expectHit(t, makeRay(q + 1e6 * d, -d), 1e6, {0, 0, 1}, 1e6);
+    expectHit(t, makeRay({0.25, 0.25, 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1}, 1);
+    expectHit(t, makeRay({0.25, 0.25, 1e7}, {0, 0, -1}), 1e7, {0, 0, 1}, 1e7);
+    expectMiss(Triangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2}),
+               makeRay({1, 1, 5}, {0, 0, -1})); // zero area
+    Hit h;
+    REQUIRE(t.intersect(makeRay({0.2, 0.3, 1}, {0, 0, -1}), 0, kInf, h));
+    CHECK(h.uv.x == Approx(0.2)); // barycentrics of v1, v2
+    CHECK(h.uv.y == Approx(0.3));
+}
+
+TEST_CASE("box (slab method of seed 000): hard cases", "[raytrace][primitives]") {
+    const Box b = Box::axisAligned({-1, -1, -1}, {1, 1, 1});
+    expectHit(b, makeRay({0, 0, 5}, {0, 0, -1}), 4, {0, 0, 1}, 5);
+    expectHit(b, makeRay({5, 0.5, 0}, {-1, 0, 0}), 4, {1, 0, 0}, 5);
+    expectMiss(b, makeRay({0, 2, 5}, {0, 0, -1}));
+    expectHit(b, makeRay({0, 0, 0}, {0, 1, 0}), 1, {0, 1, 0}, 1);  // inside
+    expectMiss(b, makeRay({0, 0, 5}, {0, 0, 1}));                  // behind
+    expectMiss(b, makeRay({0, 1.5, 5}, {0, 0, -1}));               // parallel to a slab, outside
+    expectHit(b, makeRay({1, 0, 5}, {0, 0, -1}), 4, {0, 0, 1}, 5); // grazing along a face
+    { // through a corner: t exact up to the direction's rounding, some face's normal
+        Hit h;
+        REQUIRE(b.intersect(makeRay({3, 3, 3}, {-1, -1, -1}), 0, kInf, h));
+        CHECK(std::fabs(h.t - 2 * std::sqrt(3.0)) <= tol(6));
+        CHECK(std::fabs(glm::length(h.outwardNormal) - 1) <= 4 * kEps);
+    }
+    expectHit(b, makeRay({0, 0, 1e6}, {0, 0, -1}), 1e6 - 1, {0, 0, 1}, 1e6);
+    expectHit(b, makeRay({0, 0, 1 + 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1}, 1);
+    expectHit(b, makeRay({0, 0, 1e7 + 1}, {0, 0, -1}), 1e7, {0, 0, 1}, 1e7);
+    // A sheared parallelepiped: loc 0, E1 = (2,0,0), E2 = (1,1,0), E3 = (0,0,1).
+    const Box p({0, 0, 0}, {2, 0, 0}, {1, 1, 0}, {0, 0, 1});
+    expectHit(p, makeRay({1.5, 0.5, 3}, {0, 0, -1}), 2, {0, 0, 1}, 3);
+    expectMiss(p, makeRay({0.25, 0.75, 3}, {0, 0, -1})); // left of the slanted face
+    const double s = std::sqrt(0.5);
+    expectHit(p, makeRay({-1, 0.5, 0.5}, {1, 0, 0}), 1.5, {-s, s, 0}, 2);
+    CHECK_THROWS_AS(Box({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 1}), std::invalid_argument);
+}
+
+TEST_CASE("convex polyhedron (practical 11.4): hard cases", "[raytrace][primitives]") {
+    // The unit cube |x|,|y|,|z| <= 1 as six half-spaces, and a tetrahedron.
+    std::vector<ConvexPolyhedron::Face> cube;
+    for (int i = 0; i < 3; ++i)
+        for (int s = -1; s <= 1; s += 2) {
+            glm::dvec3 n(0.0);
+            n[i] = s * 2.0; // unnormalised on purpose
+            cube.push_back({n, 2.0});
+        }
+    const ConvexPolyhedron c(cube);
+    const Aabb bb = c.bounds();
+    CHECK(bb.lo == glm::dvec3(-1));
+    CHECK(bb.hi == glm::dvec3(1));
+    expectHit(c, makeRay({0, 0, 5}, {0, 0, -1}), 4, {0, 0, 1}, 5);
+    expectMiss(c, makeRay({0, 2, 5}, {0, 0, -1}));
+    expectHit(c, makeRay({0, 0, 0}, {0, 1, 0}), 1, {0, 1, 0}, 1);  // inside: bMin
+    expectMiss(c, makeRay({0, 0, 5}, {0, 0, 1}));                  // behind
+    expectMiss(c, makeRay({0, 1.5, 5}, {0, 0, -1}));               // parallel, outside a face
+    expectHit(c, makeRay({0, 1, 5}, {0, 0, -1}), 4, {0, 0, 1}, 5); // grazing along a face
+    expectHit(c, makeRay({0, 0, 1e6}, {0, 0, -1}), 1e6 - 1, {0, 0, 1}, 1e6);
+    expectHit(c, makeRay({0, 0, 1 + 1.0 / 8388608}, {0, 0, -1}), 1.0 / 8388608, {0, 0, 1}, 1);
+    expectHit(c, makeRay({0, 0, 1e7 + 1}, {0, 0, -1}), 1e7, {0, 0, 1}, 1e7);
+    // fbfbb-type miss of the course's figure: passes beside an edge.
+    expectMiss(c, makeRay({-3, 0, 1.5}, {1, 0, -0.1}));
+    // Tetrahedron x, y, z >= 0, x + y + z <= 1.
+    const double s3 = 1 / std::sqrt(3.0);
+    const ConvexPolyhedron tet({{{-1, 0, 0}, 0}, {{0, -1, 0}, 0}, {{0, 0, -1}, 0}, {{1, 1, 1}, 1}});
+    expectHit(tet, makeRay({0.25, 0.25, 5}, {0, 0, -1}), 4.5, {s3, s3, s3}, 5);
+    expectHit(tet, makeRay({0.25, 0.25, -5}, {0, 0, 1}), 5, {0, 0, -1}, 5);
+    // Unbounded: a half-space has an infinite box.
+    const ConvexPolyhedron half({{{0, 0, 1}, 0}});
+    CHECK_FALSE(half.bounds().bounded());
+    expectHit(half, makeRay({0, 0, 3}, {0, 0, -1}), 3, {0, 0, 1}, 3);
+    CHECK_THROWS_AS(ConvexPolyhedron({{{0, 0, 0}, 1}}), std::invalid_argument);
+}
+
+TEST_CASE("cylinder and cone with caps (practical 11.5): hard cases", "[raytrace][primitives]") {
+    const Cone cyl = makeCylinder({0, 0, 0}, {0, 0, 2}, 1);             // axis z, 0 <= z <= 2
+    expectHit(cyl, makeRay({5, 0, 1}, {-1, 0, 0}), 4, {1, 0, 0}, 5);    // side
+    expectHit(cyl, makeRay({0.5, 0, 5}, {0, 0, -1}), 3, {0, 0, 1}, 5);  // top cap
+    expectHit(cyl, makeRay({0.5, 0, -5}, {0, 0, 1}), 5, {0, 0, -1}, 5); // bottom cap
+    expectMiss(cyl, makeRay({5, 0, 3}, {-1, 0, 0}));                    // above
+    expectMiss(cyl, makeRay({5, 0, 1}, {1, 0, 0}));                     // behind
+    expectHit(cyl, makeRay({0, 0, 1}, {1, 0, 0}), 1, {1, 0, 0}, 1);     // inside
+    expectHit(cyl, makeRay({0, 0, 1}, {0, 0, 1}), 1, {0, 0, 1}, 1);     // inside, along the axis
+    expectMiss(cyl, makeRay({1.5, 0, 5}, {0, 0, -1})); // parallel to the axis, outside
+    expectHit(cyl, makeRay({1, 5, 1}, {0, -1, 0}), 5, {1, 0, 0}, 5); // tangent to the side
+    expectMiss(cyl, makeRay({1 + 1e-9, 5, 1}, {0, -1, 0}));
+    SECTION("grazing the side: x = 1 − 1e-9, exact 5 − sqrt((1−x)(1+x))") {
+        const double x = 1 - 1e-9;
+        const long double a = sqrtl((1.0L - x) * (1.0L + x));
+        Hit h;
+        REQUIRE(cyl.intersect(makeRay({x, 5, 1}, {0, -1, 0}), 0, kInf, h));
+        CHECK(std::fabs(h.t - double(5.0L - a)) <= tol(5));
+    }
+    expectHit(cyl, makeRay({1e6, 0, 1}, {-1, 0, 0}), 1e6 - 1, {1, 0, 0}, 1e6);
+    expectHit(cyl, makeRay({1 + 1.0 / 8388608, 0, 1}, {-1, 0, 0}), 1.0 / 8388608, {1, 0, 0}, 1);
+    expectHit(cyl, makeRay({1e7 + 1, 0, 1}, {-1, 0, 0}), 1e7, {1, 0, 0}, 1e7);
+    // Truncated cone: radius 2 at z = 0, 1 at z = 2 (k = −1/2). Side point at z = 1 has
+    // radius 1.5; outward normal ∝ (1, 0, 0.5) (gradient (x, y, −k·r(z))).
+    const Cone cone({0, 0, 0}, 2, {0, 0, 2}, 1);
+    const glm::dvec3 nc = glm::normalize(glm::dvec3(1, 0, 0.5));
+    expectHit(cone, makeRay({5, 0, 1}, {-1, 0, 0}), 3.5, nc, 5);
+    expectHit(cone, makeRay({0, 0, 1}, {1, 0, 0}), 1.5, nc, 2); // inside
+    expectHit(cone, makeRay({0.5, 0, 5}, {0, 0, -1}), 3, {0, 0, 1}, 5);
+    expectMiss(cone, makeRay({1.5, 0, 5}, {0, 0, -1}), 0, 2.9);  // misses the top cap ...
+    expectHit(cone, makeRay({1.5, 0, 5}, {0, 0, -1}), 4, nc, 5); // ... hits the side at z = 1
+    // A cone to a point: its apex is on the axis, the side still has a normal.
+    const Cone tip({0, 0, 0}, 1, {0, 0, 1}, 0);
+    expectHit(tip, makeRay({0, 0, -3}, {0, 0, 1}), 3, {0, 0, -1}, 3);
+    CHECK_THROWS_AS(Cone({0, 0, 0}, 1, {0, 0, 0}, 1), std::invalid_argument);
+    CHECK_THROWS_AS(Cone({0, 0, 0}, 0, {0, 0, 1}, 0), std::invalid_argument);
+    const Aabb cb = cyl.bounds();
+    CHECK(cb.lo == glm::dvec3(-1, -1, 0));
+    CHECK(cb.hi == glm::dvec3(1, 1, 2));
+}
+
+TEST_CASE("ellipsoid, paraboloid, hyperboloid with cutting planes (seed 001)",
+          "[raytrace][primitives]") {
+    const Quadric e(Quadric::Kind::Ellipsoid, {0, 0, 0}, {2, 1, 0.5});
+    CHECK(e.solid());
+    expectHit(e, makeRay({5, 0, 0}, {-1, 0, 0}), 3, {1, 0, 0}, 5);
+    expectHit(e, makeRay({0, 0, 5}, {0, 0, -1}), 4.5, {0, 0, 1}, 5);
+    expectMiss(e, makeRay({0, 1.5, 5}, {0, 0, -1}));
+    expectHit(e, makeRay({0, 0, 0}, {0, 1, 0}), 1, {0, 1, 0}, 1);  // inside
+    expectMiss(e, makeRay({5, 0, 0}, {1, 0, 0}));                  // behind
+    expectHit(e, makeRay({0, 1, 5}, {0, 0, -1}), 5, {0, 1, 0}, 5); // tangent
+    expectHit(e, makeRay({1e6, 0, 0}, {-1, 0, 0}), 1e6 - 2, {1, 0, 0}, 1e6);
+    expectHit(e, makeRay({2 + 1.0 / 4194304, 0, 0}, {-1, 0, 0}), 1.0 / 4194304, {1, 0, 0}, 2);
+    expectHit(e, makeRay({1e7 + 2, 0, 0}, {-1, 0, 0}), 1e7, {1, 0, 0}, 1e7);
+    SECTION("grazing, against long double") {
+        const double y = 1 - 1e-9; // x²/4 + y² = 1 at x = 2·sqrt((1−y)(1+y))
+        const long double a = 2 * sqrtl((1.0L - y) * (1.0L + y));
+        Hit h;
+        REQUIRE(e.intersect(makeRay({5, y, 0}, {-1, 0, 0}), 0, kInf, h));
+        CHECK(std::fabs(h.t - double(5.0L - a)) <= tol(5));
+    }
+    // Cut at z <= 0.25: the top is open, a ray down the axis enters through the inside.
+    const Quadric cut(Quadric::Kind::Ellipsoid, {0, 0, 0}, {1, 1, 1}, -2, 0.25);
+    CHECK_FALSE(cut.solid());
+    expectHit(cut, makeRay({0, 0, 5}, {0, 0, -1}), 6, {0, 0, -1}, 6);
+    // Paraboloid z = x² + y² (A = B = C = 1), cut at z <= 4.
+    const Quadric par(Quadric::Kind::Paraboloid, {0, 0, 0}, {1, 1, 1}, -1e300, 4);
+    const glm::dvec3 np = glm::normalize(glm::dvec3(2, 0, -1)); // gradient (2x, 2y, −1) at x = 1
+    expectHit(par, makeRay({5, 0, 1}, {-1, 0, 0}), 4, np, 5);
+    expectHit(par, makeRay({0, 0, 5}, {0, 0, -1}), 5, {0, 0, -1}, 5); // vertex, from inside the cup
+    expectMiss(par, makeRay({5, 0, 5}, {-1, 0, 0}));                  // above the cut
+    expectHit(par, makeRay({1e6, 0, 1}, {-1, 0, 0}), 1e6 - 1, np, 1e6);
+    CHECK(par.bounds().hi == glm::dvec3(2, 2, 4));
+    // Seed 001's "paraboloid" equation: x² + y² − z² = 1 between z = −1 and 1.
+    const Quadric hyp(Quadric::Kind::Hyperboloid, {0, 0, 0}, {1, 1, 1}, -1, 1);
+    expectHit(hyp, makeRay({5, 0, 0}, {-1, 0, 0}), 4, {1, 0, 0}, 5);
+    expectMiss(hyp, makeRay({0, 0, 5}, {0, 0, -1})); // through the open axis
+    CHECK_THROWS_AS(Quadric(Quadric::Kind::Ellipsoid, {0, 0, 0}, {1, 0, 1}), std::invalid_argument);
+    Hit h;
+    REQUIRE(e.intersect(makeRay({5, 0, 0}, {-1, 0, 0}), 0, kInf, h));
+    REQUIRE(h.hasUv);
+    CHECK(h.uv.x == Approx(0.5)); // longitude 0
+    CHECK(h.uv.y == Approx(0.5)); // equator
+}
