@@ -1,0 +1,2 @@
+add_lab(03-transforms lab03-transforms "Transforms and projections: table, book, pen, teapot, classroom 3x4, ortho/perspective/frustum, mirror in the wall"
+  SOURCES transforms_lab.cpp)
