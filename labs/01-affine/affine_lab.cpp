@@ -414,7 +414,7 @@ class AffineLab : public Lab {
         gluPerspective(fovy, double(view.width) / double(std::max(view.height, 1)), 0.5, 200.0);
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
-        glTranslated(0, -1.0, -26);
+        glTranslated(0, -1.5, -21);
         glRotated(22, 1, 0, 0); // look down on the plane by default
         glRotatef(view.pitch, 1, 0, 0);
         glRotatef(view.yaw - 25.0f, 0, 1, 0);
