@@ -1,0 +1,568 @@
+#include "stencil_lab.h"
+
+#include "common/gl.h"
+#include "common/gl_util.h"
+#include "core/affine.h"
+#include "core/mesh.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace wb {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kStepW = 0.8, kStepH = 0.4, kStairX0 = -1.6, kStairZ = 1.2;
+constexpr double kWallZ = -3.0, kMirrorZ = -2.98; // mirrors hang 2 cm in front of the wall
+const glm::dvec3 kLight(-3.5, 5.0, 2.0);          // point light, also drawn as a small marker
+constexpr float kShadowAlpha = 0.5f;              // each shadow pixel keeps 1 - 0.5 of its colour
+
+using Quad = std::array<glm::dvec3, 4>; // counter-clockwise seen from the front
+
+// A planar part of the scene that can receive the shadow: its plane (normal towards the
+// side it is seen and lit from), its quads, its colour and its stencil value.
+struct Receiver {
+    Plane plane;
+    std::vector<Quad> quads;
+    glm::vec3 colour;
+    uint8_t stencil;
+    bool stairsCast; // the stairs also cast their shadow here (floor, wall); on themselves they
+                     // cannot
+};
+
+struct Triangle {
+    glm::dvec3 p[3], n[3];
+};
+
+void drawQuads(const std::vector<Quad>& quads, const glm::dvec3& normal) {
+    glBegin(GL_QUADS);
+    glNormal3dv(glm::value_ptr(normal));
+    for (const Quad& q : quads)
+        for (const glm::dvec3& v : q)
+            glVertex3dv(glm::value_ptr(v));
+    glEnd();
+}
+
+// The part of triangle `t` on the positive side of `plane` (Sutherland-Hodgman against one
+// plane): 0, 3 or 4 vertices.
+std::vector<glm::dvec3> clipToPositive(const Triangle& t, const Plane& plane) {
+    std::vector<glm::dvec3> out;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec3 &a = t.p[i], &b = t.p[(i + 1) % 3];
+        const double da = glm::dot(plane.n, a) + plane.d, db = glm::dot(plane.n, b) + plane.d;
+        if (da >= 0) out.push_back(a);
+        if ((da >= 0) != (db >= 0)) out.push_back(a + (b - a) * (da / (da - db)));
+    }
+    return out;
+}
+
+// Palette for the raw stencil view: one colour per value, halved where the shadow bit is set.
+void stencilColour(uint8_t v, uint8_t* rgb) {
+    static const uint8_t base[][3] = {{0, 0, 0},      {230, 60, 60},   {60, 200, 230},
+                                      {150, 110, 60}, {120, 140, 200}, {200, 200, 80},
+                                      {90, 220, 90},  {220, 140, 40}};
+    const uint8_t value = v & 0x7F;
+    const uint8_t* c = base[value < 8 ? value : 6 + (value % 2)];
+    const bool lighter = value >= 8 && (value / 2) % 2 == 1; // alternate steps stay distinguishable
+    for (int k = 0; k < 3; ++k) {
+        int x = c[k];
+        if (lighter) x = std::min(255, x + 60);
+        if (v & kShadowBit) x /= 2;
+        rgb[k] = uint8_t(x);
+    }
+}
+
+class StencilLab : public Lab {
+  public:
+    explicit StencilLab(StencilLabState* s) : s_(s ? s : &own_) {}
+    std::string title() const override { return "Lab 05 - stencil buffer"; }
+    std::vector<KeyHelp> keys() const override {
+        return {{"s", "shadow on the stairs on/off"},
+                {"n", "naive shadow without stencil (leaks, double blending)"},
+                {"r", "rectangular mirror on/off"},
+                {"e", "elliptical mirror on/off"},
+                {"m", "show the raw stencil buffer"},
+                {"Left/Right", "move the object along x"},
+                {"Up/Down", "move the object along z"},
+                {"PageUp/PageDown", "move the object up/down"}};
+    }
+
+    void init() override { torus_ = makeTorus(0.5, 0.2, 40, 20); }
+
+    void draw(const View& view) override {
+        buildScene();
+        glViewport(0, 0, view.width, view.height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+        glClearStencil(0);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        setPerspective(view, 40.0, 0.5, 60.0);
+        glLoadIdentity();
+        glTranslated(0.0, 0.0, -12.0);
+        glRotated(15.0, 1.0, 0.0, 0.0); // a little from above, then the mouse orbit
+        applyOrbit(view);
+        glTranslated(0.0, -2.0, 0.0);
+        recordOutlines(view);
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LEQUAL);
+        glEnable(GL_CULL_FACE); // wrong front faces in the reflection would show as holes
+        glEnable(GL_NORMALIZE);
+
+        if (s_->rectMirror || s_->ellipseMirror) drawMirrors();
+
+        // 4th pass: the real scene, no stencil test.
+        drawScene();
+
+        if (s_->shadow) {
+            if (s_->naiveShadow)
+                drawNaiveShadow();
+            else
+                drawStencilShadow();
+        }
+
+        // The stencil as the frame leaves it: for the tests, and for `m`.
+        s_->width = view.width;
+        s_->height = view.height;
+        s_->stencil.assign(size_t(view.width) * size_t(view.height), 0);
+        std::vector<uint8_t> rows(s_->stencil.size());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, view.width, view.height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE,
+                     rows.data());
+        for (int y = 0; y < view.height; ++y)
+            std::copy_n(&rows[size_t(view.height - 1 - y) * size_t(view.width)], view.width,
+                        &s_->stencil[size_t(y) * size_t(view.width)]);
+        if (s_->showMask) drawMask(view, rows);
+    }
+
+    bool key(int k) override {
+        const double step = 0.1;
+        switch (k) {
+        case 's':
+            s_->shadow = !s_->shadow;
+            return true;
+        case 'n':
+            s_->naiveShadow = !s_->naiveShadow;
+            return true;
+        case 'r':
+            s_->rectMirror = !s_->rectMirror;
+            return true;
+        case 'e':
+            s_->ellipseMirror = !s_->ellipseMirror;
+            return true;
+        case 'm':
+            s_->showMask = !s_->showMask;
+            return true;
+        case kKeyLeft:
+            s_->object.x -= step;
+            break;
+        case kKeyRight:
+            s_->object.x += step;
+            break;
+        case kKeyUp:
+            s_->object.z -= step;
+            break;
+        case kKeyDown:
+            s_->object.z += step;
+            break;
+        case kKeyPageUp:
+            s_->object.y += step;
+            break;
+        case kKeyPageDown:
+            s_->object.y -= step;
+            break;
+        default:
+            return false;
+        }
+        clampObject();
+        return true;
+    }
+
+    void gui() override {
+        ImGui::Checkbox("shadow (s)", &s_->shadow);
+        ImGui::Checkbox("naive shadow, no stencil (n)", &s_->naiveShadow);
+        ImGui::Checkbox("rectangular mirror (r)", &s_->rectMirror);
+        ImGui::Checkbox("elliptical mirror (e)", &s_->ellipseMirror);
+        ImGui::Checkbox("raw stencil buffer (m)", &s_->showMask);
+        float p[3] = {float(s_->object.x), float(s_->object.y), float(s_->object.z)};
+        if (ImGui::DragFloat3("object (arrows, PgUp/PgDn)", p, 0.02f)) {
+            s_->object = glm::dvec3(p[0], p[1], p[2]);
+            clampObject();
+        }
+        ImGui::SliderInt("steps", &s_->steps, 1, 6);
+        ImGui::Text("shadow: %d clipped triangles", s_->shadowTriangles);
+        ImGui::TextWrapped("Stencil values: 1 rectangular mirror, 2 elliptical mirror, 3 floor, "
+                           "4 wall, 5 stairs' side, 6+2i tread i, 7+2i riser i; +128 where the "
+                           "shadow was blended (darker in the mask view).");
+    }
+
+  private:
+    // The object stays below the light and inside the room (a point beyond the light would
+    // project through w < 0, see core/affine.h).
+    void clampObject() {
+        s_->object.x = std::clamp(s_->object.x, -3.0, 3.5);
+        s_->object.y = std::clamp(s_->object.y, 0.5, 4.0);
+        s_->object.z = std::clamp(s_->object.z, -2.0, 2.5);
+    }
+
+    void buildScene() {
+        receivers_.clear();
+        const int n = std::clamp(s_->steps, 1, 6);
+        receivers_.push_back({{{0, 1, 0}, 0.0},
+                              {{glm::dvec3(-5, 0, 4), {5, 0, 4}, {5, 0, kWallZ}, {-5, 0, kWallZ}}},
+                              {0.75f, 0.65f, 0.5f},
+                              kStencilFloor,
+                              true});
+        receivers_.push_back(
+            {{{0, 0, 1}, -kWallZ},
+             {{glm::dvec3(-5, 0, kWallZ), {5, 0, kWallZ}, {5, 5, kWallZ}, {-5, 5, kWallZ}}},
+             {0.6f, 0.7f, 0.8f},
+             kStencilBackWall,
+             true});
+        Receiver front{{{0, 0, 1}, -kStairZ}, {}, {0.55f, 0.55f, 0.6f}, kStencilStairFront, false};
+        stairBack_.clear();
+        for (int i = 0; i < n; ++i) {
+            const double x0 = kStairX0 + i * kStepW, x1 = x0 + kStepW, top = (i + 1) * kStepH;
+            front.quads.push_back({glm::dvec3(x0, 0, kStairZ),
+                                   {x1, 0, kStairZ},
+                                   {x1, top, kStairZ},
+                                   {x0, top, kStairZ}});
+            stairBack_.push_back({glm::dvec3(x1, 0, -kStairZ),
+                                  {x0, 0, -kStairZ},
+                                  {x0, top, -kStairZ},
+                                  {x1, top, -kStairZ}});
+            receivers_.push_back({{{0, 1, 0}, -top},
+                                  {{glm::dvec3(x0, top, kStairZ),
+                                    {x1, top, kStairZ},
+                                    {x1, top, -kStairZ},
+                                    {x0, top, -kStairZ}}},
+                                  {0.85f, 0.85f, 0.8f},
+                                  uint8_t(kStencilFirstStep + 2 * i),
+                                  false});
+            receivers_.push_back({{{-1, 0, 0}, x0},
+                                  {{glm::dvec3(x0, top - kStepH, kStairZ),
+                                    {x0, top, kStairZ},
+                                    {x0, top, -kStairZ},
+                                    {x0, top - kStepH, -kStairZ}}},
+                                  {0.7f, 0.7f, 0.68f},
+                                  uint8_t(kStencilFirstStep + 2 * i + 1),
+                                  false});
+        }
+        receivers_.push_back(front);
+        const double xe = kStairX0 + n * kStepW, h = n * kStepH;
+        stairEnd_ = {
+            glm::dvec3(xe, 0, kStairZ), {xe, 0, -kStairZ}, {xe, h, -kStairZ}, {xe, h, kStairZ}};
+
+        // The stairs as triangles, for their shadow on the floor and the wall.
+        stairTris_.clear();
+        auto addQuad = [&](const Quad& q) {
+            stairTris_.push_back({{q[0], q[1], q[2]}, {}});
+            stairTris_.push_back({{q[0], q[2], q[3]}, {}});
+        };
+        for (const Receiver& r : receivers_)
+            if (!r.stairsCast)
+                for (const Quad& q : r.quads)
+                    addQuad(q);
+        for (const Quad& q : stairBack_)
+            addQuad(q);
+        addQuad(stairEnd_);
+
+        // The torus in world space, tilted so its hole shows in the shadow.
+        glm::dmat4 m = glm::translate(glm::dmat4(1.0), s_->object);
+        m = glm::rotate(m, glm::radians(60.0), glm::dvec3(1, 0, 0.3));
+        const glm::dmat3 nm = glm::dmat3(m);
+        objectTris_.clear();
+        for (size_t k = 0; k + 2 < torus_.indices.size(); k += 3) {
+            Triangle t;
+            for (int j = 0; j < 3; ++j) {
+                const uint32_t idx = torus_.indices[k + size_t(j)];
+                t.p[j] = glm::dvec3(m * glm::dvec4(torus_.positions[idx], 1.0));
+                t.n[j] = nm * torus_.normals[idx];
+            }
+            objectTris_.push_back(t);
+        }
+    }
+
+    void setLight() {
+        const GLfloat pos[] = {float(kLight.x), float(kLight.y), float(kLight.z), 1.0f};
+        const GLfloat white[] = {0.9f, 0.9f, 0.9f, 1}, ambient[] = {0.3f, 0.3f, 0.3f, 1};
+        glLightfv(GL_LIGHT0, GL_POSITION,
+                  pos); // under the current modelview: reflected in a mirror
+        glLightfv(GL_LIGHT0, GL_DIFFUSE, white);
+        glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+        glEnable(GL_LIGHTING);
+        glEnable(GL_LIGHT0);
+        glEnable(GL_COLOR_MATERIAL);
+        glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    }
+
+    void drawObject() {
+        glColor3f(0.85f, 0.2f, 0.15f);
+        glBegin(GL_TRIANGLES);
+        for (const Triangle& t : objectTris_)
+            for (int j = 0; j < 3; ++j) {
+                glNormal3dv(glm::value_ptr(t.n[j]));
+                glVertex3dv(glm::value_ptr(t.p[j]));
+            }
+        glEnd();
+    }
+
+    // The room, the stairs, the object and the light marker under the current modelview.
+    void drawScene() {
+        setLight();
+        for (const Receiver& r : receivers_) {
+            glColor3fv(glm::value_ptr(r.colour));
+            drawQuads(r.quads, r.plane.n);
+        }
+        glColor3f(0.55f, 0.55f, 0.6f);
+        drawQuads(stairBack_, {0, 0, -1});
+        drawQuads({stairEnd_}, {1, 0, 0});
+        drawObject();
+        glDisable(GL_LIGHTING);
+        glColor3f(1.0f, 0.95f, 0.3f); // the light itself: a small unlit diamond
+        glPushMatrix();
+        glTranslated(kLight.x, kLight.y, kLight.z);
+        glBegin(GL_TRIANGLES);
+        const double r = 0.12;
+        const glm::dvec3 tip[2] = {{0, r, 0}, {0, -r, 0}};
+        const glm::dvec3 ring[4] = {{r, 0, 0}, {0, 0, -r}, {-r, 0, 0}, {0, 0, r}};
+        for (int t = 0; t < 2; ++t)
+            for (int i = 0; i < 4; ++i) {
+                const glm::dvec3 &a = ring[i], &b = ring[(i + 1) % 4];
+                glVertex3dv(glm::value_ptr(tip[t]));
+                glVertex3dv(glm::value_ptr(t == 0 ? b : a));
+                glVertex3dv(glm::value_ptr(t == 0 ? a : b));
+            }
+        glEnd();
+        glPopMatrix();
+    }
+
+    struct Mirror {
+        std::vector<glm::dvec3> outline; // convex, counter-clockwise seen from the room (+z)
+        uint8_t stencil;
+    };
+
+    std::vector<Mirror> mirrors() const {
+        std::vector<Mirror> out;
+        if (s_->rectMirror) out.push_back({rectangle(), kStencilRectMirror});
+        if (s_->ellipseMirror) out.push_back({ellipse(), kStencilEllipseMirror});
+        return out;
+    }
+
+    static std::vector<glm::dvec3> rectangle() {
+        return {{-3.1, 0.4, kMirrorZ},
+                {-0.7, 0.4, kMirrorZ},
+                {-0.7, 3.3, kMirrorZ},
+                {-3.1, 3.3, kMirrorZ}};
+    }
+
+    static std::vector<glm::dvec3> ellipse() {
+        std::vector<glm::dvec3> e;
+        const int segments = 72;
+        for (int i = 0; i < segments; ++i) {
+            const double a = 2.0 * kPi * i / segments;
+            e.push_back({2.0 + 1.2 * std::cos(a), 2.1 + 1.4 * std::sin(a), kMirrorZ});
+        }
+        return e;
+    }
+
+    static void drawPolygon(const std::vector<glm::dvec3>& outline) {
+        glBegin(GL_POLYGON);
+        glNormal3d(0, 0, 1);
+        for (const glm::dvec3& v : outline)
+            glVertex3dv(glm::value_ptr(v));
+        glEnd();
+    }
+
+    void recordOutlines(const View& view) {
+        GLdouble mv[16], pr[16];
+        GLint vp[4];
+        glGetDoublev(GL_MODELVIEW_MATRIX, mv);
+        glGetDoublev(GL_PROJECTION_MATRIX, pr);
+        glGetIntegerv(GL_VIEWPORT, vp);
+        auto project = [&](const std::vector<glm::dvec3>& pts) {
+            std::vector<glm::dvec2> out;
+            for (const glm::dvec3& p : pts) {
+                GLdouble x = 0, y = 0, z = 0;
+                gluProject(p.x, p.y, p.z, mv, pr, vp, &x, &y, &z);
+                out.push_back({x, double(view.height) - y});
+            }
+            return out;
+        };
+        s_->rectOutline = project(rectangle());
+        s_->ellipseOutline = project(ellipse());
+    }
+
+    void drawMirrors() {
+        const std::vector<Mirror> ms = mirrors();
+        // 1st pass: mark each mirror's pixels in the stencil with its own value; no colour,
+        // no depth written (the scene is not drawn yet, so the whole mirror is marked).
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        for (const Mirror& m : ms) {
+            glStencilFunc(GL_ALWAYS, m.stencil, 0xFF);
+            drawPolygon(m.outline);
+        }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glDepthMask(GL_TRUE);
+
+        // 2nd pass: the scene reflected through the mirror plane, only where the stencil
+        // holds that mirror's value. The reflection reverses orientation, so front faces
+        // are clockwise; the light is set inside drawScene() under the mirror matrix, so
+        // it is reflected too. A clip plane drops what lies behind the mirror (the wall).
+        const Plane mirrorPlaneEq{{0, 0, 1}, -kMirrorZ};
+        const GLdouble behind[4] = {0, 0, -1, kMirrorZ}; // keeps z <= kMirrorZ (after reflecting)
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        for (const Mirror& m : ms) {
+            glStencilFunc(GL_EQUAL, m.stencil, 0xFF);
+            glClipPlane(GL_CLIP_PLANE0, behind); // in world coordinates: modelview is the camera
+            glEnable(GL_CLIP_PLANE0);
+            glPushMatrix();
+            glMultMatrixd(glm::value_ptr(mirrorPlane(mirrorPlaneEq)));
+            glFrontFace(GL_CW);
+            drawScene();
+            glFrontFace(GL_CCW);
+            glPopMatrix();
+            glDisable(GL_CLIP_PLANE0);
+        }
+
+        // 3rd pass: the mirror surface blended on top (a faint blue glass), writing its
+        // depth so the real scene drawn next is hidden behind it exactly as the wall is.
+        glDisable(GL_LIGHTING);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glColor4f(0.75f, 0.85f, 1.0f, 0.2f);
+        for (const Mirror& m : ms) {
+            glStencilFunc(GL_EQUAL, m.stencil, 0xFF);
+            drawPolygon(m.outline);
+        }
+        glDisable(GL_BLEND);
+        glDisable(GL_STENCIL_TEST);
+    }
+
+    void drawStencilShadow() {
+        // 5th pass: mark the visible pixels of every receiver with its own value (depth test
+        // LEQUAL against the scene just drawn: hidden parts stay unmarked), no colour/depth.
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glDepthMask(GL_FALSE);
+        glDisable(GL_LIGHTING);
+        glEnable(GL_STENCIL_TEST);
+        glStencilMask(0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        for (const Receiver& r : receivers_) {
+            glStencilFunc(GL_ALWAYS, r.stencil, 0xFF);
+            drawQuads(r.quads, r.plane.n);
+        }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+        // 6th pass: per receiver, the object flattened onto its plane by the point-light
+        // shadow matrix, drawn only where the stencil holds that receiver's value. The first
+        // blended fragment flips kShadowBit (INVERT with write mask 0x80), so overlapping
+        // shadow triangles fail the EQUAL test afterwards: every pixel is darkened once.
+        // No depth test: the stencil already holds exactly the visible receiver pixels.
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE); // flattened triangles may face either way
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glColor4f(0.0f, 0.0f, 0.0f, kShadowAlpha);
+        glStencilMask(kShadowBit);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
+        s_->shadowTriangles = 0;
+        for (const Receiver& r : receivers_) {
+            const double lightSide = glm::dot(r.plane.n, kLight) + r.plane.d;
+            if (lightSide <= 0) continue; // the light does not reach this face at all
+            glStencilFunc(GL_EQUAL, r.stencil, 0xFF);
+            drawFlattened(r.plane, objectTris_);
+            if (r.stairsCast) drawFlattened(r.plane, stairTris_);
+        }
+        glStencilMask(0xFF);
+        glDisable(GL_BLEND);
+        glDisable(GL_STENCIL_TEST);
+        glEnable(GL_DEPTH_TEST);
+        glEnable(GL_CULL_FACE);
+        glDepthMask(GL_TRUE);
+    }
+
+    // The same projection with no stencil: depth-tested with a polygon offset, so the
+    // shadow spills past each step's edge and overlapping triangles darken twice.
+    void drawNaiveShadow() {
+        glDisable(GL_LIGHTING);
+        glDisable(GL_CULL_FACE);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -4.0f);
+        glDepthMask(GL_FALSE);
+        glColor4f(0.0f, 0.0f, 0.0f, kShadowAlpha);
+        s_->shadowTriangles = 0;
+        for (const Receiver& r : receivers_)
+            if (glm::dot(r.plane.n, kLight) + r.plane.d > 0) {
+                drawFlattened(r.plane, objectTris_);
+                if (r.stairsCast) drawFlattened(r.plane, stairTris_);
+            }
+        glDepthMask(GL_TRUE);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        glDisable(GL_BLEND);
+        glEnable(GL_CULL_FACE);
+    }
+
+    // A caster's triangles, clipped to the light's side of `plane` (the part beyond the
+    // plane casts nothing on it), drawn through shadowPoint(plane, light).
+    void drawFlattened(const Plane& plane, const std::vector<Triangle>& caster) {
+        glPushMatrix();
+        glMultMatrixd(glm::value_ptr(shadowPoint(plane, kLight)));
+        glBegin(GL_TRIANGLES);
+        for (const Triangle& t : caster) {
+            const std::vector<glm::dvec3> poly = clipToPositive(t, plane);
+            for (size_t i = 1; i + 1 < poly.size(); ++i) {
+                glVertex3dv(glm::value_ptr(poly[0]));
+                glVertex3dv(glm::value_ptr(poly[i]));
+                glVertex3dv(glm::value_ptr(poly[i + 1]));
+                ++s_->shadowTriangles;
+            }
+        }
+        glEnd();
+        glPopMatrix();
+    }
+
+    // `m`: the stencil values as colours over the whole window.
+    void drawMask(const View& view, const std::vector<uint8_t>& rows) {
+        std::vector<uint8_t> rgb(rows.size() * 3);
+        for (size_t i = 0; i < rows.size(); ++i)
+            stencilColour(rows[i], &rgb[i * 3]);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_STENCIL_TEST);
+        glDisable(GL_LIGHTING);
+        glDisable(GL_BLEND);
+        glWindowPos2i(0, 0);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glDrawPixels(view.width, view.height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        glEnable(GL_DEPTH_TEST);
+    }
+
+    StencilLabState own_;
+    StencilLabState* s_;
+    Mesh torus_;
+    std::vector<Receiver> receivers_;
+    std::vector<Quad> stairBack_;
+    Quad stairEnd_{};
+    std::vector<Triangle> objectTris_, stairTris_;
+};
+
+} // namespace
+
+std::unique_ptr<Lab> makeStencilLab() {
+    return std::make_unique<StencilLab>(nullptr);
+}
+
+std::unique_ptr<Lab> makeStencilLab(StencilLabState* observe) {
+    return std::make_unique<StencilLab>(observe);
+}
+
+} // namespace wb

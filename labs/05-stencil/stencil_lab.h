@@ -1,0 +1,45 @@
+#pragma once
+// Lab 5 - stencil buffer: the shadow of an object on a staircase, clipped to each step by
+// the stencil and blended once; reflections in a rectangular and an elliptical mirror,
+// confined to the mirror by the stencil; the raw stencil buffer on a key.
+#include "common/lab.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace wb {
+
+// Stencil values the lab writes (kShadowBit is or-ed in where a shadow was blended).
+constexpr uint8_t kStencilRectMirror = 1;
+constexpr uint8_t kStencilEllipseMirror = 2;
+constexpr uint8_t kStencilFloor = 3;
+constexpr uint8_t kStencilBackWall = 4;
+constexpr uint8_t kStencilStairFront = 5; // the stairs' front side (z = +1.2)
+constexpr uint8_t kStencilFirstStep = 6;  // tread i: 6 + 2i, riser i: 7 + 2i
+constexpr uint8_t kShadowBit = 0x80;
+
+struct StencilLabState {
+    bool shadow = true; // s: shadows: the object's on everything, the stairs' on floor and wall
+    bool naiveShadow = false;  // n: shadow without the stencil, to see leaks and double blending
+    bool rectMirror = true;    // r: the rectangular mirror on the back wall
+    bool ellipseMirror = true; // e: the elliptical mirror on the back wall
+    bool showMask = false;     // m: show the raw stencil buffer instead of the scene
+    glm::dvec3 object{-0.5, 2.4, 0.2}; // the torus' centre; arrows move x/z, PageUp/PageDown y
+    int steps = 4;                     // stairs; each 0.8 wide, 0.4 high
+
+    // Written by draw() for tests and the panel:
+    std::vector<uint8_t> stencil; // last frame's stencil, width*height, top row first
+    int width = 0, height = 0;    // of `stencil`
+    // The mirrors' outlines projected to window pixels (x right, y DOWN, like the image).
+    std::vector<glm::dvec2> rectOutline, ellipseOutline;
+    int shadowTriangles = 0; // clipped caster triangles drawn as shadow in the last frame
+};
+
+std::unique_ptr<Lab> makeStencilLab();
+// The lab working on `observe` (tests read and set the state).
+std::unique_ptr<Lab> makeStencilLab(StencilLabState* observe);
+
+} // namespace wb
