@@ -200,11 +200,9 @@ class AffineLab : public Lab {
     void gui() override {
         AffineState& s = *s_;
         int mode = int(s.mode);
-        ImGui::RadioButton("1 mirror", &mode, 1);
-        ImGui::SameLine();
-        ImGui::RadioButton("2 light at infinity", &mode, 2);
-        ImGui::SameLine();
-        ImGui::RadioButton("3 point light", &mode, 3);
+        ImGui::RadioButton("1 mirror image", &mode, 1);
+        ImGui::RadioButton("2 shadow, light at infinity along l", &mode, 2);
+        ImGui::RadioButton("3 shadow, point light S", &mode, 3);
         s.mode = AffineMode(mode);
         ImGui::Checkbox("3D view (v)", &s.view3d);
         if (!s.view3d) {
@@ -220,7 +218,9 @@ class AffineLab : public Lab {
             double sxy[2] = {s.light.x, s.light.y};
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
             const glm::dmat3 m = affineMatrix2d(s);
-            ImGui::Text("M (3x3), applied as M [P1 ... P%zu]:", affinePolygon().size());
+            ImGui::Text("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
+            if (s.mode == AffineMode::ShadowPoint)
+                ImGui::TextUnformatted("(homogeneous: any non-zero multiple is the same map)");
             ImGui::TextUnformatted(matrixText(glm::value_ptr(m), 3).c_str());
             ImGui::Text("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
                         lastBehind_);
