@@ -5,6 +5,9 @@ wb_test(raytrace_test
     raytrace/seed000_test.cpp
     raytrace/primitives_test.cpp
     raytrace/watertight_test.cpp
+    raytrace/refraction_test.cpp
+    raytrace/tracer_test.cpp
+    raytrace/render_test.cpp
   LIBS core)
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)
