@@ -183,8 +183,7 @@ TEST_CASE("glMap1f + glEvalMesh1 points agree with de Casteljau", "[gl][bezier]"
     }
 }
 
-TEST_CASE("GL_AUTO_NORMAL agrees with core normals; both fail or not at the tangent corners",
-          "[gl][bezier]") {
+TEST_CASE("GL_AUTO_NORMAL agrees with core normals except at the tangent corners", "[gl][bezier]") {
     // Normals read back through lighting: three directional lights along +x, +y, +z
     // (then -x, -y, -z) with red, green, blue diffuse colour and a white material give
     // colour = max(0, ±n) per channel, unclamped-safe since |n| = 1 after GL_NORMALIZE.
