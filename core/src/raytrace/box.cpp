@@ -12,6 +12,7 @@ Box::Box(const glm::dvec3& l, const glm::dvec3& a, const glm::dvec3& b, const gl
     if (!(std::fabs(vol) > 0) || !std::isfinite(vol))
         throw std::invalid_argument("Box: edges must be finite and linearly independent");
     centre = loc + 0.5 * (e1 + e2 + e3);
+    toEdges_ = glm::inverse(glm::dmat3(e1, e2, e3));
     // Seed 000: N1 = E1×E2 (planes through Loc and Loc+E3), N2 = E1×E3 (Loc, Loc+E2),
     // N3 = E2×E3 (Loc, Loc+E1).
     const glm::dvec3 ns[3] = {glm::cross(e1, e2), glm::cross(e1, e3), glm::cross(e2, e3)};
@@ -66,12 +67,15 @@ bool Box::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     double t;
     glm::dvec3 nrm;
     double plane;
+    int face;
     if (iNear >= 0 && tNear > tMin && tNear <= tMax) {
         t = tNear;
+        face = iNear;
         nrm = sNear * n[iNear];
         plane = sNear < 0 ? -d1[iNear] : d2[iNear];
     } else if (iFar >= 0 && tFar > tMin && tFar <= tMax) { // origin inside: the exit
         t = tFar;
+        face = iFar;
         nrm = sFar * n[iFar];
         plane = sFar < 0 ? -d1[iFar] : d2[iFar];
     } else {
@@ -82,7 +86,12 @@ bool Box::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     hit.t = t;
     hit.point = p;
     hit.outwardNormal = nrm;
-    hit.hasUv = false;
+    // Texture coordinates: the point's coordinates along the two edges spanning the face.
+    const glm::dvec3 abc = toEdges_ * (p - loc);
+    hit.uv = face == 0   ? glm::dvec2(abc.x, abc.y)
+             : face == 1 ? glm::dvec2(abc.x, abc.z)
+                         : glm::dvec2(abc.y, abc.z);
+    hit.hasUv = true;
     finishHit(ray, hit);
     return true;
 }

@@ -33,6 +33,8 @@ bool Cone::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     double bestT = tMax;
     bool found = false;
     glm::dvec3 bestN{0.0};
+    glm::dvec2 bestUv{0.0};
+    constexpr double kTwoPi = 6.283185307179586;
 
     // Lateral surface x² + y² = (r0 + k z)².
     QuadraticRoots roots;
@@ -64,6 +66,7 @@ bool Cone::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
         if (!(len > 0)) continue; // the apex: the cap test below decides
         bestT = t;
         bestN = nl / len;
+        bestUv = {std::atan2(y, x) / kTwoPi + 0.5, z / h_}; // around the axis, up the side
         found = true;
     }
     // Caps z = 0 (outward −axis) and z = h (outward +axis).
@@ -78,6 +81,7 @@ bool Cone::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
             if (x * x + y * y > capR[i] * capR[i]) continue;
             bestT = t;
             bestN = i == 0 ? -axis_ : axis_;
+            bestUv = {0.5 + 0.5 * x / capR[i], 0.5 + 0.5 * y / capR[i]}; // across the disc
             found = true;
         }
     }
@@ -85,7 +89,8 @@ bool Cone::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     hit.t = bestT;
     hit.point = ray.at(bestT);
     hit.outwardNormal = bestN;
-    hit.hasUv = false;
+    hit.uv = bestUv;
+    hit.hasUv = true;
     finishHit(ray, hit);
     return true;
 }

@@ -5,8 +5,10 @@
 #include "core/raytrace/box.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/plane.h"
+#include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
 #include "core/raytrace/sphere.h"
+#include "core/raytrace/texture.h"
 #include "core/raytrace/tracer.h"
 
 #include <catch2/catch.hpp>
@@ -132,4 +134,90 @@ TEST_CASE("tracer: a ray entering and leaving a glass sphere uses both index rat
     // Symmetric path: the exit angle with the normal equals the entry angle (to 1e-9:
     // the inner ray starts 2^20 ULPs, ~2e-10, off the surface, which shifts the exit).
     CHECK(std::fabs(glm::dot(*t2, out.normal)) == Approx(std::fabs(in.cosVN)).epsilon(1e-9));
+}
+
+TEST_CASE("phong model: the GL lighting equation, by hand", "[raytrace][phong]") {
+    // Plane z = 0 seen and lit straight from (0,0,5): n·L = 1, n·h = 1, d = 5.
+    Scene s;
+    s.globalAmbient = glm::dvec3(0.2);
+    Light l = Light::point({0, 0, 5}, {1.0, 0.5, 0.25});
+    l.ambient = glm::dvec3(0.1);
+    l.constantAttenuation = 1;
+    l.linearAttenuation = 0.1; // att = 1/(1 + 0.5)
+    s.lights.push_back(l);
+    Material m;
+    m.colour = {0.5, 0.6, 0.7};
+    m.ka = 0.4;
+    m.kd = 0.8;
+    m.ks = 0.3;
+    m.phongExp = 10;
+    m.emission = {0.05, 0, 0};
+    s.add(Plane({0, 0, 0}, {0, 0, 1}), s.addMaterial(m));
+    const PhongModel model;
+    const Tracer tracer(s, model);
+    const Color c = tracer.trace(down({0, 0, 5}));
+    for (int i = 0; i < 3; ++i) {
+        const double ma = 0.4 * m.colour[i], md = 0.8 * m.colour[i], ms = 0.3;
+        const double expect =
+            m.emission[i] + 0.2 * ma + (1 / 1.5) * (0.1 * ma + md * l.colour[i] + ms * l.colour[i]);
+        CHECK(c[i] == Approx(expect).epsilon(1e-14));
+    }
+    // A spot pointing away (cutoff 30 degrees) leaves emission and global ambient only.
+    s.lights[0].spotDirection = {1, 0, 0};
+    s.lights[0].spotCutoff = 30;
+    const Color spotOff = tracer.trace(down({0, 0, 5}));
+    CHECK(spotOff.x == Approx(0.05 + 0.2 * 0.4 * 0.5).epsilon(1e-14));
+    // A shadowing blocker removes diffuse and specular but not the light's ambient.
+    s.lights[0].spotCutoff = 180;
+    Material opaque;
+    s.add(Rectangle({-1, -1, 2}, {1, -1, 2}, {-1, 1, 2}), s.addMaterial(opaque));
+    Ray below = down({0, 0, 1});
+    const Color shadowed = tracer.trace(below);
+    CHECK(shadowed.y ==
+          Approx(0.2 * 0.4 * 0.6 + (1 / (1 + 0.1 * 5)) * 0.1 * 0.4 * 0.6).epsilon(1e-12));
+}
+
+TEST_CASE("textures: a plane bound by three points, a box face, an ellipsoid",
+          "[raytrace][texture]") {
+    // A 2×2 texture: top row red, green; bottom row blue, white (v upwards).
+    wb::Image tex(2, 2, 3);
+    const uint8_t px[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}};
+    for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c)
+            tex.at(i % 2, i / 2)[c] = px[i][c];
+    CHECK(sampleTexture(tex, {0.25, 0.75}) == glm::dvec3(1, 0, 0));
+    CHECK(sampleTexture(tex, {0.75, 0.25}) == glm::dvec3(1, 1, 1));
+    CHECK(sampleTexture(tex, {1.25, -0.75}) == glm::dvec3(0, 0, 1)); // repeats
+    CHECK(sampleTexture(wb::Image{}, {0.5, 0.5}) == glm::dvec3(1));  // no texture: white
+
+    Scene s;
+    s.globalAmbient = glm::dvec3(1.0);
+    Material m;
+    m.ka = 1;
+    m.kd = m.ks = 0;
+    m.texture = &tex;
+    Plane p({0, 0, 0}, {0, 0, 1});
+    p.bindTexture({0, 0, 0}, {2, 0, 0}, {0, 2, 0}); // one tile per 2×2 units
+    s.add(p, s.addMaterial(m));
+    const PhongModel model;
+    const Tracer tracer(s, model);
+    CHECK(tracer.trace(down({0.5, 1.5, 1})) == glm::dvec3(1, 0, 0)); // u 0.25, v 0.75
+    CHECK(tracer.trace(down({1.5, 1.5, 1})) == glm::dvec3(0, 1, 0));
+    CHECK(tracer.trace(down({0.5, 0.5, 1})) == glm::dvec3(0, 0, 1));
+    CHECK(tracer.trace(down({2.5, 0.5, 1})) == glm::dvec3(0, 0, 1)); // next tile
+
+    Hit h;
+    const Box b = Box::axisAligned({0, 0, 0}, {4, 2, 1});
+    REQUIRE(b.intersect(down({1, 0.5, 3}), 0, 1e30, h)); // top face spans e1, e2
+    CHECK(h.uv.x == Approx(0.25));
+    CHECK(h.uv.y == Approx(0.25));
+    const Quadric e(Quadric::Kind::Ellipsoid, {0, 0, 0}, {2, 1, 1});
+    Ray side;
+    side.origin = {0, -5, 0};
+    side.direction = {0, 1, 0};
+    REQUIRE(e.intersect(side, 0, 1e30, h)); // longitude −90°: u = 0.25, equator v = 0.5
+    CHECK(h.uv.x == Approx(0.25));
+    CHECK(h.uv.y == Approx(0.5));
+    REQUIRE(e.intersect(down({0, 0, 5}), 0, 1e30, h)); // the pole: v = 1
+    CHECK(h.uv.y == Approx(1.0));
 }

@@ -5,6 +5,7 @@
 // intersected, the entry is the largest near distance, the exit the smallest far one.
 // Seed 000's listing has slips (Center = Loc + 0.5(E2+E2+E3), "VD < 0.01" for
 // "VD < −0.01", no hit from inside); this follows the method, not the slips.
+// Texture coordinates of a face: the hit point's fractions along the face's two edges.
 #include "core/raytrace/primitive.h"
 
 namespace wb::rt {
@@ -24,6 +25,9 @@ class Box : public Primitive {
     glm::dvec3 n[3]; // unit slab normals
     double d1[3];    // slab i is d1[i] <= n[i]·x <= d2[i]
     double d2[3];
+
+  private:
+    glm::dmat3 toEdges_; // point − loc -> coordinates along (e1, e2, e3), for uv
 };
 
 } // namespace wb::rt

@@ -3,6 +3,7 @@
 // is what NFF's `c` with two radii means): axis from base centre c0 (radius r0) to
 // top centre c1 (radius r1). The lateral surface is x² + y² = (r0 + k·z)² in a frame
 // with z along the axis, k = (r1 − r0)/h; the body is its inside between 0 <= z <= h.
+// Texture coordinates: (angle/2π, z/h) on the side, the disc mapped to [0,1]² on a cap.
 #include "core/raytrace/primitive.h"
 
 namespace wb::rt {

@@ -43,7 +43,8 @@ class Scene {
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
 
-    // Adds a material, returns its index.
+    // Adds a material, returns its index. materials[0] is a default Material{} that
+    // exists from construction, so index 0 is always valid.
     int addMaterial(const Material& m);
     // Adds a primitive with material index `materialIndex` (must exist: std::out_of_range).
     template <class P> P& add(P prim, int materialIndex) {
