@@ -41,14 +41,15 @@ class BezierLab : public Lab {
     explicit BezierLab(BezierLabState* s) : s_(s ? s : &own_) {}
     std::string title() const override { return "Lab 06 - Bezier curves and patches"; }
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "circle from two Bezier curves (glEvalMesh1)"},
-                {"2", "sphere from two Bezier patches (glEvalMesh2)"},
-                {"c", "control polygon / control net on/off"},
-                {"[ ]", "grid resolution halve / double (2..256)"},
-                {"a", "next approximation (more arcs, fitted handles / net)"},
-                {"w", "sphere wireframe / filled"},
-                {"t", "true circle / sphere in grey"},
-                {"n", "sphere normals: GL_AUTO_NORMAL / core evalPatch"}};
+        return {{"1", "circle: two Bezier curves"},
+                {"2", "sphere: two Bezier patches"},
+                {"c", "control polygon / net"},
+                {"[", "grid halve"},
+                {"]", "grid double"},
+                {"a", "next approximation"},
+                {"w", "sphere wireframe"},
+                {"t", "true circle / sphere (grey)"},
+                {"n", "normals: GL_AUTO_NORMAL / core"}};
     }
     void init() override {
         bezierCircleVariants(); // the fits take about a second: do them before the first frame
@@ -345,63 +346,61 @@ bool BezierLab::key(int k) {
 }
 
 void BezierLab::gui() {
+    // The panel is narrow: one short item per line, numbers on their own lines.
     BezierLabState& s = *s_;
-    ImGui::RadioButton("circle, Bezier curves (1)", &s.shape, 0);
+    ImGui::RadioButton("circle (1)", &s.shape, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("sphere, Bezier patches (2)", &s.shape, 1);
-    ImGui::Checkbox("control polygon / net (c)", &s.showControl);
+    ImGui::RadioButton("sphere (2)", &s.shape, 1);
+    ImGui::Checkbox("control net (c)", &s.showControl);
     ImGui::SameLine();
     ImGui::Checkbox("true shape (t)", &s.showTrue);
     if (s.shape == 1) {
-        ImGui::SameLine();
         ImGui::Checkbox("wireframe (w)", &s.wireframe);
-        ImGui::Checkbox("normals from core evalPatch instead of GL_AUTO_NORMAL (n)",
-                        &s.coreNormals);
-        ImGui::TextWrapped("At the four corners of each patch the boundary curves are tangent, "
-                           "du x dv = 0: GL_AUTO_NORMAL has no normal there (dark spots on the "
-                           "equator); core takes the limit from inside the patch.");
+        ImGui::SameLine();
+        ImGui::Checkbox("core normals (n)", &s.coreNormals);
+        ImGui::TextWrapped("At the 4 corners of each patch the boundary curves are tangent, "
+                           "du x dv = 0: GL_AUTO_NORMAL has no normal there (dark spots on "
+                           "the equator). 'core normals' draws the grid from evalPatch, "
+                           "which takes the limit from inside the patch.");
     }
     ImGui::SliderInt("grid ([ ])", &s.grid, kMinGrid, kMaxGrid);
 
     ImGui::Separator();
-    ImGui::TextUnformatted("Control points (a); radial error of the exact Bezier shape:");
+    ImGui::TextWrapped("Control points (a) and the radial error of the exact Bezier shape:");
     if (s.shape == 0) {
         const auto& vs = bezierCircleVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            const std::string label = v.name + fmt("   max |r-1| = %.3g (%.3g%%)", v.error.maxError,
-                                                   100.0 * v.error.relative());
-            ImGui::RadioButton(label.c_str(), &s.circleVariant, i);
+            ImGui::RadioButton(v.name.c_str(), &s.circleVariant, i);
+            ImGui::Text("      max |r-1| = %.3g", v.error.maxError);
         }
     } else {
         const auto& vs = bezierSphereVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            const std::string label = v.name + fmt("   R = %.4f, max |r-R|/R = %.3g%%",
-                                                   v.error.radius, 100.0 * v.error.relative());
-            ImGui::RadioButton(label.c_str(), &s.sphereVariant, i);
+            ImGui::RadioButton(v.name.c_str(), &s.sphereVariant, i);
+            ImGui::Text("      max |r-R|/R = %.3g", v.error.relative());
+            ImGui::Text("      r in [%.4f, %.4f]", v.error.minRadius, v.error.maxRadius);
         }
-        const auto& v = vs[size_t(s.sphereVariant)];
-        ImGui::Text("radius from %.4f to %.4f; the true sphere is the minimax one, R = (min+max)/2",
-                    v.error.minRadius, v.error.maxRadius);
+        ImGui::TextWrapped("R is the minimax radius (min+max)/2: the course's net names none.");
     }
 
     ImGui::Separator();
     const double ms = medianMs();
-    ImGui::Text("GL time per mesh at grid %d: %s", s.grid,
-                ms < 0 ? "(not drawn yet)"
-                       : fmt("%.3f ms (median of the last frames)", ms).c_str());
-    ImGui::TextUnformatted("Speed against error (drawn polyline / triangles vs the true shape):");
+    ImGui::Text("GL time per mesh, grid %d:", s.grid);
+    ImGui::Text("   %s", ms < 0 ? "(not drawn yet)" : fmt("%.3f ms", ms).c_str());
+    ImGui::TextWrapped("Speed against error: drawn line strip / triangles against the true shape "
+                       "(ms: median GL time seen at that grid; visit it with [ ]).");
     if (ImGui::BeginTable("grid", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("grid");
         ImGui::TableSetupColumn(s.shape == 0 ? "max |r-1|" : "max |r-R|/R");
-        ImGui::TableSetupColumn("ms per mesh (seen)");
+        ImGui::TableSetupColumn("ms/mesh");
         ImGui::TableHeadersRow();
         const int keep = s.grid;
         for (int n = 4; n <= kMaxGrid; n *= 2) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text(n == keep ? "%d <" : "%d", n);
+            ImGui::Text("%d%s", n, n == keep ? " <" : "");
             ImGui::TableNextColumn();
             ImGui::Text("%.3g", meshError(n));
             ImGui::TableNextColumn();
@@ -415,8 +414,7 @@ void BezierLab::gui() {
         }
         ImGui::EndTable();
     }
-    ImGui::TextWrapped("Times are measured with glFinish around the glEvalMesh calls; visit a grid "
-                       "with [ ] to measure it. docs/bench/bezier.md has the full table.");
+    ImGui::TextWrapped("Full table: docs/bench/bezier.md (bin/bezier_bench).");
 }
 
 } // namespace
@@ -435,7 +433,7 @@ const std::vector<CircleVariant>& bezierCircleVariants() {
                 add(std::to_string(n) + " arcs, k = 4/3 tan(pi/" + std::to_string(2 * n) + ")", n,
                     circleHandle(n));
             const double k = fitCircleHandle(n);
-            add(std::to_string(n) + " arcs, fitted k = " + fmt("%.6f", k), n, k);
+            add(std::to_string(n) + " arcs, fitted k = " + fmt("%.5f", k), n, k);
         }
         return vs;
     }();
