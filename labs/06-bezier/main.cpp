@@ -10,6 +10,7 @@
 //   a         next approximation: more arcs, fitted handles, fitted net
 //   w         sphere wireframe / filled
 //   t         true circle / sphere in grey
+//   n         sphere normals: GL_AUTO_NORMAL / core evalPatch (limit at the tangent corners)
 #include "bezier_lab.h"
 #include "common/shell.h"
 
