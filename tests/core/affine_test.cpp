@@ -228,6 +228,21 @@ TEST_CASE("hard case: point light ON the shadow plane collapses the shadow into 
     CHECK(z == glm::dvec4(0.0));
 }
 
+TEST_CASE("hard case: 2D point light ON the line collapses the shadow into the light") {
+    const Line2 line = lineThrough({-1, -1}, {3, 1});
+    const glm::dvec2 s{1, 0}; // on the line: exactly representable, pi·S = 0 exactly
+    REQUIRE(line.a * s.x + line.b * s.y + line.c == 0.0);
+    const ProjectedPoints<glm::dvec2> out =
+        transformPoints(shadowLinePoint(line, s), {{0, 5}, {-3, 2}, {7, 4}, {4, -6}});
+    for (std::size_t i = 0; i < 4; ++i) {
+        REQUIRE(out.kinds[i] == PointKind::Finite);
+        CHECK(glm::length(out.points[i] - s) <= 16 * kEps * 10);
+    }
+    // A point on the line itself: the zero vector, reported Undefined.
+    const ProjectedPoints<glm::dvec2> on = transformPoints(shadowLinePoint(line, s), {{3, 1}});
+    CHECK(on.kinds[0] == PointKind::Undefined);
+}
+
 TEST_CASE("hard case: P level with the light and light parallel to the plane give w = 0") {
     const Plane pl{{0, 1, 0}, 0};
     const glm::dvec4 q = shadowPoint(pl, {0, 3, 0}) * glm::dvec4(5, 3, -1, 1);
@@ -257,7 +272,12 @@ TEST_CASE("2D shadows land on the line and on the line through the light (random
             const glm::dvec3 qh = shadowLinePoint(line, s) * glm::dvec3(p, 1);
             const glm::dvec2 q = glm::dvec2(qh) / qh.z;
             const glm::dvec3 ref = intersectLD(pl, {s, 0}, {p - s, 0});
-            CHECK(glm::length(q - glm::dvec2(ref)) <= 1e-10 * (1 + glm::length(ref)));
+            const double tol = 1e-10 * (1 + glm::length(ref));
+            CHECK(glm::length(q - glm::dvec2(ref)) <= tol);
+            // On Λ and on the line through S and P, checked directly as well.
+            CHECK(std::abs(line.a * q.x + line.b * q.y + line.c) <= tol * nn);
+            const glm::dvec2 sq = q - s, sp = p - s;
+            CHECK(std::abs(sq.x * sp.y - sq.y * sp.x) <= tol * glm::length(sp));
         }
         if (std::abs(line.a * l.x + line.b * l.y) > 0.01 * nn * glm::length(l)) {
             const glm::dvec3 qh = shadowLineDirectional(line, l) * glm::dvec3(p, 1);
