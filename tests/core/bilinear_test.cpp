@@ -234,3 +234,20 @@ TEST_CASE("no solution and bad input give nothing, never NaN") {
     // A discriminant negative only by rounding is taken as zero (a tangent root).
     CHECK(bilinearBeta(1, -2, 1 + 1e-16).has_value());
 }
+
+TEST_CASE("3D: points on a twisted (non-planar) quad's surface give back their (alpha, beta)") {
+    // At the true β, s1(β), u and s2(β) are collinear, so their cross product is the zero
+    // vector and stays zero after the dot with n: the course's 3D algorithm is exact on
+    // the bilinear surface even when the quad is not planar.
+    const glm::dvec3 a{0, 0, 0}, b{1, 0, 0}, c{1, 1, 1}, d{0, 1, 0}; // z = αβ
+    std::mt19937_64 gen(4406);
+    std::uniform_real_distribution<double> w(0, 1);
+    for (int i = 0; i < 2000; ++i) {
+        const double al = w(gen), be = w(gen);
+        const auto got = invertBilinear(bilinear(a, b, c, d, al, be), a, b, c, d);
+        REQUIRE(got);
+        // Unit quad, |J⁻¹| ≤ ~2: the 64-ulp bound of tolerance() with size 1.
+        CHECK(std::abs(got->x - al) <= 64 * kEps * 4);
+        CHECK(std::abs(got->y - be) <= 64 * kEps * 4);
+    }
+}

@@ -34,8 +34,9 @@ double bilinear(double fa, double fb, double fc, double fd, double alpha, double
 std::optional<glm::dvec2> invertBilinear(const glm::dvec2& p, const glm::dvec2& a,
                                          const glm::dvec2& b, const glm::dvec2& c,
                                          const glm::dvec2& d);
-// 3D form (the course's pseudocode): coefficients dotted with n; a point off a planar
-// quad, or a non-planar quad, gets a least-squares-like answer as the course's.
+// 3D form (the course's pseudocode): coefficients dotted with n = (C−A)×(D−B). Exact for
+// points on the bilinear surface, planar or twisted (tested); a point off the surface gets
+// the course's approximate answer (β from the n-projected equation, α by projection).
 std::optional<glm::dvec2> invertBilinear(const glm::dvec3& p, const glm::dvec3& a,
                                          const glm::dvec3& b, const glm::dvec3& c,
                                          const glm::dvec3& d);
