@@ -6,6 +6,7 @@
 #include "render_check.h"
 
 #include "common/gl.h"
+#include "common/gl_util.h"
 #include "lighting_lab.h"
 
 #include <cmath>
@@ -51,7 +52,14 @@ class PointLab : public wb::Lab {
     wb::Light light;
     wb::Material material;
     std::vector<Sample> samples;
+    bool glsl = false; // draw through shaders/phong.* instead of the fixed pipeline
+    std::string programError;
+    GLuint program = 0;
     std::string title() const override { return "points"; }
+    void init() override {
+        program =
+            glsl ? wb::loadProgram("shaders/phong.vert", "shaders/phong.frag", programError) : 0;
+    }
     std::vector<wb::KeyHelp> keys() const override { return {}; }
     bool key(int) override { return false; }
     void draw(const wb::View&) override {
@@ -66,6 +74,11 @@ class PointLab : public wb::Lab {
         wb::glApplyLightModel(model);
         wb::glApplyLight(GL_LIGHT0, light);
         wb::glApplyMaterial(material);
+        if (program) {
+            glUseProgram(program);
+            glUniform1i(glGetUniformLocation(program, "wbLightCount"), 1);
+            glUniform1i(glGetUniformLocation(program, "wbLocalViewer"), model.localViewer ? 1 : 0);
+        }
         glPointSize(3);
         glBegin(GL_POINTS);
         for (const Sample& s : samples) {
@@ -73,6 +86,7 @@ class PointLab : public wb::Lab {
             glVertex3d(s.pos.x, s.pos.y, s.pos.z);
         }
         glEnd();
+        if (program) glUseProgram(0);
         glDisable(GL_LIGHTING);
     }
 };
@@ -217,4 +231,39 @@ TEST_CASE("the comparison can fail: a wrong shininess is caught", "[gl]") {
                              std::abs(int(std::lround(c[ch] * 255)) - int(img.at(p.px, p.py)[ch])));
     }
     CHECK(worst > 2);
+}
+
+// The per-fragment shader evaluates the same equation from the same fixed-function
+// state: on a point every fragment gets the vertex's own position and normal, so it
+// must give the fixed pipeline's vertex colour. Same tolerance and reasoning as above.
+TEST_CASE("shaders/phong.frag gives core's vertex colours (core = fixed pipeline, above)", "[gl]") {
+    PointLab lab;
+    lab.glsl = true;
+    lab.samples = makeSamples(13);
+    for (int combo = 1; combo <= 4; ++combo)
+        for (int variant = 0; variant < 3; ++variant) {
+            wb::LightingState s;
+            s.combo = combo;
+            s.lightPos = {0.5f, 1.0f, 1.0f, 1.0f};
+            s.localViewer = variant == 1;
+            if (variant == 2) {
+                s.spotOn = true;
+                s.spotTarget = {-1.0f, 0.5f, -6.0f};
+                s.spotCutoff = 40;
+                s.spotExponent = 10;
+                s.attenuation = {0.5f, 0.1f, 0.02f};
+                s.emissionOn = true;
+            }
+            lab.model = wb::lightModel(s);
+            lab.light = wb::comboLight(s);
+            lab.material = wb::comboMaterial(s);
+            int compared = 0;
+            int d = maxDifference(lab, compared);
+            INFO(lab.programError);
+            REQUIRE(lab.program != 0);
+            std::printf("GLSL phong vs core: combo %d, variant %d: max %d/255 over %d points\n",
+                        combo, variant, d, compared);
+            CHECK(compared > kGrid * kGrid / 2);
+            CHECK(d <= 2);
+        }
 }
