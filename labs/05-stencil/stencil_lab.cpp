@@ -17,10 +17,8 @@ namespace wb {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kStepW = 0.8, kStepH = 0.4, kStairX0 = -1.6, kStairZ = 1.2;
-constexpr double kWallZ = -3.0, kMirrorZ = -2.98; // mirrors hang 2 cm in front of the wall
-const glm::dvec3 kLight(-3.5, 5.0, 2.0);          // point light, also drawn as a small marker
-constexpr float kShadowAlpha = 0.5f;              // each shadow pixel keeps 1 - 0.5 of its colour
+constexpr double kStepW = kStepWidth, kStepH = kStepHeight, kStairZ = kStairHalfDepth;
+const glm::dvec3 kLight = kStencilLight; // also drawn as a small marker
 
 using Quad = std::array<glm::dvec3, 4>; // counter-clockwise seen from the front
 
@@ -92,7 +90,7 @@ class StencilLab : public Lab {
                 {"PageUp/PageDown", "move the object up/down"}};
     }
 
-    void init() override { torus_ = makeTorus(0.5, 0.2, 40, 20); }
+    void init() override { torus_ = makeTorus(kTorusMajor, kTorusMinor, 40, 20); }
 
     void draw(const View& view) override {
         buildScene();
@@ -273,6 +271,7 @@ class StencilLab : public Lab {
         // The torus in world space, tilted so its hole shows in the shadow.
         glm::dmat4 m = glm::translate(glm::dmat4(1.0), s_->object);
         m = glm::rotate(m, glm::radians(60.0), glm::dvec3(1, 0, 0.3));
+        s_->objectModel = m;
         const glm::dmat3 nm = glm::dmat3(m);
         objectTris_.clear();
         for (size_t k = 0; k + 2 < torus_.indices.size(); k += 3) {
@@ -353,10 +352,11 @@ class StencilLab : public Lab {
     }
 
     static std::vector<glm::dvec3> rectangle() {
-        return {{-3.1, 0.4, kMirrorZ},
-                {-0.7, 0.4, kMirrorZ},
-                {-0.7, 3.3, kMirrorZ},
-                {-3.1, 3.3, kMirrorZ}};
+        const double* r = kRectMirror;
+        return {{r[0], r[1], kMirrorZ},
+                {r[2], r[1], kMirrorZ},
+                {r[2], r[3], kMirrorZ},
+                {r[0], r[3], kMirrorZ}};
     }
 
     static std::vector<glm::dvec3> ellipse() {
@@ -364,7 +364,8 @@ class StencilLab : public Lab {
         const int segments = 72;
         for (int i = 0; i < segments; ++i) {
             const double a = 2.0 * kPi * i / segments;
-            e.push_back({2.0 + 1.2 * std::cos(a), 2.1 + 1.4 * std::sin(a), kMirrorZ});
+            const double* m = kEllipseMirror;
+            e.push_back({m[0] + m[2] * std::cos(a), m[1] + m[3] * std::sin(a), kMirrorZ});
         }
         return e;
     }
@@ -383,6 +384,8 @@ class StencilLab : public Lab {
         glGetDoublev(GL_MODELVIEW_MATRIX, mv);
         glGetDoublev(GL_PROJECTION_MATRIX, pr);
         glGetIntegerv(GL_VIEWPORT, vp);
+        s_->modelview = glm::make_mat4(mv);
+        s_->projection = glm::make_mat4(pr);
         auto project = [&](const std::vector<glm::dvec3>& pts) {
             std::vector<glm::dvec2> out;
             for (const glm::dvec3& p : pts) {

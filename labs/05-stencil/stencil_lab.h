@@ -21,6 +21,16 @@ constexpr uint8_t kStencilStairFront = 5; // the stairs' front side (z = +1.2)
 constexpr uint8_t kStencilFirstStep = 6;  // tread i: 6 + 2i, riser i: 7 + 2i
 constexpr uint8_t kShadowBit = 0x80;
 
+// Scene geometry in world units (y up), shared with the tests' independent references.
+constexpr double kStepWidth = 0.8, kStepHeight = 0.4;      // stairs climb towards +x from x = -1.6
+constexpr double kStairX0 = -1.6, kStairHalfDepth = 1.2;   // stairs span z in [-1.2, 1.2]
+constexpr double kWallZ = -3.0, kMirrorZ = -2.98;          // mirrors hang 2 cm in front of the wall
+constexpr double kRectMirror[4] = {-3.1, 0.4, -0.7, 3.3};  // x0, y0, x1, y1
+constexpr double kEllipseMirror[4] = {2.0, 2.1, 1.2, 1.4}; // centre x, y; semi-axes along x, y
+constexpr double kTorusMajor = 0.5, kTorusMinor = 0.2;     // the object, axis tilted (objectModel)
+inline const glm::dvec3 kStencilLight{-3.5, 5.0, 2.0};     // the point light
+constexpr float kShadowAlpha = 0.5f;                       // shadow keeps 1 - 0.5 of the colour
+
 struct StencilLabState {
     bool shadow = true; // s: shadows: the object's on everything, the stairs' on floor and wall
     bool naiveShadow = false;  // n: shadow without the stencil, to see leaks and double blending
@@ -35,6 +45,8 @@ struct StencilLabState {
     int width = 0, height = 0;    // of `stencil`
     // The mirrors' outlines projected to window pixels (x right, y DOWN, like the image).
     std::vector<glm::dvec2> rectOutline, ellipseOutline;
+    glm::dmat4 objectModel{1.0};                // torus object space -> world
+    glm::dmat4 modelview{1.0}, projection{1.0}; // the camera of the last frame (no mirror)
     int shadowTriangles = 0; // clipped caster triangles drawn as shadow in the last frame
 };
 
