@@ -134,7 +134,7 @@ class AffineLab : public Lab {
                 {"v", "2D view / 3D view"},
                 {"r", "new random line through K, L (next seed)"},
                 {"Left Right", "turn l (mode 2) / move S (mode 3)"},
-                {"Up Down", "move S (mode 3)"}};
+                {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"}};
     }
 
     void draw(const View& view) override {

@@ -8,7 +8,7 @@
 //   v         2D view / 3D view
 //   r         new random line through K, L (next seed)
 //   Left Right  turn l (mode 2) / move S left, right (mode 3)
-//   Up Down     move S up, down (mode 3)
+//   Up Down     move S up, down (mode 3) / tilt l (3D view, mode 2)
 #include "affine_lab.h"
 #include "common/shell.h"
 
