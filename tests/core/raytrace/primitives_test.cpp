@@ -31,6 +31,18 @@ namespace {
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+__extension__ typedef __float128 Quad; // GCC's 113-bit binary128, for references
+
+// Square root in binary128: Newton's iteration from the double root, quadratic
+// convergence from 53 to >113 bits in two steps.
+Quad sqrtQ(Quad a) {
+    if (a <= 0) return 0;
+    Quad x = std::sqrt(double(a));
+    for (int i = 0; i < 3; ++i)
+        x = (x + a / x) / 2;
+    return x;
+}
+
 Ray makeRay(const glm::dvec3& o, const glm::dvec3& d) {
     Ray r;
     r.origin = o;
@@ -108,21 +120,24 @@ TEST_CASE("sphere: hard cases", "[raytrace][primitives]") {
         CHECK(std::fabs(h.t - double(5.0L + a)) <= tol(5));
     }
     SECTION("far origin |o| = 1e6, oblique") {
-        // Aim at the surface point q = (0.6, 0, 0.8) from q + 1e6·(0.8, 0, 0.6)... built so
-        // that the origin is exact: o = (800000.6, 0, 600000.8) is not exact, so the
-        // reference t is computed in long double from the rounded origin (closed form of
-        // the stable algorithm, 64-bit mantissa).
+        // Aimed from 1e6 away along −(0.8, 0, 0.6) at the surface point (0.6, 0, 0.8). The
+        // origin and direction are rounded to double; the reference is the textbook
+        // formula t = (−b − sqrt(b² − a(|f|² − r²)))/a, a = |d|², evaluated in 113-bit
+        // __float128 on the rounded ray: the cancellation b² − ac (1e12 − 1e12 -> ~1)
+        // costs ~40 of the 113 bits, leaving the root good to ~1e-22.
         const glm::dvec3 o(800000.6, 0, 600000.8);
-        const glm::dvec3 d = glm::normalize(glm::dvec3(-0.8, 0, -0.6));
-        const Ray r = makeRay(o, d);
-        long double fx = o.x, fz = o.z, dx = r.direction.x, dz = r.direction.z;
-        const long double h = fx * dx + fz * dz;
-        const long double lx = fx - h * dx, lz = fz - h * dz;
-        const long double l = sqrtl(lx * lx + lz * lz);
-        const long double ref = -h - sqrtl((1 - l) * (1 + l));
+        const Ray r = makeRay(o, {-0.8, 0, -0.6});
+        const Quad fx = o.x, fz = o.z, dx = r.direction.x, dy = r.direction.y, dz = r.direction.z;
+        const Quad b = fx * dx + fz * dz;
+        const Quad c = fx * fx + fz * fz - 1;
+        const Quad a = dx * dx + dy * dy + dz * dz;
+        const Quad ref = (-b - sqrtQ(b * b - a * c)) / a;
         Hit hit;
         REQUIRE(s.intersect(r, 0, kInf, hit));
         CHECK(std::fabs(hit.t - double(ref)) <= tol(1e6));
+        // The textbook formula in double is off by ~1e-5 here (|f|² has ULPs of 1e-4).
+        const double bd = glm::dot(o, r.direction), cd = glm::dot(o, o) - 1;
+        CHECK(std::fabs(-bd - std::sqrt(bd * bd - cd) - double(ref)) > 100 * tol(1e6));
         CHECK(std::fabs(glm::length(hit.point) - 1) <= 4 * kEps); // refined onto the surface
         CHECK(glm::length(hit.point - glm::dvec3(0.6, 0, 0.8)) < 1e-9);
     }

@@ -187,8 +187,9 @@ TEST_CASE("render: seed 000's glass cube scene (figures 10 and 11)", "[raytrace]
                 both.at(x, y)[c] = a.at(x, y)[c];
                 both.at(w + x, y)[c] = b.at(x, y)[c];
             }
-    // The corners show the background (128,207,255) above the horizon-free view? The top
-    // corners look over the rectangle's far edge at the sky.
+    // The top left corner looks past the rectangle at the background (128,207,255).
+    CHECK(a.at(0, 0)[0] == 128);
+    CHECK(a.at(0, 0)[1] == 207);
     CHECK(a.at(0, 0)[2] == 255);
     // The image is not flat: cube, floor, shadow and background all differ.
     int distinct = 0;
