@@ -203,3 +203,47 @@ TEST_CASE("render: seed 000's glass cube scene (figures 10 and 11)", "[raytrace]
                            both, &err));
     INFO(err);
 }
+
+TEST_CASE("render: every primitive in one scene (phong model)", "[raytrace][render]") {
+    Scene s;
+    s.background = {0.15, 0.15, 0.2};
+    s.lights.push_back(Light::point({-4, -6, 8}));
+    auto mat = [&](double r, double g, double b, double kr = 0, double kt = 0) {
+        Material m;
+        m.colour = {r, g, b};
+        m.ka = 0.3;
+        m.kd = 0.7;
+        m.ks = 0.4;
+        m.phongExp = 30;
+        m.kr = kr;
+        m.kt = kt;
+        m.medium.refract = 1.5;
+        return s.addMaterial(m);
+    };
+    Plane floor({0, 0, 0}, {0, 0, 1});
+    s.add(floor, mat(0.8, 0.8, 0.8, 0.2));
+    s.add(Sphere({-3, 0, 1}, 1), mat(0.9, 0.2, 0.2));
+    s.add(Box({-0.8, -0.8, 0}, {1.6, 0, 0}, {0.4, 1.6, 0}, {0, 0, 1.6}), mat(0.2, 0.8, 0.2));
+    s.add(makeCylinder({3, 0, 0}, {3, 0, 2}, 0.8), mat(0.2, 0.3, 0.9));
+    s.add(Cone({-3, 3, 0}, 1, {-3, 3, 2}, 0.3), mat(0.9, 0.8, 0.2));
+    s.add(Quadric(Quadric::Kind::Ellipsoid, {0, 3, 1}, {1.2, 0.7, 1}), mat(0.8, 0.3, 0.8, 0, 0.6));
+    s.add(Quadric(Quadric::Kind::Paraboloid, {3, 3, 0.2}, {0.6, 0.6, 1}, 0, 1.8),
+          mat(0.3, 0.8, 0.8));
+    s.add(Quadric(Quadric::Kind::Hyperboloid, {3, -3, 1}, {0.5, 0.5, 0.6}, 0, 2),
+          mat(0.9, 0.5, 0.2));
+    // A pyramid from five half-spaces (normals left unnormalised on purpose).
+    s.add(ConvexPolyhedron({{{0, 0, -1}, 0},
+                            {{1, 0, 1}, 2.1},
+                            {{-1, 0, 1}, -0.9},
+                            {{0, 1, 1}, -1.4},
+                            {{0, -1, 1}, 2.6}}),
+          mat(0.6, 0.6, 0.3));
+    s.add(Triangle({-1.5, -2, 0}, {-0.5, -2, 0}, {-1, -2, 1.5}), mat(0.9, 0.9, 0.9));
+    s.add(Rectangle({-4.5, -4, 0.01}, {-2.5, -4, 0.01}, {-4.5, -2, 0.01}), mat(0.1, 0.1, 0.1, 0.6));
+    const LookAtCamera cam({2, -11, 7}, {0, 0, 0.8}, {0, 0, 1}, 45);
+    const PhongModel model;
+    RenderStats st;
+    const wb::Image img = render(s, cam, model, 320, 240, {}, &st);
+    CHECK(st.nonFinitePixels == 0);
+    CHECK(wb::writePng(std::string(WB_TEST_OUT_DIR) + "/primitives.png", img));
+}

@@ -5,12 +5,14 @@
 #include "core/raytrace/camera.h"
 #include "core/raytrace/course_model.h"
 #include "core/raytrace/rectangle.h"
+#include "core/raytrace/render.h"
 #include "core/raytrace/scene.h"
 #include "core/raytrace/tracer.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 using namespace wb::rt;
 
@@ -261,4 +263,27 @@ TEST_CASE("seed 000: colour arithmetic rounds ties to even", "[raytrace][seed000
     checkColour(CourseModel::add({200, 100, 0}, {100, 100, 0}), 255, 200, 0); // clamped
     checkColour(CourseModel::mulBy({100, 100, 100}, -1), 0, 0, 0);
     checkColour(CourseModel::mulBy({100, 100, 100}, std::nan("")), 0, 0, 0);
+}
+
+TEST_CASE("seed 000 part 2: the rendered image has (168,233,86) at pixel P(50,0)",
+          "[raytrace][seed000]") {
+    Scene s;
+    s.lights.push_back(Light::point({0, 0, 60}));
+    s.distScale = 30;
+    const int red = s.addMaterial(seedMaterial(kRed, 0.0));
+    const int green = s.addMaterial(seedMaterial(kGreen, 0.5));
+    s.add(Rectangle({50, 0, 20}, {50, 0, 70}, {50, 50, 20}), red);
+    s.add(Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), green);
+    const CourseModel model;
+    RenderStats st;
+    // 160×160 pixels of one world unit: homeX = homeY = 80, so P(50, 0) is pixel (130, 80).
+    const wb::Image img = render(s, ScreenCamera::seed000(), model, 160, 160, {}, &st);
+    CHECK(st.nonFinitePixels == 0);
+    CHECK(int(img.at(130, 80)[0]) == 168);
+    CHECK(int(img.at(130, 80)[1]) == 233);
+    CHECK(int(img.at(130, 80)[2]) == 86);
+    CHECK(int(img.at(0, 0)[0]) == 128); // background (128,207,255) outside the rectangles
+    CHECK(int(img.at(0, 0)[1]) == 207);
+    CHECK(int(img.at(0, 0)[2]) == 255);
+    CHECK(wb::writePng(std::string(WB_TEST_OUT_DIR) + "/seed000_part2.png", img));
 }
