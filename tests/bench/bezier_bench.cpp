@@ -139,7 +139,7 @@ struct Plot {
     int x0, y0, w, h;          // plot area in pixels
     double lx0, lx1, ly0, ly1; // log axis ranges
     Plot(int width, int height, double xmin, double xmax, double ymin, double ymax)
-        : img(width, height), x0(40), y0(10), w(width - 50), h(height - 40), lx0(std::log2(xmin)),
+        : img(width, height), x0(48), y0(10), w(width - 58), h(height - 50), lx0(std::log2(xmin)),
           lx1(std::log2(xmax)), ly0(std::log10(ymin)), ly1(std::log10(ymax)) {
         std::fill(img.data.begin(), img.data.end(), uint8_t(255));
         for (double d = std::ceil(ly0); d <= ly1; d += 1.0)
@@ -177,6 +177,43 @@ struct Plot {
                 const int x = ax + (bx - ax) * i / steps, y = ay + (by - ay) * i / steps;
                 set(x, y + t, c);
             }
+    }
+    // Tick labels in a 3×5 pixel font (digits, e, -, n), drawn at twice the size.
+    void text(int x, int y, const std::string& str) {
+        static const char* const glyphs = "0111101101101111"
+                                          "1010110010010111"
+                                          "2111001111100111"
+                                          "3111001111001111"
+                                          "4101101111001001"
+                                          "5111100111001111"
+                                          "6111100111101111"
+                                          "7111001001001001"
+                                          "8111101111101111"
+                                          "9111101111001111"
+                                          "e000110111100011"
+                                          "-000000111000000"
+                                          "n000110101101101";
+        for (char ch : str) {
+            for (const char* g = glyphs; *g; g += 16)
+                if (*g == ch)
+                    for (int r = 0; r < 5; ++r)
+                        for (int c = 0; c < 3; ++c)
+                            if (g[1 + r * 3 + c] == '1')
+                                for (int d = 0; d < 4; ++d)
+                                    set(x + 2 * c + d % 2, y + 2 * r + d / 2, {0, 0, 0});
+            x += 8;
+        }
+    }
+    void labels() {
+        for (double e = lx0; e <= lx1 + 1e-9; e += 1.0) {
+            const std::string t = std::to_string(int(std::lround(std::exp2(e))));
+            text(px(std::exp2(e)) - int(t.size()) * 4, y0 + h + 6, t);
+        }
+        text(x0 + w - 8, y0 + h + 20, "n");
+        for (double d = std::ceil(ly0); d <= ly1; d += 1.0) {
+            const std::string t = d == 0.0 ? "1" : "1e" + std::to_string(int(d));
+            text(x0 - 4 - 8 * int(t.size()), py(std::pow(10.0, d)) - 5, t);
+        }
     }
     void series(const std::vector<Row>& rows, double Row::*field, std::array<uint8_t, 3> c) {
         for (size_t i = 0; i + 1 < rows.size(); ++i)
@@ -369,6 +406,7 @@ int main(int argc, char** argv) {
     plot.series(rows, &Row::circle8Err, {240, 150, 0});
     plot.series(rows, &Row::sphereErr, {40, 80, 220});
     plot.series(rows, &Row::sphereFitErr, {0, 190, 210});
+    plot.labels();
 
     const std::string mdPath = o.outDir + "/bezier.md", pngPath = o.outDir + "/bezier.png";
     std::FILE* f = std::fopen(mdPath.c_str(), "w");
