@@ -24,7 +24,9 @@ struct WindowState {
     std::unique_ptr<Lab> lab;
     ShellOptions opts;
     std::string program;
-    View view;
+    View view;                    // the scene's part of the window (left of the panel)
+    int windowWidth = 800;        // whole window, pixels
+    int windowHeight = 600;
     bool panelVisible = true;
     int frame = 0;
     std::vector<int> smokeKeys;   // --smoke: keys still to press, one per frame
@@ -38,6 +40,16 @@ struct WindowState {
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
 WindowState* g = nullptr;
+
+// The panel is docked at the right edge and the scene gets the rest of the window, so
+// nothing of the scene hides behind it (an instructor demoing keys 1-4 needs both).
+constexpr int kPanelWidth = 380;
+
+void layout() {
+    int sceneWidth = g->panelVisible ? g->windowWidth - kPanelWidth : g->windowWidth;
+    g->view.width = sceneWidth > 1 ? sceneWidth : 1;
+    g->view.height = g->windowHeight > 1 ? g->windowHeight : 1;
+}
 
 void quit() { glutLeaveMainLoop(); }
 
@@ -58,19 +70,21 @@ std::string timestampedName() {
 }
 
 void saveScreenshot(const std::string& path) {
-    Image img = readFramebuffer(g->view.width, g->view.height);
+    Image img = readFramebuffer(g->windowWidth, g->windowHeight);
     std::string error;
     g->lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
     std::fprintf(stderr, "%s\n", g->lastScreenshot.c_str());
 }
 
 void drawPanel() {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin(g->lab->title().c_str());
+    ImGui::SetNextWindowPos(ImVec2(float(g->windowWidth - kPanelWidth), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(g->windowHeight)), ImGuiCond_Always);
+    ImGui::Begin(g->lab->title().c_str(), nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::Text("frame %.2f ms (%.0f fps)", g->smoothMs, g->smoothMs > 0 ? 1000.0 / g->smoothMs : 0.0);
     if (ImGui::Button("Screenshot (PNG)")) g->screenshotRequested = true;
     if (!g->lastScreenshot.empty()) ImGui::TextWrapped("%s", g->lastScreenshot.c_str());
+    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) g->lab->gui();
     if (ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const auto& k : g->lab->keys()) ImGui::BulletText("%-6s %s", k.key.c_str(), k.what.c_str());
         ImGui::BulletText("%-6s %s", "h", "hide/show this panel");
@@ -78,7 +92,6 @@ void drawPanel() {
         ImGui::BulletText("%-6s %s", "drag", "rotate the scene");
         ImGui::BulletText("%-6s %s", "Esc", "quit");
     }
-    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) g->lab->gui();
     ImGui::End();
 }
 
@@ -94,6 +107,7 @@ void display() {
     ImGui::Render();
 
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
+    layout();
     glViewport(0, 0, g->view.width, g->view.height);
     g->lab->draw(g->view);
     bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames;
@@ -121,8 +135,9 @@ void display() {
 
 void reshape(int w, int h) {
     ImGui_ImplGLUT_ReshapeFunc(w, h);
-    g->view.width = w > 0 ? w : 1;
-    g->view.height = h > 0 ? h : 1;
+    g->windowWidth = w;
+    g->windowHeight = h;
+    layout();
 }
 
 void keyboard(unsigned char c, int x, int y) {
@@ -221,10 +236,12 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    glutInitWindowSize(state.opts.width, state.opts.height);
+    // --size is the scene's size; the panel is added beside it.
+    state.windowWidth = state.opts.width + kPanelWidth;
+    state.windowHeight = state.opts.height;
+    glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());
-    state.view.width = state.opts.width;
-    state.view.height = state.opts.height;
+    layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
         std::fprintf(stderr, "%s: GLEW: %s\n", argv[0], reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
