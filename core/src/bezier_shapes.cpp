@@ -61,6 +61,32 @@ glm::dvec3 closestOnTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm
     return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
+// Points of the (n+1)×(n+1) grid, [j·(n+1) + i], without derivatives: each u column's
+// v-curve is built once and reused for all v, so this is far cheaper than evalPatch per
+// point (it dominates the net fit and the error measures).
+void gridPoints(const BezierPatch& patch, int n, std::vector<glm::dvec3>& points) {
+    checkPatch(patch);
+    const size_t w = size_t(n) + 1;
+    points.assign(w * w, glm::dvec3(0.0));
+    BezierCurve row(size_t(patch.orderU)), column(size_t(patch.orderV)), work;
+    for (size_t i = 0; i < w; ++i) {
+        const double u = double(i) / n;
+        for (int j = 0; j < patch.orderV; ++j) {
+            for (int k = 0; k < patch.orderU; ++k)
+                row[size_t(k)] = patch.at(k, j);
+            column[size_t(j)] = evalDeCasteljau(row, u);
+        }
+        for (size_t j = 0; j < w; ++j) {
+            const double v = double(j) / n;
+            work = column;
+            for (size_t r = 1; r < work.size(); ++r)
+                for (size_t k = 0; k + r < work.size(); ++k)
+                    work[k] = (1.0 - v) * work[k] + v * work[k + 1];
+            points[j * w + i] = work[0];
+        }
+    }
+}
+
 // The course's net as (a, b, p, q, h); see fitHemisphereNet.
 BezierPatch hemisphere(const std::array<double, 5>& x) {
     const double a = x[0], b = x[1], p = x[2], q = x[3], h = x[4];
@@ -235,9 +261,9 @@ RadialError patchesRadialError(const std::vector<BezierPatch>& patches, double r
                                int samples) {
     checkN(samples, "patchesRadialError");
     RadialError e = start();
-    std::vector<glm::dvec3> pts, nrm;
+    std::vector<glm::dvec3> pts;
     for (const auto& p : patches) {
-        tessellatePatch(p, samples, pts, nrm);
+        gridPoints(p, samples, pts);
         for (const auto& q : pts)
             extend(e, glm::length(q));
     }
@@ -247,10 +273,10 @@ RadialError patchesRadialError(const std::vector<BezierPatch>& patches, double r
 RadialError meshRadialError(const std::vector<BezierPatch>& patches, double radius, int n) {
     checkN(n, "meshRadialError");
     RadialError e = start();
-    std::vector<glm::dvec3> pts, nrm;
+    std::vector<glm::dvec3> pts;
     const glm::dvec3 o(0.0);
     for (const auto& p : patches) {
-        tessellatePatch(p, n, pts, nrm);
+        gridPoints(p, n, pts);
         const size_t w = size_t(n) + 1;
         for (const auto& q : pts)
             extend(e, glm::length(q));
