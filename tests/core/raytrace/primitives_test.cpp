@@ -219,6 +219,13 @@ TEST_CASE("triangle: hard cases", "[raytrace][primitives]") {
     expectHit(t, makeRay({0.25, 0.25, 1e7}, {0, 0, -1}), 1e7, {0, 0, 1}, 1e7);
     expectMiss(Triangle({0, 0, 0}, {1, 1, 1}, {2, 2, 2}),
                makeRay({1, 1, 5}, {0, 0, -1})); // zero area
+    { // Grazing: 1e-6 rad above the plane from 1e3 away, aimed at (0.25, 0.25, 0).
+        const glm::dvec3 aim(0.25, 0.25, 0), o(-1e3 + 0.25, 0.25, 1e-3);
+        Hit g;
+        REQUIRE(t.intersect(makeRay(o, aim - o), 0, kInf, g));
+        CHECK(glm::length(g.point - aim) <= 1e-9); // |o|·eps/sin(1e-6) ~ 2e-7 is the naive bound
+        CHECK(g.point.z == 0);                     // on the triangle: from the barycentrics
+    }
     Hit h;
     REQUIRE(t.intersect(makeRay({0.2, 0.3, 1}, {0, 0, -1}), 0, kInf, h));
     CHECK(h.uv.x == Approx(0.2)); // barycentrics of v1, v2
