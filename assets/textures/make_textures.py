@@ -4,6 +4,7 @@
 bricks.png  128x128  a brick wall, for the flat object (wrap and filter modes show on it)
 uvgrid.png  256x128  16x8 coloured cells with dark lines, hue by s and brightness by t, so
                      the seam, the poles and any stretching show on the sphere and torus
+bumps.png   128x128  height map (grey = height) of 2x2 round bumps, for Blinn bump mapping on the torus
 Run it from anywhere; it writes next to itself.
 """
 import colorsys
@@ -42,6 +43,18 @@ def uvgrid(x, y):
     return (int(r * 255), int(g * 255), int(b * 255))
 
 
+def bumps(x, y):
+    # Cell centres at (32, 32) + 64·k; height (1 - (d/26)²)² inside radius 26: smooth to
+    # first order at the rim, so the central differences of the shader see no kink.
+    dx = (x % 64) - 31.5
+    dy = (y % 64) - 31.5
+    q = (dx * dx + dy * dy) / (26.0 * 26.0)
+    h = (1.0 - q) ** 2 if q < 1.0 else 0.0
+    v = int(round(255 * h))
+    return (v, v, v)
+
+
 here = os.path.dirname(os.path.abspath(__file__))
 write_png(os.path.join(here, "bricks.png"), 128, 128, bricks)
 write_png(os.path.join(here, "uvgrid.png"), 256, 128, uvgrid)
+write_png(os.path.join(here, "bumps.png"), 128, 128, bumps)

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
@@ -20,6 +21,8 @@ namespace {
 // A core mesh in float arrays for glDrawElements.
 struct GlMesh {
     std::vector<float> positions, normals, texCoords;
+    std::vector<float> tangents; // unit ∂p/∂s, for bump mapping
+    std::vector<float> scales;   // |∂p/∂s|, |∂p/∂t|, for bump mapping (torus only)
     std::vector<GLuint> indices;
 };
 
@@ -29,12 +32,23 @@ GlMesh toGl(const Mesh& m) {
         for (int k = 0; k < 3; ++k) {
             g.positions.push_back(float(m.positions[i][k]));
             g.normals.push_back(float(m.normals[i][k]));
+            g.tangents.push_back(float(m.tangents[i][k]));
         }
         g.texCoords.push_back(float(m.texCoords[i].x));
         g.texCoords.push_back(float(m.texCoords[i].y));
     }
     g.indices.assign(m.indices.begin(), m.indices.end());
     return g;
+}
+
+// The torus p(s,t) of makeTorus: |∂p/∂s| = 2π·(distance from the y axis), |∂p/∂t| = 2π·r.
+void addTorusScales(GlMesh& g, double minorRadius) {
+    constexpr double kTwoPi = 6.283185307179586;
+    for (size_t i = 0; i + 2 < g.positions.size(); i += 3) {
+        g.scales.push_back(
+            float(kTwoPi * std::hypot(double(g.positions[i]), double(g.positions[i + 2]))));
+        g.scales.push_back(float(kTwoPi * minorRadius));
+    }
 }
 
 void drawMesh(const GlMesh& g) {
@@ -76,6 +90,8 @@ class TexturesLab : public Lab {
                 {"w", "GL_REPEAT / GL_CLAMP"},
                 {"f", "filter: nearest / linear / mipmaps"},
                 {"t", "texture: bricks / uv grid"},
+                {"5", "bump-mapped torus (GLSL, section 1.5.2)"},
+                {"k", "bump mapping on/off (smooth torus, same shader)"},
                 {"o", "mirror object: sphere / torus"},
                 {"b", "background room on/off"},
                 {"Left/Right/Up/Down", "spin the object"}};
@@ -90,12 +106,12 @@ class TexturesLab : public Lab {
     }
 
     void init() override {
-        glGenTextures(2, textures_);
+        glGenTextures(3, textures_);
         glGenTextures(1, &sphereMapTex_);
         glGenTextures(1, &latLongTex_);
         haveMap_ = false; // a new context (a second headless render) has no sphere map yet
         s_->message.clear();
-        for (int i = 0; i < 2; ++i) {
+        for (int i = 0; i < 3; ++i) {
             // A path given on the command line is used as typed; the defaults live under the asset
             // root.
             const std::string& f = s_->textureFiles[i];
@@ -111,6 +127,13 @@ class TexturesLab : public Lab {
         upload(latLongTex_, makeLatLongImage(512, 256));
         sphere_ = toGl(makeSphere(1.2, 48, 24));
         torus_ = toGl(makeTorus(1.1, 0.45, 64, 32));
+        addTorusScales(torus_, 0.45);
+        std::string err;
+        bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
+        if (!bumpProgram_) {
+            std::fprintf(stderr, "lab04: %s\n", err.c_str());
+            s_->message += err + " (scene 5 falls back to the fixed-function torus)\n";
+        }
         room_ = toGl(makeSphere(30.0, 64, 32));
     }
 
@@ -146,6 +169,9 @@ class TexturesLab : public Lab {
         case TextureScene::Mirror:
             drawMirror(view);
             break;
+        case TextureScene::Bump:
+            drawBump();
+            break;
         }
         glPopMatrix();
         glDisable(GL_TEXTURE_2D);
@@ -164,6 +190,12 @@ class TexturesLab : public Lab {
             return true;
         case '4':
             s_->scene = TextureScene::Mirror;
+            return true;
+        case '5':
+            s_->scene = TextureScene::Bump;
+            return true;
+        case 'k':
+            s_->bump = !s_->bump;
             return true;
         case 'w':
             s_->repeat = !s_->repeat;
@@ -207,6 +239,8 @@ class TexturesLab : public Lab {
         ImGui::RadioButton("torus", &scene, 3);
         ImGui::SameLine();
         ImGui::RadioButton("mirror", &scene, 4);
+        ImGui::SameLine();
+        ImGui::RadioButton("bump", &scene, 5);
         s_->scene = TextureScene(scene);
         ImGui::Checkbox("GL_REPEAT (w; off = GL_CLAMP)", &s_->repeat);
         int filter = int(s_->filter);
@@ -215,6 +249,9 @@ class TexturesLab : public Lab {
         ImGui::Combo("texture (t)", &s_->texture, "bricks\0uv grid\0");
         ImGui::Checkbox("mirror torus (o; off = sphere)", &s_->mirrorTorus);
         ImGui::Checkbox("background room (b)", &s_->background);
+        ImGui::Checkbox("bump mapping (k)", &s_->bump);
+        float depth = float(s_->bumpDepth);
+        if (ImGui::SliderFloat("bump depth", &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
         float spin[2] = {float(s_->spinX), float(s_->spinY)};
         if (ImGui::DragFloat2("spin x, y (arrows)", spin)) s_->spinX = spin[0], s_->spinY = spin[1];
         ImGui::Text("sphere map rebuilt %d times (once per new view)", s_->sphereMapBuilds);
@@ -324,9 +361,76 @@ class TexturesLab : public Lab {
         glDisable(GL_TEXTURE_GEN_T);
     }
 
+    // Blinn bump mapping (section 1.5.2) in shaders/bump.*: four white lights and a weak
+    // ambient as in fig. 5.20; the height map tiles 10× around the ring, 3× around the tube.
+    void drawBump() {
+        const GLfloat lights[4][4] = {{4, 3, 4, 1}, {-4, 3, 4, 1}, {0, -3, 4, 1}, {0, 4, -4, 1}};
+        const GLfloat white[] = {0.45f, 0.45f, 0.45f, 1}, black[] = {0, 0, 0, 1};
+        const GLfloat weak[] = {0.12f, 0.12f, 0.12f, 1};
+        glMatrixMode(GL_MODELVIEW);
+        glPushMatrix(); // the lights are fixed in the world, not spun with the torus
+        glLoadIdentity();
+        glTranslated(0.0, 0.0, -5.0);
+        for (int i = 0; i < 4; ++i) {
+            const GLenum l = GLenum(GL_LIGHT0 + i);
+            glLightfv(l, GL_POSITION, lights[i]);
+            glLightfv(l, GL_DIFFUSE, white);
+            glLightfv(l, GL_SPECULAR, white);
+            glLightfv(l, GL_AMBIENT, black);
+            glEnable(l);
+        }
+        glPopMatrix();
+        glLightModelfv(GL_LIGHT_MODEL_AMBIENT, weak);
+        const GLfloat diffuse[] = {0.85f, 0.65f, 0.35f, 1}, specular[] = {0.6f, 0.6f, 0.6f, 1};
+        glMaterialfv(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, diffuse);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, specular);
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 40.0f);
+        glMaterialfv(GL_FRONT_AND_BACK, GL_EMISSION, black);
+        if (!bumpProgram_) { // the shader did not build: the smooth torus, fixed function
+            glEnable(GL_LIGHTING);
+            glDisable(GL_TEXTURE_2D);
+            drawMesh(torus_);
+        } else {
+            glBindTexture(GL_TEXTURE_2D, textures_[2]);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+            GLint w = 1, h = 1;
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &w);
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
+            glUseProgram(bumpProgram_);
+            glUniform1i(glGetUniformLocation(bumpProgram_, "heightMap"), 0);
+            glUniform2f(glGetUniformLocation(bumpProgram_, "repeats"), 10.0f, 3.0f);
+            glUniform2f(glGetUniformLocation(bumpProgram_, "texelSize"), 1.0f / float(w),
+                        1.0f / float(h));
+            glUniform1f(glGetUniformLocation(bumpProgram_, "depth"),
+                        s_->bump ? float(s_->bumpDepth) : 0.0f);
+            glClientActiveTexture(GL_TEXTURE1);
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+            glTexCoordPointer(3, GL_FLOAT, 0, torus_.tangents.data());
+            glClientActiveTexture(GL_TEXTURE2);
+            glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+            glTexCoordPointer(2, GL_FLOAT, 0, torus_.scales.data());
+            glClientActiveTexture(GL_TEXTURE0);
+            drawMesh(torus_);
+            glClientActiveTexture(GL_TEXTURE2);
+            glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+            glClientActiveTexture(GL_TEXTURE1);
+            glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+            glClientActiveTexture(GL_TEXTURE0);
+            glUseProgram(0);
+        }
+        for (int i = 0; i < 4; ++i)
+            glDisable(GLenum(GL_LIGHT0 + i));
+        glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, black);
+        glDisable(GL_LIGHTING);
+    }
+
     TexturesLabState own_;
     TexturesLabState* s_;
-    GLuint textures_[2] = {0, 0};
+    GLuint textures_[3] = {0, 0, 0};
+    GLuint bumpProgram_ = 0;
     GLuint sphereMapTex_ = 0, latLongTex_ = 0;
     bool haveMap_ = false;
     float mapYaw_ = 0, mapPitch_ = 0;

@@ -1,6 +1,7 @@
 #pragma once
 // Lab 4 - textures (section 1.5.3, lab 4): a texture on a flat object with the wrap and
-// filter modes, on a hand-made sphere and torus, and a mirror object by GL_SPHERE_MAP.
+// filter modes, on a hand-made sphere and torus, a mirror object by GL_SPHERE_MAP, and
+// Blinn bump mapping on the torus (section 1.5.2) in GLSL.
 #include "common/lab.h"
 
 #include <memory>
@@ -8,18 +9,21 @@
 
 namespace wb {
 
-enum class TextureScene { Flat = 1, Sphere = 2, Torus = 3, Mirror = 4 };
+enum class TextureScene { Flat = 1, Sphere = 2, Torus = 3, Mirror = 4, Bump = 5 };
 enum class TextureFilter { Nearest = 0, Linear = 1, Mipmap = 2 };
 
 struct TexturesLabState {
     TextureScene scene = TextureScene::Flat;      // keys 1-4
     bool repeat = true;                           // w: GL_REPEAT, else GL_CLAMP
     TextureFilter filter = TextureFilter::Mipmap; // f cycles nearest / linear / mipmaps
-    int texture = 0;             // t: 0 = bricks.png, 1 = uvgrid.png (1-3 pick the natural one)
-    bool mirrorTorus = false;    // o: the mirror object of scene 4 is a torus, else a sphere
-    bool background = true;      // b: draw the room the mirror reflects
+    int texture = 0;          // t: 0 = bricks.png, 1 = uvgrid.png (1-3 pick the natural one)
+    bool mirrorTorus = false; // o: the mirror object of scene 4 is a torus, else a sphere
+    bool background = true;   // b: draw the room the mirror reflects
+    bool bump = true;         // k: scene 5 with the height map, else the smooth torus (same shader)
+    double bumpDepth = 0.04;  // scene 5: displacement of the height map's white, object units
     double spinX = 0, spinY = 0; // arrow keys: object rotation in degrees (not the viewer)
-    std::string textureFiles[2] = {"assets/textures/bricks.png", "assets/textures/uvgrid.png"};
+    std::string textureFiles[3] = {"assets/textures/bricks.png", "assets/textures/uvgrid.png",
+                                   "assets/textures/bumps.png"}; // the last is the height map
     std::string message;     // texture load problems, shown in the panel and on stderr
     int sphereMapBuilds = 0; // how often the sphere map was rebuilt for a new view
 };

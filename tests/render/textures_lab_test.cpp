@@ -50,7 +50,9 @@ TEST_CASE("lab 04 goldens for each key state", "[gl][textures]") {
                               {"3t", "lab04-torus-bricks"},
                               {"4", "lab04-mirror-sphere"},
                               {"4o", "lab04-mirror-torus"},
-                              {"4b", "lab04-mirror-no-room"}};
+                              {"4b", "lab04-mirror-no-room"},
+                              {"5", "lab04-bump"},
+                              {"5k", "lab04-bump-smooth"}};
     for (auto& c : cases) {
         SECTION(c[1]) {
             auto lab = wb::makeTexturesLab();
@@ -71,6 +73,38 @@ TEST_CASE("lab 04 key states really differ", "[gl][textures]") {
     CHECK(wb::compareImages(repeat, clamp).meanDiff > 5.0);
     CHECK(wb::compareImages(repeat, nearest).meanDiff > 1.0); // minification: aliasing vs mipmaps
     CHECK(wb::compareImages(nearest, linear).meanDiff > 0.5);
+    CHECK(wb::compareImages(render("5"), render("5k")).meanDiff > 1.0);
+}
+
+TEST_CASE("bump mapping changes the shading, not the silhouette", "[gl][textures]") {
+    // Section 1.5.2: the displacement is imagined, only the normals change, so the torus'
+    // outline must be the smooth one pixel for pixel, while the inside is shaded differently.
+    wb::TexturesLabState st;
+    auto lab = wb::makeTexturesLab(&st);
+    wb::Image bumped = wb::test::renderLab(*lab, 200, 150, "5");
+    INFO(st.message);
+    CHECK(st.message.empty());                                    // the shader compiled and linked
+    wb::Image smooth = wb::test::renderLab(*lab, 200, 150, "5k"); // same lab: k toggles back
+    CHECK_FALSE(st.bump);
+    const uint8_t* bg = bumped.at(0, 0); // the clear colour
+    int covered = 0, outlineDiffers = 0, shadingDiffers = 0;
+    for (int y = 0; y < bumped.height; ++y)
+        for (int x = 0; x < bumped.width; ++x) {
+            const uint8_t *a = bumped.at(x, y), *b = smooth.at(x, y);
+            const bool inA = a[0] != bg[0] || a[1] != bg[1] || a[2] != bg[2];
+            const bool inB = b[0] != bg[0] || b[1] != bg[1] || b[2] != bg[2];
+            if (inA != inB) ++outlineDiffers;
+            if (inA && inB) {
+                ++covered;
+                if (std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 12)
+                    ++shadingDiffers;
+            }
+        }
+    WARN("bump: " << covered << " torus pixels, " << shadingDiffers << " shaded differently, "
+                  << outlineDiffers << " outline pixels differ");
+    CHECK(covered > 5000);
+    CHECK(outlineDiffers == 0);
+    CHECK(shadingDiffers > covered / 5);
 }
 
 TEST_CASE("mirror sphere: centre pixel reflects what is behind the viewer", "[gl][textures]") {
