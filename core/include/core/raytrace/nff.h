@@ -1,0 +1,80 @@
+#pragma once
+// Eric Haines' Neutral File Format (the Standard Procedural Databases format), every
+// command: `v` block (from, at, up, angle, hither, resolution), `b`, `l` with an
+// optional colour, `f` (r g b Kd Ks Shine T ior), `c` (cone/cylinder, one-line and
+// three-line forms), `s`, `p` (convex polygon), `pp` (polygon with vertex normals),
+// `#` comments. The document model keeps the file's commands in order, so a
+// read–write–read round trip is exact; toScene maps it onto the "phong" model.
+//
+// Mapping (how SPD authors meant it): colour = rgb, kd = Kd, ks = Ks, Phong
+// exponent = Shine, kr = Ks (Ks is also the mirror reflectance), kt = T, refraction
+// index inside = ior (1 when ior <= 0), ka = 0 (NFF has no ambient term) and the
+// scene's global ambient 0; `l` without a colour has intensity 1/sqrt(number of
+// lights), so the sum of all lights stays near 1; polygons become fans of
+// triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone.
+//
+// Limits (hostile input): a polygon may have 3..kNffMaxVertices vertices, a file at
+// most kNffMaxPrimitives primitives; numbers must be finite; the resolution at most
+// 16384². Errors name the file, the line and the problem.
+#include "core/raytrace/scene_file.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace wb::rt {
+
+constexpr int kNffMaxVertices = 100000;        // per polygon
+constexpr std::size_t kNffMaxPrimitives = 20000000; // per file (about 3 GB of scene)
+
+struct NffSurface {
+    glm::dvec3 colour{1.0}; // r g b, 0..1
+    double kd = 1.0;        // diffuse
+    double ks = 0.0;        // specular and mirror reflectance
+    double shine = 0.0;     // Phong exponent
+    double t = 0.0;         // transmittance
+    double ior = 1.0;       // index of refraction
+};
+
+struct NffLight {
+    glm::dvec3 position{0.0}; // point light
+    glm::dvec3 colour{1.0};   // valid when hasColour
+    bool hasColour = false;   // the file gave r g b
+};
+
+struct NffObject {
+    enum class Kind { Sphere, Cone, Polygon, PatchPolygon };
+    Kind kind = Kind::Sphere;
+    int surface = -1;                 // index into NffDocument::surfaces (-1: none seen yet)
+    glm::dvec3 centre{0.0};           // sphere
+    double radius = 0.0;              // sphere
+    glm::dvec3 base{0.0}, apex{0.0};  // cone
+    double baseRadius = 0.0, apexRadius = 0.0; // cone
+    bool coneOneLine = false;         // cone written as `c x y z r x y z r` on one line
+    std::vector<glm::dvec3> vertices; // polygon / patch
+    std::vector<glm::dvec3> normals;  // patch: one per vertex
+};
+
+struct NffDocument {
+    bool hasView = false;
+    SceneView view;                 // the `v` block
+    bool hasBackground = false;
+    glm::dvec3 background{0.0};     // `b`
+    std::vector<NffLight> lights;   // `l`, in file order
+    std::vector<NffSurface> surfaces; // every `f`, in file order
+    std::vector<NffObject> objects;   // in file order
+};
+
+// Parses NFF text; `name` is used in error messages. Throws SceneFileError.
+NffDocument readNff(std::istream& in, const std::string& name);
+NffDocument readNffFile(const std::string& path);
+// Writes NFF text that readNff reads back to an equal document (numbers with 17
+// significant digits). Objects without a surface get a default `f`.
+void writeNff(std::ostream& out, const NffDocument& doc);
+void writeNffFile(const std::string& path, const NffDocument& doc); // throws SceneFileError
+
+// The scene of a document (see the mapping above); the view is the document's or a
+// framing default.
+SceneFile toScene(const NffDocument& doc);
+
+} // namespace wb::rt

@@ -1,0 +1,55 @@
+#pragma once
+// Multi-threaded tiled rendering (TBB). Each pixel's colour depends only on its own
+// rays, so the image is bit-identical for any thread count and tile order. Progress is
+// reported per finished tile (serialised: the callback never runs twice at once, and
+// the tile's pixels are already in the image when it runs), and a cancel flag is
+// polled between tiles.
+#include "core/image.h"
+#include "core/raytrace/camera.h"
+#include "core/raytrace/tracer.h"
+
+#include <atomic>
+#include <functional>
+
+namespace wb::rt {
+
+struct TileProgress {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0; // the finished tile: pixels [x0,x1) × [y0,y1)
+    int tilesDone = 0;                  // tiles finished so far, including this one
+    int tilesTotal = 0;                 // tiles of the frame
+    const Image* image = nullptr;       // the image being written (read the tile only)
+};
+
+struct ParallelRenderOptions {
+    int threads = 0;      // worker threads; 0 = all cores
+    int tileSize = 32;    // square tiles of this many pixels (>= 1)
+    // SPD benchmark rule: (w+1)·(h+1) eye rays through the pixel corners, each pixel
+    // the mean of its four corners (needs a LookAtCamera). Otherwise one ray through
+    // each pixel centre (camera.primaryRay).
+    bool cornerRays = false;
+    TraceSettings trace;  // depth limit, weight cut-off
+    // Called after each finished tile, from a worker thread, serialised by a mutex.
+    // With cornerRays the tiles are tiles of the corner grid and the image is filled
+    // only at the end (tile callbacks then carry image == nullptr).
+    std::function<void(const TileProgress&)> progress;
+    const std::atomic<bool>* cancel = nullptr; // set to true to stop: tiles not started are skipped
+};
+
+struct ParallelRenderStats {
+    double seconds = 0.0;         // wall time of the frame
+    long long primaryRays = 0;    // eye rays
+    long long secondaryRays = 0;  // reflected + refracted rays
+    long long shadowRays = 0;     // shadow feelers
+    long long nonFinitePixels = 0;// colours with NaN/Inf written as 0; must stay 0
+    int threads = 0;              // threads actually allowed
+    bool cancelled = false;       // the frame stopped early; unfinished tiles are black
+};
+
+Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model,
+                     int width, int height, const ParallelRenderOptions& options = {},
+                     ParallelRenderStats* stats = nullptr);
+
+// Number of hardware threads TBB would use.
+int hardwareThreads();
+
+} // namespace wb::rt

@@ -1,0 +1,47 @@
+#pragma once
+// A scene loaded from a file or generated in code, with the view its author meant
+// (NFF's `v` block; a framing default for OBJ files and scenes without one).
+#include "core/raytrace/camera.h"
+#include "core/raytrace/scene.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace wb::rt {
+
+// Bad input: the message is "file:line: problem" (line 0 when no line applies).
+class SceneFileError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+struct SceneView {
+    glm::dvec3 from{0, 0, 5}; // eye
+    glm::dvec3 at{0.0};       // point looked at (centre of the image)
+    glm::dvec3 up{0, 1, 0};   // up hint, not parallel to at − from
+    double angle = 45.0;      // NFF angle: full vertical field of view in degrees, (0, 180)
+    double hither = 1e-3;     // NFF hither: near distance (read and written, not used to clip)
+    int width = 512;          // NFF resolution (image size the author meant)
+    int height = 512;
+};
+
+struct SceneFile {
+    std::unique_ptr<Scene> scene; // never null after a successful load
+    SceneView view;               // from the file, or a default that frames the scene
+    bool hasView = false;         // the file gave its own view
+    // The pinhole camera of `view` (vertical field of view = view.angle).
+    LookAtCamera camera() const;
+};
+
+// Loads .nff or .obj by extension (case-insensitive). Throws SceneFileError naming the
+// file, the line and the problem; never crashes on malformed input.
+SceneFile loadSceneFile(const std::string& path);
+
+// A view that frames the bounded primitives of `scene` (looking from +z, slightly
+// above, with the scene's bounding sphere filling the vertical field of view).
+SceneView frameScene(const Scene& scene, double angle = 45.0);
+// Adds a white point light above-behind the viewer when the scene has none.
+void addDefaultLight(Scene& scene, const SceneView& view);
+
+} // namespace wb::rt

@@ -1,0 +1,25 @@
+#pragma once
+// Scenes in code: Eric Haines' Standard Procedural Databases "balls" (sphereflake) and
+// "jacks" generators with their view settings, and the small scenes of lab 7's
+// timing experiment and the course seeds, all as NFF documents (write them with
+// writeNff, render them with toScene).
+#include "core/raytrace/nff.h"
+
+namespace wb::rt {
+
+// Sphereflake of size factor 1..6: (9^(SF+1) − 1)/8 spheres (7,381 at SF 4), each
+// parent with 9 children of 1/3 its radius, plus the floor square and 3 lights; the
+// SPD view (from 2.1 1.3 1.7, angle 45, 512×512). Throws std::invalid_argument.
+NffDocument spdBalls(int sizeFactor);
+// Recursive jacks of size factor 1..6: (8^SF − 1)/7 jacks of 3 cylinders and 6
+// spheres, 8 half-size copies per level; the SPD view (from 0 0 −8, angle 25).
+NffDocument spdJacks(int sizeFactor);
+// Counts by the SPD formulas, for tests and the bench.
+long long spdBallsSpheres(int sizeFactor); // (9^(SF+1) − 1)/8
+long long spdJacksCount(int sizeFactor);   // (8^SF − 1)/7
+
+// Lab 7's timing experiment: one sphere, and two spheres (one mirror) over a floor.
+NffDocument oneSphereScene();
+NffDocument twoSpheresScene();
+
+} // namespace wb::rt
