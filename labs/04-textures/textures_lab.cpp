@@ -231,7 +231,7 @@ class TexturesLab : public Lab {
 
     void gui() override {
         int scene = int(s_->scene);
-        ImGui::Text("Scene (1-4)");
+        ImGui::Text("Scene (1-5)");
         ImGui::RadioButton("flat", &scene, 1);
         ImGui::SameLine();
         ImGui::RadioButton("sphere", &scene, 2);

@@ -88,6 +88,10 @@ bool inside(const std::vector<dvec2>& poly, const dvec2& p) {
 }
 
 double distanceToOutline(const std::vector<dvec2>& poly, const dvec2& p) {
+    dvec2 lo(1e9), hi(-1e9); // far outside the bounding box: no need to look at the edges
+    for (const dvec2& v : poly)
+        lo = glm::min(lo, v), hi = glm::max(hi, v);
+    if (p.x < lo.x - 2 || p.y < lo.y - 2 || p.x > hi.x + 2 || p.y > hi.y + 2) return 2.0;
     double best = 1e9;
     for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
         const dvec2 e = poly[i] - poly[j];
