@@ -305,6 +305,19 @@ TEST_CASE("Patch normals stay defined at a pole and at tangent corners", "[bezie
         CHECK(near.normalKind == 0);
         CHECK(glm::length(pole.normal - near.normal) <= 1e-5);
     }
+    // The same cap with u and v swapped: now a column collapses and dv vanishes along
+    // u = 0. Swapping the parameters flips du × dv, so the normal must be the negated one.
+    BezierPatch capT{3, 4, {}};
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 3; ++i)
+            capT.points.push_back(cap.at(j, i));
+    for (double v : {0.0, 0.3, 1.0}) {
+        const PatchSample pole = evalPatch(capT, 0.0, v);
+        CHECK(glm::length(pole.dv) == 0.0);
+        CHECK(pole.normalKind == 1);
+        CHECK(glm::length(pole.normal + evalPatch(cap, v, 0.0).normal) <= 1e-14);
+        CHECK(glm::length(pole.normal - evalPatch(capT, 1e-7, v).normal) <= 1e-5);
+    }
     // The lab's hemisphere: at its corners the two boundary curves are tangent
     // (du ∥ dv), du × dv = 0, yet the normal must point out of the sphere, along (±1, ±1, 0).
     const BezierPatch net = labHemisphereNet();
