@@ -64,7 +64,14 @@ double binomial(int n, int i) {
 
 double bernstein(int k, int i, double u) {
     if (i < 0 || i > k) return 0.0;
-    return binomial(k, i) * std::pow(u, i) * std::pow(1.0 - u, k - i);
+    // C(k, i) overflows a double past k ≈ 1020 (and inf · 0 would be NaN): beyond a safe
+    // degree, evaluate in logarithms, where the huge and tiny factors cancel.
+    if (k <= 500) return binomial(k, i) * std::pow(u, i) * std::pow(1.0 - u, k - i);
+    if (u == 0.0 || u == 1.0) return (u == 0.0 ? i == 0 : i == k) ? 1.0 : 0.0;
+    const double logB = std::lgamma(k + 1.0) - std::lgamma(i + 1.0) - std::lgamma(k - i + 1.0) +
+                        i * std::log(std::abs(u)) + (k - i) * std::log(std::abs(1.0 - u));
+    const double sign = ((u < 0.0 && i % 2) != 0) != ((u > 1.0 && (k - i) % 2) != 0) ? -1.0 : 1.0;
+    return sign * std::exp(logB);
 }
 
 glm::dvec3 evalBernstein(const BezierCurve& p, double u) {

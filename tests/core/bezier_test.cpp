@@ -86,6 +86,28 @@ TEST_CASE("Bernstein polynomials: Theorem 0.1 and exact values", "[bezier]") {
         }
 }
 
+TEST_CASE("Bernstein polynomials of very high degree stay finite", "[bezier]") {
+    // C(2000, 1000) overflows a double; the central term is ~ sqrt(2/(π·2000)) by Stirling
+    // (relative error 1/(8·1000) from the next Stirling term).
+    CHECK(bernstein(2000, 1000, 0.5) == Approx(std::sqrt(2.0 / (M_PI * 2000.0))).epsilon(2e-4));
+    for (double u : {0.0, 1e-12, 0.3, 1.0}) {
+        double sum = 0.0;
+        for (int i = 0; i <= 2000; ++i) {
+            const double b = bernstein(2000, i, u);
+            REQUIRE(std::isfinite(b));
+            sum += b;
+        }
+        // lgamma and exp in double: relative ~1e-13 per term near the peak (log values ~1e4).
+        CHECK(sum == Approx(1.0).epsilon(1e-9));
+    }
+    // Across the switch to logarithms (degree 500 -> 501) the values agree.
+    CHECK(bernstein(501, 200, 0.4) ==
+          Approx(bernstein(500, 200, 0.4) * 0.6 + bernstein(500, 199, 0.4) * 0.4).epsilon(1e-10));
+    // Outside [0, 1] the polynomial keeps its sign pattern: B_1^3(-1) = 3·(-1)·4 = -12.
+    CHECK(bernstein(3, 1, -1.0) == -12.0);
+    CHECK(bernstein(600, 1, -1e-3) < 0.0);
+}
+
 TEST_CASE("Bezier at u = 0, 1 and 1e-12", "[bezier]") {
     const BezierCurve p{{0.3, -1.7, 2.0}, {4.0, 1.0, -2.0}, {-3.0, 2.5, 0.5}, {1.25, 1.5, -0.75}};
     for (auto eval : {evalBernstein, evalDeCasteljau}) {
