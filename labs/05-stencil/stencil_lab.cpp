@@ -481,7 +481,7 @@ class StencilLab : public Lab {
             const double lightSide = glm::dot(r.plane.n, kLight) + r.plane.d;
             if (lightSide <= 0) continue; // the light does not reach this face at all
             glStencilFunc(GL_EQUAL, r.stencil, 0xFF);
-            drawFlattened(r.plane, objectTris_);
+            if (shadowMayReach(r)) drawFlattened(r.plane, objectTris_);
             if (r.stairsCast) drawFlattened(r.plane, stairTris_);
         }
         glStencilMask(0xFF);
@@ -513,6 +513,39 @@ class StencilLab : public Lab {
         glDisable(GL_POLYGON_OFFSET_FILL);
         glDisable(GL_BLEND);
         glEnable(GL_CULL_FACE);
+    }
+
+    // False when the torus' shadow on r's plane certainly misses r's quads: the corners of
+    // the torus' bounding box, flattened by the shadow matrix, bound its shadow (a convex
+    // hull maps to a convex hull while every corner is strictly between light and plane).
+    // Only a speed-up: when in doubt it says true.
+    bool shadowMayReach(const Receiver& r) const {
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (const Triangle& t : objectTris_)
+            for (const glm::dvec3& p : t.p)
+                lo = glm::min(lo, p), hi = glm::max(hi, p);
+        const glm::dmat4 m = shadowPoint(r.plane, kLight);
+        const double lightSide = glm::dot(r.plane.n, kLight) + r.plane.d;
+        glm::dvec3 slo(1e300), shi(-1e300);
+        for (int c = 0; c < 8; ++c) {
+            const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+            const double side = glm::dot(r.plane.n, p) + r.plane.d;
+            if (!(side > 0.0 && side < lightSide)) return true; // straddles: no cheap bound
+            const glm::dvec4 q = m * glm::dvec4(p, 1.0);
+            if (!(q.w > 0.0)) return true;
+            slo = glm::min(slo, glm::dvec3(q) / q.w);
+            shi = glm::max(shi, glm::dvec3(q) / q.w);
+        }
+        const double eps = 1e-6; // the receiver is flat: its box has zero thickness along n
+        for (const Quad& quad : r.quads) {
+            glm::dvec3 qlo(1e300), qhi(-1e300);
+            for (const glm::dvec3& v : quad)
+                qlo = glm::min(qlo, v), qhi = glm::max(qhi, v);
+            if (glm::all(glm::lessThanEqual(slo, qhi + eps)) &&
+                glm::all(glm::lessThanEqual(qlo, shi + eps)))
+                return true;
+        }
+        return false;
     }
 
     // A caster's triangles, clipped to the light's side of `plane` (the part beyond the
