@@ -18,3 +18,4 @@ target_sources(core PRIVATE
   src/raytrace/tracer.cpp
   src/raytrace/triangle.cpp
 )
+target_sources(core PRIVATE src/raytrace/bvh.cpp) # issue 6: BVH (engineer F)

@@ -12,3 +12,8 @@ wb_test(raytrace_test
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)
 endif()
+# Ray tracer at scale (issue 6, engineer F): BVH, NFF/OBJ, SPD generators, parallel render.
+wb_test(raytrace_scale_test
+  SOURCES
+    raytrace_scale/bvh_test.cpp
+  LIBS core)

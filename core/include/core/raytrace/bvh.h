@@ -16,28 +16,29 @@
 namespace wb::rt {
 
 struct BvhOptions {
-    int bins = 16;         // SAH bins per axis (binned build, Wald 2007); 2..256
-    int maxLeafSize = 4;   // a node with at most this many primitives may become a leaf
+    int bins = 16;                 // SAH bins per axis (binned build, Wald 2007); 2..256
+    int maxLeafSize = 4;           // a node with at most this many primitives may become a leaf
     double traversalCost = 1.0;    // SAH cost of visiting a node, relative to...
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // test node boxes in float (boxes rounded outward): faster, same hits
 };
 
 struct BvhStats {
-    int nodes = 0;                   // in the flattened array
-    int leaves = 0;                  // leaf nodes
-    int maxDepth = 0;                // longest root-to-leaf path
-    std::size_t primitives = 0;      // bounded primitives in the tree
-    std::size_t unbounded = 0;       // primitives outside the tree (tested for every ray)
-    double buildSeconds = 0.0;       // wall time of the build
-    double sahCost = 0.0;            // SAH cost of the tree (root area normalised)
+    int nodes = 0;              // in the flattened array
+    int leaves = 0;             // leaf nodes
+    int maxDepth = 0;           // longest root-to-leaf path
+    std::size_t primitives = 0; // bounded primitives in the tree
+    std::size_t unbounded = 0;  // primitives outside the tree (tested for every ray)
+    double buildSeconds = 0.0;  // wall time of the build
+    double sahCost = 0.0;       // SAH cost of the tree (root area normalised)
 };
 
 class Bvh : public Aggregate {
   public:
     // Builds over `prims` (kept by reference: the vector must outlive the BVH and not
-    // change). Primitives with empty or non-finite bounds are never hit, as in
-    // BruteForce. Throws std::invalid_argument for bad options.
+    // change). Primitives with unbounded, empty or non-finite boxes stay outside the
+    // tree and are tested for every ray, as BruteForce would. Throws
+    // std::invalid_argument for bad options.
     explicit Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions options = {});
 
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
@@ -49,16 +50,16 @@ class Bvh : public Aggregate {
     const BvhStats& stats() const { return stats_; }
 
     struct Node {
-        glm::dvec3 lo, hi;     // box
-        glm::vec3 flo, fhi;    // the same box in float, rounded outward
-        std::uint32_t offset;  // leaf: first index into order_; inner: right child index
-        std::uint16_t count;   // leaf: number of primitives; inner: 0
-        std::uint16_t axis;    // inner: split axis (front-to-back order)
+        glm::dvec3 lo, hi;    // box
+        glm::vec3 flo, fhi;   // the same box in float, rounded outward
+        std::uint32_t offset; // leaf: first index into order_; inner: right child index
+        std::uint16_t count;  // leaf: number of primitives; inner: 0
+        std::uint16_t axis;   // inner: split axis (front-to-back order)
     };
 
   private:
-    template <class Visit> void traverse(const Ray& ray, double tMin, double& tMax,
-                                         Visit&& visit) const;
+    template <class Visit>
+    void traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) const;
 
     const std::vector<std::unique_ptr<Primitive>>& prims_;
     BvhOptions options_;

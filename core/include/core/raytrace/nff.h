@@ -24,7 +24,7 @@
 
 namespace wb::rt {
 
-constexpr int kNffMaxVertices = 100000;        // per polygon
+constexpr int kNffMaxVertices = 100000;             // per polygon
 constexpr std::size_t kNffMaxPrimitives = 20000000; // per file (about 3 GB of scene)
 
 struct NffSurface {
@@ -45,22 +45,22 @@ struct NffLight {
 struct NffObject {
     enum class Kind { Sphere, Cone, Polygon, PatchPolygon };
     Kind kind = Kind::Sphere;
-    int surface = -1;                 // index into NffDocument::surfaces (-1: none seen yet)
-    glm::dvec3 centre{0.0};           // sphere
-    double radius = 0.0;              // sphere
-    glm::dvec3 base{0.0}, apex{0.0};  // cone
+    int surface = -1;                // index into NffDocument::surfaces (-1: none seen yet)
+    glm::dvec3 centre{0.0};          // sphere
+    double radius = 0.0;             // sphere
+    glm::dvec3 base{0.0}, apex{0.0}; // cone
     double baseRadius = 0.0, apexRadius = 0.0; // cone
-    bool coneOneLine = false;         // cone written as `c x y z r x y z r` on one line
-    std::vector<glm::dvec3> vertices; // polygon / patch
-    std::vector<glm::dvec3> normals;  // patch: one per vertex
+    bool coneOneLine = false;                  // cone written as `c x y z r x y z r` on one line
+    std::vector<glm::dvec3> vertices;          // polygon / patch
+    std::vector<glm::dvec3> normals;           // patch: one per vertex
 };
 
 struct NffDocument {
     bool hasView = false;
-    SceneView view;                 // the `v` block
+    SceneView view; // the `v` block
     bool hasBackground = false;
-    glm::dvec3 background{0.0};     // `b`
-    std::vector<NffLight> lights;   // `l`, in file order
+    glm::dvec3 background{0.0};       // `b`
+    std::vector<NffLight> lights;     // `l`, in file order
     std::vector<NffSurface> surfaces; // every `f`, in file order
     std::vector<NffObject> objects;   // in file order
 };

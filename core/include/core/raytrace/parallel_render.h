@@ -21,13 +21,13 @@ struct TileProgress {
 };
 
 struct ParallelRenderOptions {
-    int threads = 0;      // worker threads; 0 = all cores
-    int tileSize = 32;    // square tiles of this many pixels (>= 1)
+    int threads = 0;   // worker threads; 0 = all cores
+    int tileSize = 32; // square tiles of this many pixels (>= 1)
     // SPD benchmark rule: (w+1)·(h+1) eye rays through the pixel corners, each pixel
     // the mean of its four corners (needs a LookAtCamera). Otherwise one ray through
     // each pixel centre (camera.primaryRay).
     bool cornerRays = false;
-    TraceSettings trace;  // depth limit, weight cut-off
+    TraceSettings trace; // depth limit, weight cut-off
     // Called after each finished tile, from a worker thread, serialised by a mutex.
     // With cornerRays the tiles are tiles of the corner grid and the image is filled
     // only at the end (tile callbacks then carry image == nullptr).
@@ -36,17 +36,17 @@ struct ParallelRenderOptions {
 };
 
 struct ParallelRenderStats {
-    double seconds = 0.0;         // wall time of the frame
-    long long primaryRays = 0;    // eye rays
-    long long secondaryRays = 0;  // reflected + refracted rays
-    long long shadowRays = 0;     // shadow feelers
-    long long nonFinitePixels = 0;// colours with NaN/Inf written as 0; must stay 0
-    int threads = 0;              // threads actually allowed
-    bool cancelled = false;       // the frame stopped early; unfinished tiles are black
+    double seconds = 0.0;          // wall time of the frame
+    long long primaryRays = 0;     // eye rays
+    long long secondaryRays = 0;   // reflected + refracted rays
+    long long shadowRays = 0;      // shadow feelers
+    long long nonFinitePixels = 0; // colours with NaN/Inf written as 0; must stay 0
+    int threads = 0;               // threads actually allowed
+    bool cancelled = false;        // the frame stopped early; unfinished tiles are black
 };
 
-Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model,
-                     int width, int height, const ParallelRenderOptions& options = {},
+Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model, int width,
+                     int height, const ParallelRenderOptions& options = {},
                      ParallelRenderStats* stats = nullptr);
 
 // Number of hardware threads TBB would use.

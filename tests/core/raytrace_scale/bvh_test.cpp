@@ -1,0 +1,174 @@
+// The BVH against the brute-force loop (the independent reference): on random scenes
+// of every bounded primitive kind plus an unbounded plane, for random rays, the nearest
+// hit has the same t and primitive, forEachHit visits the same set, occluded agrees
+// with "some hit exists"; float boxes give the same hits; degenerate inputs (coincident
+// centroids, one primitive, none, huge counts of equal boxes) build and stay shallow.
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <set>
+
+using namespace wb::rt;
+
+namespace {
+
+glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    return {u(g), u(g), u(g)};
+}
+
+void randomScene(Scene& s, int n, std::mt19937_64& g, bool withPlane) {
+    std::uniform_real_distribution<double> r(0.05, 0.6);
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec3 c = rnd3(g, -10, 10);
+        switch (i % 4) {
+        case 0:
+            s.add(Sphere(c, r(g)), 0);
+            break;
+        case 1:
+            s.add(Cone(c, r(g), c + rnd3(g, -1, 1) + glm::dvec3(0.01), r(g)), 0);
+            break;
+        case 2:
+            s.add(Triangle(c, c + rnd3(g, -1, 1), c + rnd3(g, -1, 1)), 0);
+            break;
+        default:
+            s.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(r(g), r(g), r(g))), 0);
+            break;
+        }
+    }
+    if (withPlane) s.add(Plane({0, 0, -11}, {0, 0, 1}), 0);
+}
+
+Ray randomRay(const Scene& s, std::mt19937_64& g) {
+    Ray ray;
+    ray.origin = rnd3(g, -14, 14);
+    // Aim near a random primitive's box so most rays hit something, some graze.
+    const Aabb b = s.primitives[g() % s.primitives.size()]->bounds();
+    const glm::dvec3 target =
+        b.bounded() ? 0.5 * (b.lo + b.hi) + 0.3 * rnd3(g, -1, 1) : rnd3(g, -10, 10);
+    ray.direction = glm::normalize(target - ray.origin);
+    return ray;
+}
+
+void compareWithBruteForce(const Scene& s, const Bvh& bvh, int rays, std::uint64_t seed) {
+    BruteForce brute(s.primitives);
+    std::mt19937_64 g(seed);
+    int hits = 0;
+    for (int i = 0; i < rays; ++i) {
+        const Ray ray = randomRay(s, g);
+        const double inf = std::numeric_limits<double>::infinity();
+        Hit hb, hv;
+        const bool fb = brute.intersect(ray, 0.0, inf, hb);
+        const bool fv = bvh.intersect(ray, 0.0, inf, hv);
+        REQUIRE(fb == fv);
+        if (fb) {
+            ++hits;
+            REQUIRE(hb.t == hv.t); // the same primitive computes the same t: exact
+            REQUIRE(hb.primitive == hv.primitive);
+        }
+        REQUIRE(bvh.occluded(ray, 0.0, inf) == fb);
+        std::set<const Primitive*> sb, sv;
+        brute.forEachHit(ray, 0.0, inf, [&](const Hit& h) { return sb.insert(h.primitive), true; });
+        bvh.forEachHit(ray, 0.0, inf, [&](const Hit& h) { return sv.insert(h.primitive), true; });
+        REQUIRE(sb == sv);
+        // A segment that ends before the nearest hit meets nothing.
+        if (fb) REQUIRE_FALSE(bvh.occluded(ray, 0.0, hb.t * 0.999));
+    }
+    CHECK(hits > rays / 4); // the test is not vacuous
+}
+
+} // namespace
+
+TEST_CASE("rt_bvh: nearest hit and every hit and any hit equal the brute-force loop",
+          "[raytrace][bvh]") {
+    for (int n : {1, 2, 7, 100, 2000}) {
+        for (bool plane : {false, true}) {
+            INFO("n = " << n << " plane " << plane);
+            std::mt19937_64 g(std::uint64_t(n) * 7 + plane);
+            Scene s;
+            randomScene(s, n, g, plane);
+            Bvh bvh(s.primitives);
+            CHECK(bvh.stats().primitives + bvh.stats().unbounded == s.primitives.size());
+            CHECK(bvh.stats().unbounded == (plane ? 1u : 0u));
+            compareWithBruteForce(s, bvh, 400, 99);
+        }
+    }
+}
+
+TEST_CASE("rt_bvh: float boxes and other bin and leaf settings give the same hits",
+          "[raytrace][bvh]") {
+    std::mt19937_64 g(5);
+    Scene s;
+    randomScene(s, 1500, g, true);
+    for (BvhOptions o : {BvhOptions{16, 4, 1, 1, true}, BvhOptions{2, 1, 1, 1, false},
+                         BvhOptions{64, 8, 1, 4, false}}) {
+        Bvh bvh(s.primitives, o);
+        compareWithBruteForce(s, bvh, 400, 1234);
+    }
+}
+
+TEST_CASE("rt_bvh: the tree is binary and shallow", "[raytrace][bvh]") {
+    std::mt19937_64 g(11);
+    Scene s;
+    randomScene(s, 3000, g, false);
+    Bvh bvh(s.primitives);
+    BvhStats st = bvh.stats();
+    CHECK(st.nodes == 2 * st.leaves - 1); // a binary tree
+    CHECK(st.maxDepth < 64);
+    CHECK(st.sahCost > 0);
+}
+
+TEST_CASE("rt_bvh: coincident centroids and equal boxes stay shallow and correct",
+          "[raytrace][bvh]") {
+    Scene s;
+    for (int i = 0; i < 5000; ++i)
+        s.add(Sphere({0, 0, 0}, 1.0 + i * 1e-4), 0);
+    Bvh bvh(s.primitives);
+    CHECK(bvh.stats().maxDepth < 40); // object-median fallback: ~log2(5000/leaf)
+    Ray ray;
+    ray.origin = {0, 0, 10};
+    ray.direction = {0, 0, -1};
+    Hit h;
+    REQUIRE(bvh.intersect(ray, 0, 1e9, h));
+    // The outermost sphere, radius 1 + 4999e-4, is hit first.
+    CHECK(h.t == Approx(10 - (1 + 4999e-4)).epsilon(1e-12));
+}
+
+TEST_CASE("rt_bvh: empty scene and bad options", "[raytrace][bvh]") {
+    Scene s;
+    Bvh bvh(s.primitives);
+    Ray ray;
+    Hit h;
+    CHECK_FALSE(bvh.intersect(ray, 0, 1e9, h));
+    CHECK_FALSE(bvh.occluded(ray, 0, 1e9));
+    CHECK_THROWS_AS(Bvh(s.primitives, BvhOptions{1, 4, 1, 1, false}), std::invalid_argument);
+    CHECK(makeAggregate(s) == nullptr); // below the crossover: the plain loop
+}
+
+TEST_CASE("rt_bvh: axis-parallel rays along box faces (0·inf in the slab test)",
+          "[raytrace][bvh]") {
+    // Spheres on a grid; rays exactly in the planes of box faces with zero direction components.
+    Scene s;
+    for (int x = 0; x < 10; ++x)
+        for (int y = 0; y < 10; ++y)
+            s.add(Sphere({x, y, 0}, 0.5), 0);
+    Bvh bvh(s.primitives);
+    BruteForce brute(s.primitives);
+    for (int x = 0; x < 10; ++x)
+        for (double off : {-0.5, 0.0, 0.5}) {
+            Ray ray;
+            ray.origin = {x + off, -5, 0};
+            ray.direction = {0, 1, 0};
+            Hit hb, hv;
+            const bool fb = brute.intersect(ray, 0, 1e9, hb);
+            REQUIRE(bvh.intersect(ray, 0, 1e9, hv) == fb);
+            if (fb) CHECK(hb.t == hv.t);
+        }
+}
