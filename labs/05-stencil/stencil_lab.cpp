@@ -59,17 +59,25 @@ std::vector<glm::dvec3> clipToPositive(const Triangle& t, const Plane& plane) {
     return out;
 }
 
-// Palette for the raw stencil view: one colour per value, halved where the shadow bit is set.
+// Palette for the raw stencil view: one colour per receiver, the mirrors' colours mixed in
+// where their bits are set, everything halved where the shadow bit is set.
 void stencilColour(uint8_t v, uint8_t* rgb) {
-    static const uint8_t base[][3] = {{0, 0, 0},      {230, 60, 60},   {60, 200, 230},
+    static const uint8_t base[][3] = {{0, 0, 0},      {0, 0, 0},       {0, 0, 0},
                                       {150, 110, 60}, {120, 140, 200}, {200, 200, 80},
                                       {90, 220, 90},  {220, 140, 40}};
-    const uint8_t value = v & 0x7F;
-    const uint8_t* c = base[value < 8 ? value : 6 + (value % 2)];
-    const bool lighter = value >= 8 && (value / 2) % 2 == 1; // alternate steps stay distinguishable
+    const uint8_t receiver = v & kReceiverMask;
+    int c[3] = {0, 0, 0};
+    if (receiver > 0) {
+        const uint8_t* b = base[receiver < 8 ? receiver : 6 + (receiver % 2)];
+        const int lighter = receiver >= 8 && (receiver / 2) % 2 == 1 ? 60 : 0; // alternate steps
+        for (int k = 0; k < 3; ++k)
+            c[k] = std::min(255, b[k] + lighter);
+    }
+    const int mirror[3] = {(v & kStencilRectMirror) ? 230 : 60, (v & kStencilRectMirror) ? 60 : 200,
+                           (v & kStencilRectMirror) ? 60 : 230};
     for (int k = 0; k < 3; ++k) {
         int x = c[k];
-        if (lighter) x = std::min(255, x + 60);
+        if (v & kMirrorMask) x = receiver ? (x + mirror[k]) / 2 : mirror[k];
         if (v & kShadowBit) x /= 2;
         rgb[k] = uint8_t(x);
     }
@@ -94,6 +102,7 @@ class StencilLab : public Lab {
 
     void draw(const View& view) override {
         buildScene();
+        s_->shadowTriangles = 0;
         glViewport(0, 0, view.width, view.height);
         glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
         glClearStencil(0);
@@ -119,7 +128,7 @@ class StencilLab : public Lab {
             if (s_->naiveShadow)
                 drawNaiveShadow();
             else
-                drawStencilShadow();
+                drawStencilShadow(0);
         }
 
         // The stencil as the frame leaves it: for the tests, and for `m`.
@@ -192,9 +201,10 @@ class StencilLab : public Lab {
         }
         ImGui::SliderInt("steps", &s_->steps, 1, 6);
         ImGui::Text("shadow: %d clipped triangles", s_->shadowTriangles);
-        ImGui::TextWrapped("Stencil values: 1 rectangular mirror, 2 elliptical mirror, 3 floor, "
-                           "4 wall, 5 stairs' side, 6+2i tread i, 7+2i riser i; +128 where the "
-                           "shadow was blended (darker in the mask view).");
+        ImGui::TextWrapped("Stencil bits 0-4: receiver (3 floor, 4 wall, 5 stairs' side, 6+2i "
+                           "tread i, 7+2i riser i); +32 rectangular mirror, +64 elliptical "
+                           "mirror (mixed in red / cyan in the mask view); +128 where the shadow "
+                           "was blended (darker).");
     }
 
   private:
@@ -419,6 +429,8 @@ class StencilLab : public Lab {
         // holds that mirror's value. The reflection reverses orientation, so front faces
         // are clockwise; the light is set inside drawScene() under the mirror matrix, so
         // it is reflected too. A clip plane drops what lies behind the mirror (the wall).
+        // Then (b, c) the shadows of the reflected scene: the 5th and 6th passes below,
+        // under the mirror matrix, confined to this mirror by its stencil bits.
         const Plane mirrorPlaneEq{{0, 0, 1}, -kMirrorZ};
         const GLdouble behind[4] = {0, 0, -1, kMirrorZ}; // keeps z <= kMirrorZ (after reflecting)
         glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
@@ -430,6 +442,11 @@ class StencilLab : public Lab {
             glMultMatrixd(glm::value_ptr(mirrorPlane(mirrorPlaneEq)));
             glFrontFace(GL_CW);
             drawScene();
+            if (s_->shadow && !s_->naiveShadow) {
+                drawStencilShadow(m.stencil);
+                glEnable(GL_STENCIL_TEST);
+                glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+            }
             glFrontFace(GL_CCW);
             glPopMatrix();
             glDisable(GL_CLIP_PLANE0);
@@ -442,29 +459,32 @@ class StencilLab : public Lab {
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glColor4f(0.75f, 0.85f, 1.0f, 0.2f);
         for (const Mirror& m : ms) {
-            glStencilFunc(GL_EQUAL, m.stencil, 0xFF);
+            glStencilFunc(GL_EQUAL, m.stencil, kMirrorMask);
             drawPolygon(m.outline);
         }
         glDisable(GL_BLEND);
         glDisable(GL_STENCIL_TEST);
     }
 
-    void drawStencilShadow() {
+    // 5th and 6th passes; with mirrorBits != 0 they run inside that mirror's reflection
+    // (2nd pass, b and c), under the mirror matrix, keeping the mirror's bits in the stencil.
+    void drawStencilShadow(uint8_t mirrorBits) {
         // 5th pass: mark the visible pixels of every receiver with its own value (depth test
         // LEQUAL against the scene just drawn: hidden parts stay unmarked), no colour/depth.
+        // In a reflection only pixels of that mirror are marked, and only the receiver bits.
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDepthMask(GL_FALSE);
         glDisable(GL_LIGHTING);
         glEnable(GL_STENCIL_TEST);
-        glStencilMask(0xFF);
+        glStencilMask(mirrorBits ? kReceiverMask : 0xFF);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         for (const Receiver& r : receivers_) {
-            glStencilFunc(GL_ALWAYS, r.stencil, 0xFF);
+            glStencilFunc(mirrorBits ? GL_EQUAL : GL_ALWAYS, mirrorBits | r.stencil, kMirrorMask);
             drawQuads(r.quads, r.plane.n);
         }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
-        // 6th pass: per receiver, the object flattened onto its plane by the point-light
+        // 6th pass: per receiver, the casters flattened onto its plane by the point-light
         // shadow matrix, drawn only where the stencil holds that receiver's value. The first
         // blended fragment flips kShadowBit (INVERT with write mask 0x80), so overlapping
         // shadow triangles fail the EQUAL test afterwards: every pixel is darkened once.
@@ -476,11 +496,10 @@ class StencilLab : public Lab {
         glColor4f(0.0f, 0.0f, 0.0f, kShadowAlpha);
         glStencilMask(kShadowBit);
         glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
-        s_->shadowTriangles = 0;
         for (const Receiver& r : receivers_) {
             const double lightSide = glm::dot(r.plane.n, kLight) + r.plane.d;
             if (lightSide <= 0) continue; // the light does not reach this face at all
-            glStencilFunc(GL_EQUAL, r.stencil, 0xFF);
+            glStencilFunc(GL_EQUAL, mirrorBits | r.stencil, 0xFF);
             if (shadowMayReach(r)) drawFlattened(r.plane, objectTris_);
             if (r.stairsCast) drawFlattened(r.plane, stairTris_);
         }
@@ -503,7 +522,6 @@ class StencilLab : public Lab {
         glPolygonOffset(-1.0f, -4.0f);
         glDepthMask(GL_FALSE);
         glColor4f(0.0f, 0.0f, 0.0f, kShadowAlpha);
-        s_->shadowTriangles = 0;
         for (const Receiver& r : receivers_)
             if (glm::dot(r.plane.n, kLight) + r.plane.d > 0) {
                 drawFlattened(r.plane, objectTris_);

@@ -12,13 +12,17 @@
 
 namespace wb {
 
-// Stencil values the lab writes (kShadowBit is or-ed in where a shadow was blended).
-constexpr uint8_t kStencilRectMirror = 1;
-constexpr uint8_t kStencilEllipseMirror = 2;
+// The stencil's bits: 0-4 the receiver a pixel shows (shadow passes), 5-6 the mirror it lies
+// in, 7 set where a shadow was blended. A pixel of a reflection keeps its mirror's bit and
+// gets the receiver bits of the reflected receiver it shows.
+constexpr uint8_t kReceiverMask = 0x1F;
+constexpr uint8_t kMirrorMask = 0x60;
+constexpr uint8_t kStencilRectMirror = 0x20;
+constexpr uint8_t kStencilEllipseMirror = 0x40;
 constexpr uint8_t kStencilFloor = 3;
 constexpr uint8_t kStencilBackWall = 4;
 constexpr uint8_t kStencilStairFront = 5; // the stairs' front side (z = +1.2)
-constexpr uint8_t kStencilFirstStep = 6;  // tread i: 6 + 2i, riser i: 7 + 2i
+constexpr uint8_t kStencilFirstStep = 6;  // tread i: 6 + 2i, riser i: 7 + 2i (at most 6 steps: 17)
 constexpr uint8_t kShadowBit = 0x80;
 
 // Scene geometry in world units (y up), shared with the tests' independent references.
