@@ -92,7 +92,7 @@ class StencilLab : public Lab {
                 {"n", "naive shadow without stencil (leaks, double blending)"},
                 {"r", "rectangular mirror on/off"},
                 {"e", "elliptical mirror on/off"},
-                {"m", "show the raw stencil buffer"},
+                {"m", "show the raw stencil buffer (scene dimmed where 0)"},
                 {"Left/Right", "move the object along x"},
                 {"Up/Down", "move the object along z"},
                 {"PageUp/PageDown", "move the object up/down"}};
@@ -587,9 +587,18 @@ class StencilLab : public Lab {
 
     // `m`: the stencil values as colours over the whole window.
     void drawMask(const View& view, const std::vector<uint8_t>& rows) {
+        // Where the stencil is 0 the scene shows through at a quarter of its brightness, for
+        // orientation (and so that a stencil that is all 0 is not a black window).
         std::vector<uint8_t> rgb(rows.size() * 3);
-        for (size_t i = 0; i < rows.size(); ++i)
-            stencilColour(rows[i], &rgb[i * 3]);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, view.width, view.height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        for (size_t i = 0; i < rows.size(); ++i) {
+            if (rows[i] == 0)
+                for (int k = 0; k < 3; ++k)
+                    rgb[i * 3 + size_t(k)] /= 4;
+            else
+                stencilColour(rows[i], &rgb[i * 3]);
+        }
         glDisable(GL_DEPTH_TEST);
         glDisable(GL_STENCIL_TEST);
         glDisable(GL_LIGHTING);

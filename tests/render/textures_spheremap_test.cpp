@@ -109,8 +109,8 @@ TEST_CASE("sphere-map formula matches OSMesa's GL_SPHERE_MAP texgen", "[gl][text
             }
             // GL_NEAREST returns texel floor(s·256): the formula's s·256 must lie in
             // [index, index+1], i.e. within 0.5 of the texel centre. The extra 0.001 texel
-            // (4e-6 in s) covers llvmpipe's single-precision texgen (~1e-7 relative; measured: every
-            // probe inside its texel, worst 0.49997 from the centre).
+            // (4e-6 in s) covers llvmpipe's single-precision texgen (~1e-7 relative; measured:
+            // every probe inside its texel, worst 0.49997 from the centre).
             const double es = std::abs(st.x * kTexels - (px[0] + 0.5));
             const double et = std::abs(st.y * kTexels - (px[1] + 0.5));
             CHECK(es <= 0.501);
