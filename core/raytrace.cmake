@@ -19,3 +19,13 @@ target_sources(core PRIVATE
   src/raytrace/triangle.cpp
 )
 target_sources(core PRIVATE src/raytrace/bvh.cpp) # issue 6: BVH (engineer F)
+# issue 6 (engineer F): scene files (NFF, OBJ via tinyobjloader), SPD generators, parallel render.
+find_package(tinyobjloader REQUIRED)
+target_sources(core PRIVATE
+  src/raytrace/nff.cpp
+  src/raytrace/obj_file.cpp
+  src/raytrace/scene_file.cpp
+  src/raytrace/smooth_triangle.cpp
+  src/raytrace/spd.cpp
+)
+target_link_libraries(core PRIVATE tinyobjloader::tinyobjloader)

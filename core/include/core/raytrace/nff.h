@@ -11,7 +11,8 @@
 // index inside = ior (1 when ior <= 0), ka = 0 (NFF has no ambient term) and the
 // scene's global ambient 0; `l` without a colour has intensity 1/sqrt(number of
 // lights), so the sum of all lights stays near 1; polygons become fans of
-// triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone.
+// triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone
+// (NFF's negative radii, which some writers use, are read as their absolute value).
 //
 // Limits (hostile input): a polygon may have 3..kNffMaxVertices vertices, a file at
 // most kNffMaxPrimitives primitives; numbers must be finite; the resolution at most
@@ -53,6 +54,7 @@ struct NffObject {
     bool coneOneLine = false;                  // cone written as `c x y z r x y z r` on one line
     std::vector<glm::dvec3> vertices;          // polygon / patch
     std::vector<glm::dvec3> normals;           // patch: one per vertex
+    int line = 0; // line of the command in its file (0: made in code); not compared
 };
 
 struct NffDocument {

@@ -1,0 +1,380 @@
+#include "core/raytrace/nff.h"
+
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/smooth_triangle.h"
+#include "core/raytrace/sphere.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <istream>
+#include <ostream>
+#include <sstream>
+
+namespace wb::rt {
+
+namespace {
+
+// Tokens with their line numbers, read line by line (a huge file is never held whole).
+class Tokens {
+  public:
+    Tokens(std::istream& in, const std::string& name) : in_(in), name_(name) {}
+
+    // Next token, or false at the end of the input.
+    bool next(std::string& tok, int& line) {
+        if (!fill()) return false;
+        tok = words_[pos_++];
+        line = line_;
+        return true;
+    }
+    // True if the next token exists and is on line `line`.
+    bool moreOnLine(int line) {
+        if (pos_ < words_.size()) return line_ == line;
+        return false; // a token on a later line does not belong to this command
+    }
+    [[noreturn]] void fail(int line, const std::string& what) const {
+        throw SceneFileError(name_ + ":" + std::to_string(line) + ": " + what);
+    }
+    double number(const char* what, int cmdLine) {
+        std::string tok;
+        int line;
+        if (!next(tok, line))
+            fail(cmdLine, std::string("unexpected end of file, expected ") + what);
+        const char* s = tok.c_str();
+        char* end = nullptr;
+        const double v = std::strtod(s, &end);
+        if (end == s || *end != '\0')
+            fail(line, std::string("expected a number (") + what + "), got '" + tok + "'");
+        if (!std::isfinite(v)) fail(line, std::string("non-finite number for ") + what);
+        return v;
+    }
+    glm::dvec3 vec3(const char* what, int cmdLine) {
+        const double x = number(what, cmdLine), y = number(what, cmdLine),
+                     z = number(what, cmdLine);
+        return {x, y, z};
+    }
+    long long integer(const char* what, int cmdLine) {
+        std::string tok;
+        int line;
+        if (!next(tok, line))
+            fail(cmdLine, std::string("unexpected end of file, expected ") + what);
+        const char* s = tok.c_str();
+        char* end = nullptr;
+        errno = 0;
+        const long long v = std::strtoll(s, &end, 10);
+        if (end == s || *end != '\0' || errno == ERANGE)
+            fail(line, std::string("expected an integer (") + what + "), got '" + tok + "'");
+        return v;
+    }
+    const std::string& name() const { return name_; }
+
+  private:
+    bool fill() {
+        while (pos_ >= words_.size()) {
+            std::string text;
+            if (!std::getline(in_, text)) return false;
+            ++line_;
+            words_.clear();
+            pos_ = 0;
+            std::istringstream ls(text);
+            std::string w;
+            while (ls >> w) {
+                if (w[0] == '#') break; // comment to the end of the line
+                words_.push_back(w);
+            }
+        }
+        return true;
+    }
+    std::istream& in_;
+    std::string name_;
+    std::vector<std::string> words_;
+    std::size_t pos_ = 0;
+    int line_ = 0;
+};
+
+void readView(Tokens& tk, int vLine, SceneView& v) {
+    const char* keys[6] = {"from", "at", "up", "angle", "hither", "resolution"};
+    for (const char* key : keys) {
+        std::string tok;
+        int line;
+        if (!tk.next(tok, line))
+            tk.fail(vLine,
+                    std::string("unexpected end of file in the v block, expected '") + key + "'");
+        if (tok != key)
+            tk.fail(line, std::string("expected '") + key + "' in the v block, got '" + tok + "'");
+        if (tok == "from")
+            v.from = tk.vec3("from x y z", line);
+        else if (tok == "at")
+            v.at = tk.vec3("at x y z", line);
+        else if (tok == "up")
+            v.up = tk.vec3("up x y z", line);
+        else if (tok == "angle")
+            v.angle = tk.number("angle", line);
+        else if (tok == "hither")
+            v.hither = tk.number("hither", line);
+        else {
+            const long long w = tk.integer("resolution width", line);
+            const long long h = tk.integer("resolution height", line);
+            if (w < 1 || h < 1 || w > 16384 || h > 16384)
+                tk.fail(line, "resolution must be 1..16384 in each direction");
+            v.width = int(w);
+            v.height = int(h);
+        }
+    }
+    try {
+        LookAtCamera(v.from, v.at, v.up, v.angle);
+    } catch (const std::invalid_argument&) {
+        tk.fail(vLine, "bad view: from == at, up along the view, or angle not in (0, 180)");
+    }
+}
+
+void writeVec(std::ostream& out, const glm::dvec3& v) {
+    out << v.x << ' ' << v.y << ' ' << v.z;
+}
+
+} // namespace
+
+NffDocument readNff(std::istream& in, const std::string& name) {
+    NffDocument doc;
+    Tokens tk(in, name);
+    std::string cmd;
+    int line;
+    std::size_t primitives = 0;
+    auto count = [&](std::size_t n, int at) {
+        primitives += n;
+        if (primitives > kNffMaxPrimitives)
+            tk.fail(at, "more than " + std::to_string(kNffMaxPrimitives) + " primitives");
+    };
+    while (tk.next(cmd, line)) {
+        const int surface = int(doc.surfaces.size()) - 1;
+        if (cmd == "v") {
+            readView(tk, line, doc.view);
+            doc.hasView = true;
+        } else if (cmd == "b") {
+            doc.background = tk.vec3("background r g b", line);
+            doc.hasBackground = true;
+        } else if (cmd == "l") {
+            NffLight l;
+            l.position = tk.vec3("light x y z", line);
+            if (tk.moreOnLine(line)) {
+                l.colour = tk.vec3("light r g b", line);
+                l.hasColour = true;
+            }
+            doc.lights.push_back(l);
+        } else if (cmd == "f") {
+            NffSurface f;
+            f.colour = tk.vec3("f r g b", line);
+            f.kd = tk.number("f Kd", line);
+            f.ks = tk.number("f Ks", line);
+            f.shine = tk.number("f Shine", line);
+            f.t = tk.number("f T", line);
+            f.ior = tk.number("f index of refraction", line);
+            doc.surfaces.push_back(f);
+        } else if (cmd == "s") {
+            NffObject o;
+            o.kind = NffObject::Kind::Sphere;
+            o.line = line;
+            o.surface = surface;
+            o.centre = tk.vec3("sphere centre", line);
+            o.radius = tk.number("sphere radius", line);
+            if (o.radius < 0) tk.fail(line, "negative sphere radius");
+            count(1, line);
+            doc.objects.push_back(std::move(o));
+        } else if (cmd == "c") {
+            NffObject o;
+            o.kind = NffObject::Kind::Cone;
+            o.line = line;
+            o.surface = surface;
+            o.coneOneLine = tk.moreOnLine(line);
+            o.base = tk.vec3("cone base x y z", line);
+            o.baseRadius = tk.number("cone base radius", line);
+            o.apex = tk.vec3("cone apex x y z", line);
+            o.apexRadius = tk.number("cone apex radius", line);
+            if (o.base == o.apex) tk.fail(line, "cone base and apex coincide");
+            if (o.baseRadius == 0 && o.apexRadius == 0) tk.fail(line, "cone with both radii 0");
+            if (!std::isfinite(glm::length(o.apex - o.base)))
+                tk.fail(line, "cone axis length overflows");
+            count(1, line);
+            doc.objects.push_back(std::move(o));
+        } else if (cmd == "p" || cmd == "pp") {
+            NffObject o;
+            o.kind = cmd == "p" ? NffObject::Kind::Polygon : NffObject::Kind::PatchPolygon;
+            o.line = line;
+            o.surface = surface;
+            const long long n = tk.integer("number of vertices", line);
+            if (n < 3) tk.fail(line, "polygon with " + std::to_string(n) + " vertices (need >= 3)");
+            if (n > kNffMaxVertices)
+                tk.fail(line, "polygon with " + std::to_string(n) + " vertices (limit " +
+                                  std::to_string(kNffMaxVertices) + ")");
+            count(std::size_t(n - 2), line);
+            for (long long i = 0; i < n; ++i) {
+                o.vertices.push_back(tk.vec3("polygon vertex", line));
+                if (cmd == "pp") o.normals.push_back(tk.vec3("polygon vertex normal", line));
+            }
+            doc.objects.push_back(std::move(o));
+        } else {
+            tk.fail(line, "unknown command '" + cmd + "'");
+        }
+    }
+    return doc;
+}
+
+NffDocument readNffFile(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw SceneFileError(path + ":0: cannot open the file");
+    return readNff(in, path);
+}
+
+void writeNff(std::ostream& out, const NffDocument& doc) {
+    const auto oldPrec = out.precision(17);
+    if (doc.hasView) {
+        const SceneView& v = doc.view;
+        out << "v\nfrom ";
+        writeVec(out, v.from);
+        out << "\nat ";
+        writeVec(out, v.at);
+        out << "\nup ";
+        writeVec(out, v.up);
+        out << "\nangle " << v.angle << "\nhither " << v.hither << "\nresolution " << v.width << ' '
+            << v.height << '\n';
+    }
+    if (doc.hasBackground) {
+        out << "b ";
+        writeVec(out, doc.background);
+        out << '\n';
+    }
+    for (const NffLight& l : doc.lights) {
+        out << "l ";
+        writeVec(out, l.position);
+        if (l.hasColour) {
+            out << ' ';
+            writeVec(out, l.colour);
+        }
+        out << '\n';
+    }
+    int written = -1; // surfaces [0, written] are out
+    auto writeSurfacesUpTo = [&](int k) {
+        for (; written < k; ++written) {
+            const NffSurface& f = doc.surfaces[size_t(written + 1)];
+            out << "f ";
+            writeVec(out, f.colour);
+            out << ' ' << f.kd << ' ' << f.ks << ' ' << f.shine << ' ' << f.t << ' ' << f.ior
+                << '\n';
+        }
+    };
+    for (const NffObject& o : doc.objects) {
+        writeSurfacesUpTo(std::min(o.surface, int(doc.surfaces.size()) - 1));
+        switch (o.kind) {
+        case NffObject::Kind::Sphere:
+            out << "s ";
+            writeVec(out, o.centre);
+            out << ' ' << o.radius << '\n';
+            break;
+        case NffObject::Kind::Cone:
+            out << (o.coneOneLine ? "c " : "c\n");
+            writeVec(out, o.base);
+            out << ' ' << o.baseRadius << (o.coneOneLine ? " " : "\n");
+            writeVec(out, o.apex);
+            out << ' ' << o.apexRadius << '\n';
+            break;
+        case NffObject::Kind::Polygon:
+        case NffObject::Kind::PatchPolygon: {
+            const bool patch = o.kind == NffObject::Kind::PatchPolygon;
+            out << (patch ? "pp " : "p ") << o.vertices.size() << '\n';
+            for (std::size_t i = 0; i < o.vertices.size(); ++i) {
+                writeVec(out, o.vertices[i]);
+                if (patch) {
+                    out << ' ';
+                    writeVec(out, i < o.normals.size() ? o.normals[i] : glm::dvec3(0, 0, 1));
+                }
+                out << '\n';
+            }
+            break;
+        }
+        }
+    }
+    writeSurfacesUpTo(int(doc.surfaces.size()) - 1);
+    out.precision(oldPrec);
+}
+
+void writeNffFile(const std::string& path, const NffDocument& doc) {
+    std::ofstream out(path);
+    if (!out) throw SceneFileError(path + ":0: cannot open for writing");
+    writeNff(out, doc);
+    if (!out) throw SceneFileError(path + ":0: write failed");
+}
+
+SceneFile toScene(const NffDocument& doc) {
+    SceneFile sf;
+    sf.scene = std::make_unique<Scene>();
+    Scene& s = *sf.scene;
+    s.background = doc.hasBackground ? doc.background : glm::dvec3(0.0);
+    s.globalAmbient = glm::dvec3(0.0); // NFF has no ambient term
+    s.ambient = glm::dvec3(0.0);
+    s.distScale = 0;
+    // Lights without a colour share intensity 1/sqrt(n) (the SPD convention for
+    // renderers that do not scale lights themselves).
+    const double li = doc.lights.empty() ? 1.0 : 1.0 / std::sqrt(double(doc.lights.size()));
+    for (const NffLight& l : doc.lights)
+        s.lights.push_back(Light::point(l.position, l.hasColour ? l.colour : glm::dvec3(li)));
+    std::vector<int> mat(doc.surfaces.size());
+    for (std::size_t i = 0; i < doc.surfaces.size(); ++i) {
+        const NffSurface& f = doc.surfaces[i];
+        Material m;
+        m.colour = f.colour;
+        m.ka = 0;
+        m.kd = f.kd;
+        m.ks = f.ks;
+        m.kr = f.ks; // NFF: Ks is also the mirror reflectance
+        m.kt = f.t;
+        m.phongExp = f.shine;
+        m.medium.refract = f.ior > 0 ? f.ior : 1.0;
+        mat[i] = s.addMaterial(m);
+    }
+    const int defaultMat = s.addMaterial([] {
+        Material m; // objects before any `f`: white, diffuse
+        m.colour = glm::dvec3(1.0);
+        m.ka = 0;
+        m.kd = 1;
+        m.ks = 0;
+        return m;
+    }());
+    for (const NffObject& o : doc.objects) {
+        const int m = (o.surface >= 0 && std::size_t(o.surface) < mat.size())
+                          ? mat[size_t(o.surface)]
+                          : defaultMat;
+        try {
+            switch (o.kind) {
+            case NffObject::Kind::Sphere:
+                s.add(Sphere(o.centre, o.radius), m);
+                break;
+            case NffObject::Kind::Cone:
+                s.add(Cone(o.base, std::abs(o.baseRadius), o.apex, std::abs(o.apexRadius)), m);
+                break;
+            case NffObject::Kind::Polygon:
+                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i)
+                    s.add(Triangle(o.vertices[0], o.vertices[i], o.vertices[i + 1]), m);
+                break;
+            case NffObject::Kind::PatchPolygon:
+                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i) {
+                    const bool hasN = o.normals.size() == o.vertices.size();
+                    const glm::dvec3 z(0.0); // a zero normal falls back to the geometric one
+                    s.add(SmoothTriangle(o.vertices[0], o.vertices[i], o.vertices[i + 1],
+                                         hasN ? o.normals[0] : z, hasN ? o.normals[i] : z,
+                                         hasN ? o.normals[i + 1] : z),
+                          m);
+                }
+                break;
+            }
+        } catch (const std::invalid_argument& e) {
+            throw SceneFileError("NFF:" + std::to_string(o.line) + ": " + e.what());
+        }
+    }
+    sf.hasView = doc.hasView;
+    sf.view = doc.hasView ? doc.view : frameScene(s);
+    if (s.lights.empty()) addDefaultLight(s, sf.view);
+    return sf;
+}
+
+} // namespace wb::rt

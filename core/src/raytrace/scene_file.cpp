@@ -1,0 +1,69 @@
+#include "core/raytrace/scene_file.h"
+
+#include "core/raytrace/nff.h"
+#include "core/raytrace/obj_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace wb::rt {
+
+LookAtCamera SceneFile::camera() const {
+    return LookAtCamera(view.from, view.at, view.up, view.angle);
+}
+
+SceneFile loadSceneFile(const std::string& path) {
+    std::string ext;
+    const auto dot = path.find_last_of('.');
+    if (dot != std::string::npos) ext = path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == "nff") {
+        try {
+            return toScene(readNffFile(path));
+        } catch (const SceneFileError& e) {
+            // toScene names the document "NFF"; give the file name instead.
+            std::string msg = e.what();
+            if (msg.rfind("NFF:", 0) == 0) msg = path + msg.substr(3);
+            throw SceneFileError(msg);
+        }
+    }
+    if (ext == "obj") return loadObjFile(path);
+    throw SceneFileError(path + ":0: unknown scene format (expected .nff or .obj)");
+}
+
+SceneView frameScene(const Scene& scene, double angle) {
+    Aabb box;
+    for (const auto& p : scene.primitives) {
+        const Aabb b = p->bounds();
+        if (b.bounded() && !b.empty()) {
+            box.extend(b.lo);
+            box.extend(b.hi);
+        }
+    }
+    SceneView v;
+    v.angle = angle;
+    if (box.empty()) return v; // nothing bounded: the default view
+    const glm::dvec3 c = 0.5 * (box.lo + box.hi);
+    double r = 0.5 * glm::length(box.hi - box.lo);
+    if (!(r > 0)) r = 1.0;
+    // The bounding sphere fills the vertical field of view: distance r / sin(angle/2).
+    const double dist = r / std::sin(glm::radians(angle) / 2);
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(0.3, 0.4, 1.0)); // from the front, above
+    v.at = c;
+    v.from = c + dist * dir;
+    v.up = {0, 1, 0};
+    v.hither = 1e-3 * r;
+    return v;
+}
+
+void addDefaultLight(Scene& scene, const SceneView& view) {
+    if (!scene.lights.empty()) return;
+    // Above and behind the viewer, so the visible side is lit and shadows fall behind.
+    const glm::dvec3 back = view.from - view.at;
+    const glm::dvec3 up = glm::normalize(view.up);
+    scene.lights.push_back(Light::point(view.from + 0.5 * back + glm::length(back) * up));
+}
+
+} // namespace wb::rt
