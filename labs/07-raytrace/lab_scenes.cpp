@@ -1,0 +1,204 @@
+#include "lab_scenes.h"
+
+#include "core/raytrace/box.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/rectangle.h"
+#include "core/raytrace/sphere.h"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace wb {
+
+namespace {
+
+using glm::dvec3;
+using rt::Light;
+using rt::Material;
+
+Material phongMaterial(const dvec3& colour, double kr = 0.0) {
+    Material m;
+    m.colour = colour;
+    m.ka = 0.3;
+    m.kd = 0.7;
+    m.ks = 0.4;
+    m.phongExp = 30;
+    m.kr = kr;
+    return m;
+}
+
+// The lab's timing experiment (lab 7, task 5): one sphere, then two, over a floor.
+void buildSpheres(LabScene& s, int count) {
+    rt::Scene& sc = *s.scene;
+    sc.lights.push_back(Light::point({3, 4, 5}));
+    const int floor = sc.addMaterial(phongMaterial({0.8, 0.8, 0.8}));
+    sc.add(rt::Rectangle({-4, -1, 4}, {4, -1, 4}, {-4, -1, -4}), floor);
+    sc.add(rt::Sphere({0, 0, 0}, 1.0), sc.addMaterial(phongMaterial({0.9, 0.2, 0.2})));
+    if (count > 1)
+        sc.add(rt::Sphere({1.7, -0.4, -1.2}, 0.6), sc.addMaterial(phongMaterial({0.2, 0.3, 0.9})));
+    s.camera.eye = {0, 1.5, 6};
+    s.camera.target = {0, 0, 0};
+    s.camera.fovY = 45;
+    s.model = ModelKind::Phong;
+    s.about = count == 1 ? "one sphere over a floor (the lab's timing experiment)"
+                         : "two spheres over a floor (the lab's timing experiment)";
+}
+
+Material seedMaterial(const dvec3& colour255, double kr) {
+    Material m;
+    m.colour = colour255 / 255.0;
+    m.ka = m.kd = m.ks = 0.5;
+    m.phongExp = 3;
+    m.kr = kr;
+    return m;
+}
+
+// Seed 000's camera: eye (0, 0, 100) looking down −z at the screen z = 0 (Dist = 100),
+// one world unit per pixel, pixel (xx, yy) -> screen point (xx − W/2, H/2 − yy).
+void seedCamera(LabScene& s) {
+    s.camera.eye = {0, 0, 100};
+    s.camera.target = {0, 0, 0};
+    s.camera.up = {0, 1, 0};
+    s.camera.screenPixel = 1.0;
+    s.camera.pixelCorners = true;
+    s.model = ModelKind::Course;
+}
+
+// Seed 000 part 1: red 20×20 rectangle at height 40 over a green 50×50 one at 20, light
+// at (0, 0, 60): pixel P(50, 0) sees the green one in the red one's shadow.
+void buildSeedPart1(LabScene& s, bool withRect1) {
+    rt::Scene& sc = *s.scene;
+    sc.lights.push_back(Light::point({0, 0, 60}));
+    sc.ambient = dvec3(1.0);
+    sc.distScale = 30;
+    const int red = sc.addMaterial(seedMaterial({234, 21, 21}, 0));
+    const int green = sc.addMaterial(seedMaterial({21, 234, 21}, 0));
+    if (withRect1) sc.add(rt::Rectangle({0, 0, 40}, {20, 0, 40}, {0, 20, 40}), red);
+    sc.add(rt::Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), green);
+    seedCamera(s);
+    s.about = withRect1 ? "seed 000 part 1: P(50,0) in the red rectangle's shadow (10,117,10)"
+                        : "seed 000 part 1, red rectangle removed: P(50,0) lit (50,197,50)";
+}
+
+// Seed 000 part 2: the green rectangle (kr 0.5) reflects the red one standing in x = 50.
+void buildSeedPart2(LabScene& s) {
+    rt::Scene& sc = *s.scene;
+    sc.lights.push_back(Light::point({0, 0, 60}));
+    sc.ambient = dvec3(1.0);
+    sc.distScale = 30;
+    const int red = sc.addMaterial(seedMaterial({234, 21, 21}, 0));
+    const int green = sc.addMaterial(seedMaterial({21, 234, 21}, 0.5));
+    sc.add(rt::Rectangle({50, 0, 20}, {50, 0, 70}, {50, 50, 20}), red);
+    sc.add(rt::Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), green);
+    seedCamera(s);
+    s.about = "seed 000 part 2: P(50,0) with the reflected ray (168,233,86)";
+}
+
+// Seed 000, figure 10: a glass cube (kr = kt = 0.3, index 1.5) over a mirror-ish rectangle.
+void buildGlassCube(LabScene& s) {
+    rt::Scene& sc = *s.scene;
+    sc.distScale = 30;
+    sc.lights.push_back(Light::point({-22, -22, 45}));
+    Material floor = seedMaterial({21, 234, 21}, 0.3);
+    Material glass = seedMaterial({234, 21, 21}, 0.3);
+    glass.ka = 0.2;
+    glass.kd = 0.3;
+    glass.ks = 0.5;
+    glass.phongExp = 20;
+    glass.kt = 0.3;
+    glass.medium.refract = 1.5;
+    sc.add(rt::Rectangle({-50, -50, 0}, {50, -50, 0}, {-50, 50, 0}), sc.addMaterial(floor));
+    sc.add(rt::Box({-15, -15, 10}, {30, 0, 0}, {0, 30, 0}, {0, 0, 30}), sc.addMaterial(glass));
+    s.camera.eye = {70, -110, 80};
+    s.camera.target = {0, 0, 15};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovY = 40;
+    s.model = ModelKind::Course;
+    s.about = "seed 000 figure 10: glass cube (kr = kt = 0.3, n = 1.5) over a rectangle";
+}
+
+// Seed 001's scene: a table (box top, cylinder legs) with a glass (paraboloid cut by two
+// planes, transparent) and an ellipsoid on it, over an infinite floor plane. z is up.
+void buildTable(LabScene& s) {
+    rt::Scene& sc = *s.scene;
+    sc.lights.push_back(Light::point({2, -2, 3}));
+    sc.add(rt::Plane({0, 0, 0}, {0, 0, 1}), sc.addMaterial(phongMaterial({0.6, 0.6, 0.55})));
+    const int wood = sc.addMaterial(phongMaterial({0.55, 0.33, 0.15}));
+    sc.add(rt::Box::axisAligned({-1.2, -0.8, 0.75}, {1.2, 0.8, 0.8}), wood);
+    for (double x : {-1.1, 1.1})
+        for (double y : {-0.7, 0.7})
+            sc.add(rt::makeCylinder({x, y, 0}, {x, y, 0.75}, 0.05), wood);
+    Material glass = phongMaterial({0.7, 0.85, 1.0}, 0.1);
+    glass.kd = 0.2;
+    glass.ks = 0.8;
+    glass.phongExp = 80;
+    glass.kt = 0.7;
+    glass.medium.refract = 1.5;
+    sc.add(rt::Quadric(rt::Quadric::Kind::Paraboloid, {0, 0, 0.8}, {0.15, 0.15, 0.3}, 0.8, 1.1),
+           sc.addMaterial(glass));
+    sc.add(rt::Quadric(rt::Quadric::Kind::Ellipsoid, {0.55, 0.25, 0.9}, {0.1, 0.1, 0.1}),
+           sc.addMaterial(phongMaterial({1.0, 0.55, 0.1})));
+    s.camera.eye = {2.5, -3.0, 2.0};
+    s.camera.target = {0, 0, 0.8};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovY = 40;
+    s.model = ModelKind::Phong;
+    s.about = "seed 001: table and glass (cut paraboloid, ellipsoid, cylinders, plane)";
+}
+
+} // namespace
+
+std::vector<std::string> builtinSceneNames() {
+    return {"one-sphere",    "two-spheres", "seed000-part1", "seed000-part1-lit",
+            "seed000-part2", "glass-cube",  "seed001-table"};
+}
+
+bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
+    const auto t0 = std::chrono::steady_clock::now();
+    LabScene s;
+    s.name = name;
+    s.scene = std::make_unique<rt::Scene>();
+    try {
+        if (name == "one-sphere")
+            buildSpheres(s, 1);
+        else if (name == "two-spheres")
+            buildSpheres(s, 2);
+        else if (name == "seed000-part1")
+            buildSeedPart1(s, true);
+        else if (name == "seed000-part1-lit")
+            buildSeedPart1(s, false);
+        else if (name == "seed000-part2")
+            buildSeedPart2(s);
+        else if (name == "glass-cube")
+            buildGlassCube(s);
+        else if (name == "seed001-table")
+            buildTable(s);
+        else {
+            error = "unknown scene '" + name + "' (one of:";
+            for (const auto& n : builtinSceneNames())
+                error += " " + n;
+            error += ")";
+            return false;
+        }
+    } catch (const std::exception& e) {
+        error = name + ": " + e.what();
+        return false;
+    }
+    s.loadSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out = std::move(s);
+    return true;
+}
+
+bool setAccel(LabScene& s, bool on) {
+    if (!on) {
+        s.scene->setAggregate(nullptr);
+        s.accel.reset();
+        s.accelSeconds = 0;
+        return true;
+    }
+    return false; // the BVH of issue 6 is installed here once it lands
+}
+
+} // namespace wb

@@ -1,0 +1,289 @@
+#include "raster_mesh.h"
+
+#include "core/raytrace/box.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/polyhedron.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/rectangle.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace wb {
+
+using glm::dvec3;
+
+void sceneBounds(const rt::Scene& scene, dvec3& centre, double& radius) {
+    rt::Aabb all;
+    for (const auto& p : scene.primitives) {
+        const rt::Aabb b = p->bounds();
+        if (b.empty() || !b.bounded()) continue;
+        all.extend(b.lo);
+        all.extend(b.hi);
+    }
+    if (all.empty()) {
+        centre = dvec3(0.0);
+        radius = 1.0;
+        return;
+    }
+    centre = (all.lo + all.hi) * 0.5;
+    radius = std::max(glm::length(all.hi - all.lo) * 0.5, 1e-9);
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Builder {
+    std::map<int, MeshBatch> batches;
+    long long triangles = 0;
+
+    // Adds a triangle wound counter-clockwise as seen from the side its normals point to
+    // (GL decides front/back faces by winding; two-sided lighting flips by that).
+    void tri(int mat, dvec3 a, dvec3 b, dvec3 c, dvec3 na, dvec3 nb, dvec3 nc) {
+        const dvec3 face = glm::cross(b - a, c - a);
+        if (!(glm::dot(face, face) > 0)) return; // degenerate
+        if (glm::dot(face, na + nb + nc) < 0) {
+            std::swap(b, c);
+            std::swap(nb, nc);
+        }
+        MeshBatch& m = batches[mat];
+        m.material = mat;
+        for (const dvec3* v : {&a, &b, &c})
+            for (int i = 0; i < 3; ++i)
+                m.pos.push_back(float((*v)[i]));
+        for (const dvec3* n : {&na, &nb, &nc}) {
+            const dvec3 u = glm::length(*n) > 0 ? glm::normalize(*n) : dvec3(0, 0, 1);
+            for (int i = 0; i < 3; ++i)
+                m.normal.push_back(float(u[i]));
+        }
+        ++triangles;
+    }
+    void flatTri(int mat, const dvec3& a, const dvec3& b, const dvec3& c, const dvec3& n) {
+        tri(mat, a, b, c, n, n, n);
+    }
+    // A parallelogram o + s·e1 + t·e2 split into nu × nv cells, constant normal n.
+    void grid(int mat, const dvec3& o, const dvec3& e1, const dvec3& e2, const dvec3& n, int nu,
+              int nv) {
+        for (int i = 0; i < nu; ++i)
+            for (int j = 0; j < nv; ++j) {
+                const double s0 = double(i) / nu, s1 = double(i + 1) / nu;
+                const double t0 = double(j) / nv, t1 = double(j + 1) / nv;
+                const dvec3 p00 = o + s0 * e1 + t0 * e2, p10 = o + s1 * e1 + t0 * e2;
+                const dvec3 p01 = o + s0 * e1 + t1 * e2, p11 = o + s1 * e1 + t1 * e2;
+                flatTri(mat, p00, p10, p11, n);
+                flatTri(mat, p00, p11, p01, n);
+            }
+    }
+    // A parametric surface f(u, v) with normal g(u, v) on [u0,u1] × [v0,v1], nu × nv cells.
+    template <class F, class G>
+    void surface(int mat, F f, G g, double u0, double u1, double v0, double v1, int nu, int nv) {
+        for (int i = 0; i < nu; ++i)
+            for (int j = 0; j < nv; ++j) {
+                const double ua = u0 + (u1 - u0) * i / nu, ub = u0 + (u1 - u0) * (i + 1) / nu;
+                const double va = v0 + (v1 - v0) * j / nv, vb = v0 + (v1 - v0) * (j + 1) / nv;
+                tri(mat, f(ua, va), f(ub, va), f(ub, vb), g(ua, va), g(ub, va), g(ub, vb));
+                tri(mat, f(ua, va), f(ub, vb), f(ua, vb), g(ua, va), g(ub, vb), g(ua, vb));
+            }
+    }
+};
+
+// Orthonormal e1, e2 perpendicular to unit a.
+void frame(const dvec3& a, dvec3& e1, dvec3& e2) {
+    const dvec3 h = std::fabs(a.x) < 0.9 ? dvec3(1, 0, 0) : dvec3(0, 1, 0);
+    e1 = glm::normalize(glm::cross(a, h));
+    e2 = glm::cross(a, e1);
+}
+
+// Clips a convex polygon to n·x <= d (Sutherland–Hodgman, one plane).
+std::vector<dvec3> clip(const std::vector<dvec3>& poly, const dvec3& n, double d) {
+    std::vector<dvec3> out;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        const dvec3& a = poly[i];
+        const dvec3& b = poly[(i + 1) % poly.size()];
+        const double da = glm::dot(n, a) - d, db = glm::dot(n, b) - d;
+        if (da <= 0) out.push_back(a);
+        if ((da < 0 && db > 0) || (da > 0 && db < 0)) out.push_back(a + (b - a) * (da / (da - db)));
+    }
+    return out;
+}
+
+} // namespace
+
+std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
+                                  const TessellationOptions& opt, TessellationStats* stats) {
+    Builder b;
+    int skipped = 0;
+    dvec3 sceneCentre;
+    double sceneRadius;
+    sceneBounds(scene, sceneCentre, sceneRadius);
+    const double extent = opt.planeExtent > 0 ? opt.planeExtent : 4.0 * sceneRadius;
+    const double pixelAngle = cam.screen.pixelSize / cam.dist; // radians per pixel near the axis
+    // Pixels covered by a length at the nearest distance any orbit brings the bounding
+    // sphere (c, r) to the eye (the mesh is kept while the view turns).
+    auto pixels = [&](double length, const dvec3& c, double r) {
+        const double d = std::max(cam.dist - glm::length(c - cam.target) - r, 0.05 * cam.dist);
+        return length / d / pixelAngle;
+    };
+    auto segments = [&](double radiusPixels) {
+        const double n = kPi * std::sqrt(std::max(radiusPixels, 0.0) / opt.maxErrorPixels);
+        return std::clamp(int(std::ceil(n)), opt.minSegments, opt.maxSegments);
+    };
+    auto cells = [&](double lengthPixels) {
+        return std::clamp(int(std::ceil(lengthPixels / opt.gridPixels)), 1, 64);
+    };
+
+    for (const auto& up : scene.primitives) {
+        const rt::Primitive* p = up.get();
+        const int mat = p->material;
+        if (auto* s = dynamic_cast<const rt::Sphere*>(p)) {
+            if (!(s->radius > 0)) continue;
+            const int n = segments(pixels(s->radius, s->centre, s->radius));
+            const dvec3 c = s->centre;
+            const double r = s->radius;
+            auto normal = [](double u, double v) {
+                return dvec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
+            };
+            b.surface(
+                mat, [&](double u, double v) { return c + r * normal(u, v); }, normal, 0, 2 * kPi,
+                -kPi / 2, kPi / 2, n, std::max(n / 2, 4));
+        } else if (auto* rc = dynamic_cast<const rt::Rectangle*>(p)) {
+            const dvec3 c = rc->loc + 0.5 * (rc->e1 + rc->e2);
+            const double r = 0.5 * glm::length(rc->e1 + rc->e2);
+            b.grid(mat, rc->loc, rc->e1, rc->e2, rc->normal,
+                   cells(pixels(glm::length(rc->e1), c, r)),
+                   cells(pixels(glm::length(rc->e2), c, r)));
+        } else if (auto* t = dynamic_cast<const rt::Triangle*>(p)) {
+            const dvec3 n = glm::cross(t->v1 - t->v0, t->v2 - t->v0);
+            b.flatTri(mat, t->v0, t->v1, t->v2, n);
+        } else if (auto* bx = dynamic_cast<const rt::Box*>(p)) {
+            const dvec3 e[3] = {bx->e1, bx->e2, bx->e3};
+            const double r = 0.5 * glm::length(e[0] + e[1] + e[2]);
+            for (int k = 0; k < 3; ++k) {
+                const dvec3& a = e[(k + 1) % 3];
+                const dvec3& c2 = e[(k + 2) % 3];
+                dvec3 n = glm::normalize(glm::cross(a, c2));
+                if (glm::dot(n, e[k]) > 0) n = -n; // the face at loc points away from e[k]
+                const int na = cells(pixels(glm::length(a), bx->centre, r));
+                const int nc = cells(pixels(glm::length(c2), bx->centre, r));
+                b.grid(mat, bx->loc, a, c2, n, na, nc);
+                b.grid(mat, bx->loc + e[k], a, c2, -n, na, nc);
+            }
+        } else if (auto* cn = dynamic_cast<const rt::Cone*>(p)) {
+            const dvec3 axis = cn->c1 - cn->c0;
+            const double h = glm::length(axis);
+            if (!(h > 0)) continue;
+            const dvec3 a = axis / h;
+            dvec3 ex, ey;
+            frame(a, ex, ey);
+            const double rmax = std::max(cn->r0, cn->r1);
+            const dvec3 mid = 0.5 * (cn->c0 + cn->c1);
+            const int n = segments(pixels(rmax, mid, std::max(rmax, h / 2)));
+            const double k = (cn->r1 - cn->r0) / h;
+            auto side = [&](double u, double z) {
+                return cn->c0 + z * a + (cn->r0 + k * z) * (std::cos(u) * ex + std::sin(u) * ey);
+            };
+            auto sideNormal = [&](double u, double) {
+                return std::cos(u) * ex + std::sin(u) * ey - k * a;
+            };
+            b.surface(mat, side, sideNormal, 0, 2 * kPi, 0, h, n,
+                      cells(pixels(h, mid, std::max(rmax, h / 2))));
+            for (int cap = 0; cap < 2; ++cap) {
+                const double r = cap ? cn->r1 : cn->r0;
+                if (!(r > 0)) continue;
+                const dvec3 c = cap ? cn->c1 : cn->c0;
+                const dvec3 nrm = cap ? a : -a;
+                for (int i = 0; i < n; ++i) {
+                    const double u0 = 2 * kPi * i / n, u1 = 2 * kPi * (i + 1) / n;
+                    b.flatTri(mat, c, c + r * (std::cos(u0) * ex + std::sin(u0) * ey),
+                              c + r * (std::cos(u1) * ex + std::sin(u1) * ey), nrm);
+                }
+            }
+        } else if (auto* q = dynamic_cast<const rt::Quadric*>(p)) {
+            const dvec3 c = q->centre, ax = q->axes;
+            // Cuts beyond the scene are clamped to it: an uncut paraboloid is infinite.
+            const double zl = std::max(q->zLow, c.z - extent),
+                         zh = std::min(q->zHigh, c.z + extent);
+            if (!(zl < zh)) continue;
+            const double rpx = pixels(std::max({ax.x, ax.y}), c, glm::length(ax));
+            const int n = segments(rpx);
+            const int nz = std::max(n / 2, 4);
+            if (q->kind == rt::Quadric::Kind::Ellipsoid) {
+                const double s0 = std::asin(std::clamp((zl - c.z) / ax.z, -1.0, 1.0));
+                const double s1 = std::asin(std::clamp((zh - c.z) / ax.z, -1.0, 1.0));
+                if (!(s0 < s1)) continue;
+                auto f = [&](double u, double v) {
+                    return c + dvec3(ax.x * std::cos(v) * std::cos(u),
+                                     ax.y * std::cos(v) * std::sin(u), ax.z * std::sin(v));
+                };
+                auto g = [&](double u, double v) {
+                    const dvec3 d = f(u, v) - c;
+                    return dvec3(d.x / (ax.x * ax.x), d.y / (ax.y * ax.y), d.z / (ax.z * ax.z));
+                };
+                b.surface(mat, f, g, 0, 2 * kPi, s0, s1, n, nz);
+            } else if (q->kind == rt::Quadric::Kind::Paraboloid) {
+                // (x/A)² + (y/B)² = (z − z0)/C: s = sqrt((z − z0)/C) is the ring's scale.
+                auto sOf = [&](double z) { return std::sqrt(std::max((z - c.z) / ax.z, 0.0)); };
+                const double s0 = ax.z > 0 ? sOf(zl) : sOf(zh), s1 = ax.z > 0 ? sOf(zh) : sOf(zl);
+                if (!(s0 < s1)) continue;
+                auto f = [&](double u, double k) {
+                    return c + dvec3(ax.x * k * std::cos(u), ax.y * k * std::sin(u), ax.z * k * k);
+                };
+                auto g = [&](double u, double k) {
+                    const dvec3 d = f(u, k) - c;
+                    return dvec3(2 * d.x / (ax.x * ax.x), 2 * d.y / (ax.y * ax.y), -1 / ax.z);
+                };
+                b.surface(mat, f, g, 0, 2 * kPi, s0, s1, n, nz);
+            } else {
+                // One sheet: x = A cosh w cos u, y = B cosh w sin u, z = z0 + C sinh w.
+                const double w0 = std::asinh((zl - c.z) / ax.z), w1 = std::asinh((zh - c.z) / ax.z);
+                auto f = [&](double u, double w) {
+                    return c + dvec3(ax.x * std::cosh(w) * std::cos(u),
+                                     ax.y * std::cosh(w) * std::sin(u), ax.z * std::sinh(w));
+                };
+                auto g = [&](double u, double w) {
+                    const dvec3 d = f(u, w) - c;
+                    return dvec3(d.x / (ax.x * ax.x), d.y / (ax.y * ax.y), -d.z / (ax.z * ax.z));
+                };
+                b.surface(mat, f, g, 0, 2 * kPi, w0, w1, n, nz);
+            }
+        } else if (auto* pl = dynamic_cast<const rt::Plane*>(p)) {
+            const dvec3 n = pl->normal;
+            const dvec3 c = sceneCentre - (glm::dot(n, sceneCentre) - pl->d) * n;
+            dvec3 e1, e2;
+            frame(n, e1, e2);
+            const int k = cells(pixels(2 * extent, c, extent));
+            b.grid(mat, c - extent * (e1 + e2), 2 * extent * e1, 2 * extent * e2, n, k, k);
+        } else if (auto* ph = dynamic_cast<const rt::ConvexPolyhedron*>(p)) {
+            // Each face: a large square in its plane clipped by every other half-space.
+            for (size_t i = 0; i < ph->faces.size(); ++i) {
+                const dvec3 n = ph->faces[i].normal;
+                const dvec3 c = sceneCentre - (glm::dot(n, sceneCentre) - ph->faces[i].d) * n;
+                dvec3 e1, e2;
+                frame(n, e1, e2);
+                std::vector<dvec3> poly = {c - extent * (e1 + e2), c + extent * (e1 - e2),
+                                           c + extent * (e1 + e2), c - extent * (e1 - e2)};
+                for (size_t j = 0; j < ph->faces.size() && poly.size() >= 3; ++j)
+                    if (j != i) poly = clip(poly, ph->faces[j].normal, ph->faces[j].d);
+                for (size_t j = 1; j + 1 < poly.size(); ++j)
+                    b.flatTri(mat, poly[0], poly[j], poly[j + 1], n);
+            }
+        } else {
+            ++skipped;
+        }
+    }
+    std::vector<MeshBatch> out;
+    for (auto& [mat, batch] : b.batches)
+        out.push_back(std::move(batch));
+    if (stats) {
+        stats->triangles = b.triangles;
+        stats->skipped = skipped;
+    }
+    return out;
+}
+
+} // namespace wb

@@ -1,0 +1,849 @@
+#include "raytrace_lab.h"
+
+#include "raster_mesh.h"
+#include "trace_job.h"
+
+#include "common/gl.h"
+#include "common/gl_util.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+
+namespace wb {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+void glColour4(GLenum face, GLenum what, const glm::dvec3& c) {
+    const GLfloat v[4] = {GLfloat(c.x), GLfloat(c.y), GLfloat(c.z), 1.0f};
+    glMaterialfv(face, what, v);
+}
+
+// Heat map colour of a difference 0..255: black, blue, red, yellow, white.
+void heat(int d, uint8_t out[3]) {
+    const double x = std::min(1.0, d / 64.0); // 64 levels fill the scale: small errors show
+    const double r = std::clamp(3 * x - 1, 0.0, 1.0), g = std::clamp(3 * x - 2, 0.0, 1.0);
+    const double b = x < 1.0 / 3 ? 3 * x : std::clamp(2 - 3 * x, 0.0, 1.0);
+    out[0] = uint8_t(255 * r);
+    out[1] = uint8_t(255 * g);
+    out[2] = uint8_t(255 * b);
+}
+
+} // namespace
+
+class RaytraceLab : public Lab {
+  public:
+    RaytraceState s;
+
+    std::string title() const override { return "Lab 07 - ray tracing vs rasterization"; }
+
+    std::vector<KeyHelp> keys() const override {
+        return {{"g", "OpenGL Phong rasterization"},
+                {"G", "ray traced (background, tile by tile)"},
+                {"Left/Right", "rotate about the vertical"},
+                {"Up/Down", "rotate up/down"},
+                {"f", "fixed function / per-fragment GLSL Phong"},
+                {"d", "difference heat map raster vs trace"},
+                {"m", "tracer model course / phong"},
+                {"b", "BVH on/off"},
+                {"x", "cancel the trace"},
+                {"n", "next scene"},
+                {"N", "previous scene"},
+                {"[", "depth limit down"},
+                {"]", "depth limit up"},
+                {"r", "trace resolution 1, 1/2, 1/4"},
+                {"c", "clear the ray inspector"},
+                {"t", "run the timing experiment"},
+                {"click", "inspect the ray tree of a pixel"}};
+    }
+
+    std::vector<OptionHelp> options() const override {
+        return {{"scene", "FILE|NAME",
+                 "one-sphere two-spheres seed000-part1 seed000-part2 glass-cube seed001-table "
+                 "balls:N jacks:N or .nff/.obj"},
+                {"threads", "N", "trace threads (0 = all cores)"},
+                {"depth", "D", "tracer depth limit (0..20)"},
+                {"model", "course|phong", "tracer shading model (default: the scene's)"},
+                {"inspect", "X,Y", "inspect image pixel (X, Y) of the traced view"},
+                {"experiment", "", "run the timing experiment and print its table"}};
+    }
+
+    bool setOption(const std::string& name, const std::string& value, std::string& error) override {
+        auto integer = [&](int lo, int hi, int& out) {
+            char* end = nullptr;
+            const long v = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end || v < lo || v > hi) {
+                error = "expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) +
+                        ", got '" + value + "'";
+                return false;
+            }
+            out = int(v);
+            return true;
+        };
+        if (name == "scene") {
+            LabScene probe;
+            if (!loadLabScene(value, probe, error)) return false;
+            s.sceneName = value;
+            return true;
+        }
+        if (name == "threads") return integer(0, 1024, s.threads);
+        if (name == "depth") return integer(0, 20, s.maxDepth);
+        if (name == "model") {
+            if (value != "course" && value != "phong") {
+                error = "expected course or phong, got '" + value + "'";
+                return false;
+            }
+            modelOption_ = value;
+            return true;
+        }
+        if (name == "inspect") {
+            int x = 0, y = 0;
+            char tail = 0;
+            if (std::sscanf(value.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0) {
+                error = "expected X,Y (pixel of the traced image), got '" + value + "'";
+                return false;
+            }
+            pendingInspect_ = true;
+            inspectX_ = x;
+            inspectY_ = y;
+            return true;
+        }
+        if (name == "experiment") {
+            experimentRequested_ = true;
+            printTimings_ = true;
+            return true;
+        }
+        error = "unknown option --" + name;
+        return false;
+    }
+
+    void init() override {
+        std::string err;
+        if (!loadScene(s.sceneName, err)) {
+            std::fprintf(stderr, "lab07: %s\n", err.c_str());
+            loadScene("two-spheres", err);
+        }
+        if (modelOption_ == "course") s.model = ModelKind::Course;
+        if (modelOption_ == "phong") s.model = ModelKind::Phong;
+        program_ = loadProgram("shaders/phong.vert", "shaders/phong.frag", programError_);
+        glGenTextures(1, &texture_);
+        if (experimentRequested_) startExperiment();
+    }
+
+    ~RaytraceLab() override {
+        // Esc (the shell quits) or the end of a test: stop the workers before the scene goes.
+        job_.cancel();
+        expJob_.cancel();
+        if (texture_) glDeleteTextures(1, &texture_);
+        if (program_) glDeleteProgram(program_);
+    }
+
+    bool key(int k) override {
+        switch (k) {
+        case 'g':
+            s.traced = false;
+            s.showDiff = false;
+            return true;
+        case 'G':
+            s.traced = true;
+            return true;
+        case kKeyLeft:
+            s.yaw -= 5;
+            return true;
+        case kKeyRight:
+            s.yaw += 5;
+            return true;
+        case kKeyUp:
+            s.pitch -= 5;
+            return true;
+        case kKeyDown:
+            s.pitch += 5;
+            return true;
+        case 'f':
+            s.glsl = !s.glsl;
+            return true;
+        case 'd':
+            s.showDiff = !s.showDiff;
+            if (s.showDiff) s.traced = true;
+            return true;
+        case 'm':
+            s.model = s.model == ModelKind::Course ? ModelKind::Phong : ModelKind::Course;
+            tree_.reset();
+            return true;
+        case 'b':
+            s.bvh = !s.bvh;
+            applyAccel();
+            return true;
+        case 'x':
+            if (job_.status().running) ++cancels_;
+            job_.cancel();
+            userCancelled_ = true;
+            return true;
+        case 'n':
+        case 'N': {
+            const auto names = builtinSceneNames();
+            auto it = std::find(names.begin(), names.end(), s.sceneName);
+            int i = it == names.end() ? 0 : int(it - names.begin());
+            const int n = int(names.size());
+            i = (i + (k == 'n' ? 1 : n - 1)) % n;
+            std::string err;
+            loadScene(names[size_t(i)], err);
+            return true;
+        }
+        case '[':
+            s.maxDepth = std::max(0, s.maxDepth - 1);
+            return true;
+        case ']':
+            s.maxDepth = std::min(20, s.maxDepth + 1);
+            return true;
+        case 'r':
+            s.divisor = s.divisor >= 4 ? 1 : s.divisor * 2;
+            return true;
+        case 'c':
+            tree_.reset();
+            return true;
+        case 't':
+            startExperiment();
+            return true;
+        default:
+            return false;
+        }
+    }
+
+    bool click(int x, int y, const View& view) override {
+        if (!scene_.scene) return false;
+        const ViewCamera tc = traceCamera(view);
+        inspect(x * tc.width / std::max(view.width, 1), y * tc.height / std::max(view.height, 1),
+                tc);
+        return true;
+    }
+
+    bool busy() const override {
+        if (experiment_.active) return true;
+        return s.traced && !userCancelled_ && (!traceStarted_ || job_.status().running);
+    }
+
+    void draw(const View& view) override;
+    void gui() override;
+
+    // Test hooks.
+    void inspectPixel(int x, int y) {
+        pendingInspect_ = true;
+        inspectX_ = x;
+        inspectY_ = y;
+        if (lastView_.width > 0) resolvePendingInspect(lastView_);
+    }
+    const RayTree* inspected() const { return tree_ ? &*tree_ : nullptr; }
+    const std::vector<TimingRow>& timings() const { return timings_; }
+    int cancels() const { return cancels_; }
+    bool lastFinished() const { return job_.status().finished; }
+
+  private:
+    bool loadScene(const std::string& name, std::string& err) {
+        job_.cancel(); // the worker reads the scene: stop it before replacing it
+        LabScene next;
+        if (!loadLabScene(name, next, err)) return false;
+        scene_ = std::move(next);
+        s.sceneName = name;
+        s.model = scene_.model;
+        ++sceneGeneration_;
+        applyAccel();
+        tree_.reset();
+        traceStarted_ = false;
+        return true;
+    }
+
+    void applyAccel() {
+        job_.cancel();
+        bvhAvailable_ = setAccel(scene_, s.bvh);
+        traceStarted_ = false;
+    }
+
+    ViewCamera rasterCamera(const View& v) const {
+        return ViewCamera::make(scene_.camera, s.yaw + v.yaw, s.pitch + v.pitch, v.zoom,
+                                std::max(v.width, 1), std::max(v.height, 1));
+    }
+    ViewCamera traceCamera(const View& v) const {
+        CameraSpec spec = scene_.camera;
+        if (spec.screenPixel > 0) spec.screenPixel *= s.divisor;
+        return ViewCamera::make(spec, s.yaw + v.yaw, s.pitch + v.pitch, v.zoom,
+                                std::max(v.width / s.divisor, 1),
+                                std::max(v.height / s.divisor, 1));
+    }
+    rt::TraceSettings traceSettings() const {
+        rt::TraceSettings t;
+        t.maxDepth = s.maxDepth;
+        t.minWeight = s.minWeight;
+        return t;
+    }
+
+    void inspect(int x, int y, const ViewCamera& tc) {
+        if (x < 0 || y < 0 || x >= tc.width || y >= tc.height) return;
+        tree_ = inspectRay(scene_, s.model, traceSettings(), tc.pixelRay(x, y));
+        treeLines_ = describe(*tree_, *scene_.scene);
+        inspectedPixel_ = {x, y};
+        const glm::dvec2 sp = tc.screenOfPixel(x, y);
+        inspectedScreen_ = sp;
+    }
+    void resolvePendingInspect(const View& view) {
+        if (!pendingInspect_) return;
+        pendingInspect_ = false;
+        inspect(inspectX_, inspectY_, traceCamera(view));
+    }
+
+    void setupRasterView(const ViewCamera& cam, double zNear, double zFar);
+    void drawRaster(const View& view, const ViewCamera& cam);
+    void drawRayPath();
+    void drawImage(const Image& rgba, int w, int h, bool blend);
+    void rebuildMesh(const ViewCamera& cam);
+    void startExperiment();
+    void stepExperiment(const View& view);
+
+    LabScene scene_;
+    uint64_t sceneGeneration_ = 0;
+    bool bvhAvailable_ = false;
+    std::string modelOption_;
+
+    // Raster.
+    std::vector<MeshBatch> mesh_;
+    TessellationStats meshStats_;
+    uint64_t meshGeneration_ = ~uint64_t(0);
+    int meshW_ = 0, meshH_ = 0;
+    float meshZoom_ = 0;
+    GLuint program_ = 0;
+    std::string programError_;
+    double rasterMs_ = 0, rasterMsSmooth_ = 0;
+
+    // Trace.
+    TraceJob job_;
+    bool traceStarted_ = false;
+    bool userCancelled_ = false;
+    int cancels_ = 0;
+    ModelKind tracedModel_ = ModelKind::Phong;
+    rt::TraceSettings tracedSettings_;
+    uint64_t tracedGeneration_ = 0;
+    Image traceImage_;
+    uint64_t traceVersion_ = 0;
+    GLuint texture_ = 0;
+    double lastTraceSeconds_ = 0;
+
+    // Difference.
+    bool diffValid_ = false;
+    ImageDiff diff_;
+    Image diffImage_;
+    uint64_t diffVersion_ = 0;
+
+    // Inspector.
+    std::optional<RayTree> tree_;
+    std::vector<std::string> treeLines_;
+    glm::ivec2 inspectedPixel_{0};
+    glm::dvec2 inspectedScreen_{0.0};
+    bool pendingInspect_ = false;
+    int inspectX_ = 0, inspectY_ = 0;
+    View lastView_{0, 0};
+
+    // Timing experiment.
+    struct Experiment {
+        bool active = false;
+        size_t next = 0;
+        std::vector<std::string> scenes;
+        LabScene scene;
+        bool tracing = false;
+        TimingRow row;
+    } experiment_;
+    TraceJob expJob_;
+    std::vector<TimingRow> timings_;
+    bool experimentRequested_ = false;
+    bool printTimings_ = false;
+};
+
+void RaytraceLab::rebuildMesh(const ViewCamera& cam) {
+    mesh_ = tessellate(*scene_.scene, cam, {}, &meshStats_);
+}
+
+void RaytraceLab::setupRasterView(const ViewCamera& cam, double zNear, double zFar) {
+    double l, r, b, t;
+    cam.frustum(zNear, l, r, b, t);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glFrustum(l, r, b, t, zNear, zFar);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    const glm::dvec3 e = cam.eye(), c = cam.screen.screenCentre, u = cam.screen.screenY;
+    gluLookAt(e.x, e.y, e.z, c.x, c.y, c.z, u.x, u.y, u.z);
+}
+
+void RaytraceLab::drawRaster(const View& view, const ViewCamera& cam) {
+    const rt::Scene& sc = *scene_.scene;
+    glClearColor(float(sc.background.x), float(sc.background.y), float(sc.background.z), 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glm::dvec3 centre;
+    double radius;
+    sceneBounds(sc, centre, radius);
+    const double far = glm::length(cam.eye() - centre) + 5.0 * radius; // planes drawn to 4 radii
+    const double nearest = glm::length(cam.eye() - centre) - radius;
+    const double zNear = std::max(nearest * 0.9, far * 1e-4);
+    setupRasterView(cam, zNear, far);
+
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_NORMALIZE);
+    glShadeModel(GL_SMOOTH);
+    glDisable(GL_CULL_FACE);
+    // The tracer's models in GL terms (phong_model.h): local viewer, both sides lit (open
+    // surfaces are seen from either side). The course model's BA·C·KA is GL's global
+    // ambient with a_cm = KA·C, and its SH = distScale/dist is linear attenuation 1/distScale.
+    const bool course = s.model == ModelKind::Course;
+    const glm::dvec3 amb = course ? sc.ambient : sc.globalAmbient;
+    const GLfloat ga[4] = {GLfloat(amb.x), GLfloat(amb.y), GLfloat(amb.z), 1.0f};
+    glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ga);
+    glLightModeli(GL_LIGHT_MODEL_LOCAL_VIEWER, GL_TRUE);
+    glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+    const int nLights = std::min<int>(int(sc.lights.size()), 8);
+    for (int i = 0; i < 8; ++i) {
+        const GLenum li = GLenum(GL_LIGHT0 + i);
+        if (i >= nLights) {
+            glDisable(li);
+            continue;
+        }
+        const rt::Light& l = sc.lights[size_t(i)];
+        glEnable(li);
+        const GLfloat a[4] = {GLfloat(l.ambient.x), GLfloat(l.ambient.y), GLfloat(l.ambient.z), 1};
+        const GLfloat c[4] = {GLfloat(l.colour.x), GLfloat(l.colour.y), GLfloat(l.colour.z), 1};
+        glLightfv(li, GL_AMBIENT, a);
+        glLightfv(li, GL_DIFFUSE, c);
+        glLightfv(li, GL_SPECULAR, c);
+        const bool point = l.kind == rt::Light::Kind::Point;
+        const GLfloat p[4] = {GLfloat(point ? l.position.x : -l.direction.x),
+                              GLfloat(point ? l.position.y : -l.direction.y),
+                              GLfloat(point ? l.position.z : -l.direction.z), point ? 1.0f : 0.0f};
+        glLightfv(li, GL_POSITION, p);
+        const GLfloat sd[3] = {GLfloat(l.spotDirection.x), GLfloat(l.spotDirection.y),
+                               GLfloat(l.spotDirection.z)};
+        glLightfv(li, GL_SPOT_DIRECTION, sd);
+        glLightf(li, GL_SPOT_CUTOFF, GLfloat(l.spotCutoff));
+        glLightf(li, GL_SPOT_EXPONENT, GLfloat(l.spotExponent));
+        if (course && point && sc.distScale > 0) {
+            glLightf(li, GL_CONSTANT_ATTENUATION, 0.0f);
+            glLightf(li, GL_LINEAR_ATTENUATION, GLfloat(1.0 / sc.distScale));
+            glLightf(li, GL_QUADRATIC_ATTENUATION, 0.0f);
+        } else {
+            glLightf(li, GL_CONSTANT_ATTENUATION, GLfloat(l.constantAttenuation));
+            glLightf(li, GL_LINEAR_ATTENUATION, GLfloat(l.linearAttenuation));
+            glLightf(li, GL_QUADRATIC_ATTENUATION, GLfloat(l.quadraticAttenuation));
+        }
+    }
+    const bool glsl = s.glsl && program_;
+    if (glsl) {
+        glUseProgram(program_);
+        glUniform1i(glGetUniformLocation(program_, "wbLightCount"), nLights);
+        glUniform1i(glGetUniformLocation(program_, "wbLocalViewer"), 1);
+    }
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    for (const MeshBatch& b : mesh_) {
+        const rt::Material& m = sc.materials[size_t(b.material)];
+        glColour4(GL_FRONT_AND_BACK, GL_EMISSION, m.emission);
+        glColour4(GL_FRONT_AND_BACK, GL_AMBIENT, m.ka * m.colour);
+        glColour4(GL_FRONT_AND_BACK, GL_DIFFUSE, m.kd * m.colour);
+        glColour4(GL_FRONT_AND_BACK, GL_SPECULAR, glm::dvec3(m.ks));
+        glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, GLfloat(std::clamp(m.phongExp, 0.0, 128.0)));
+        glVertexPointer(3, GL_FLOAT, 0, b.pos.data());
+        glNormalPointer(GL_FLOAT, 0, b.normal.data());
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(b.pos.size() / 3));
+    }
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    if (glsl) glUseProgram(0);
+    glDisable(GL_LIGHTING);
+    (void)view;
+}
+
+void RaytraceLab::drawRayPath() {
+    if (!tree_ || !s.showRayPath) return;
+    glm::dvec3 centre;
+    double radius;
+    sceneBounds(*scene_.scene, centre, radius);
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST); // the path is shown through the objects it passes
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    for (const RayNode& n : tree_->nodes) {
+        if (n.kind == "primary")
+            glColor3f(1.0f, 1.0f, 0.2f);
+        else if (n.kind == "reflected")
+            glColor3f(0.2f, 1.0f, 1.0f);
+        else
+            glColor3f(1.0f, 0.3f, 1.0f);
+        const glm::dvec3 a = n.ray.origin;
+        const glm::dvec3 b = n.hit ? n.point : a + n.ray.direction * (3.0 * radius);
+        glVertex3d(a.x, a.y, a.z);
+        glVertex3d(b.x, b.y, b.z);
+        if (!n.hit) continue;
+        for (const FeelerRecord& f : n.feelers) {
+            if (!f.facing) continue;
+            const rt::Light& l = scene_.scene->lights[size_t(f.light)];
+            glm::dvec3 end =
+                l.kind == rt::Light::Kind::Point ? l.position : n.point + f.toLight * radius;
+            if (!f.blockers.empty()) {
+                glColor3f(1.0f, 0.15f, 0.15f); // blocked: up to the first blocker
+                end = f.blockers.front().point;
+            } else {
+                glColor3f(0.3f, 1.0f, 0.3f);
+            }
+            glVertex3d(n.point.x, n.point.y, n.point.z);
+            glVertex3d(end.x, end.y, end.z);
+        }
+    }
+    glEnd();
+    glLineWidth(1.0f);
+    glEnable(GL_DEPTH_TEST);
+}
+
+void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, rgba.channels == 4 ? GL_RGBA : GL_RGB,
+                 GL_UNSIGNED_BYTE, rgba.data.data());
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    glOrtho(0, 1, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+    glEnable(GL_TEXTURE_2D);
+    glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    if (blend) {
+        glEnable(GL_BLEND); // untraced pixels (alpha 0) keep the raster picture
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    glBegin(GL_QUADS); // image row 0 is the top
+    glTexCoord2f(0, 1);
+    glVertex2f(0, 0);
+    glTexCoord2f(1, 1);
+    glVertex2f(1, 0);
+    glTexCoord2f(1, 0);
+    glVertex2f(1, 1);
+    glTexCoord2f(0, 0);
+    glVertex2f(0, 1);
+    glEnd();
+    glDisable(GL_BLEND);
+    glDisable(GL_TEXTURE_2D);
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPopMatrix();
+}
+
+void RaytraceLab::draw(const View& view) {
+    lastView_ = view;
+    if (experiment_.active) {
+        stepExperiment(view);
+        if (experiment_.active || !view.headless) return;
+    }
+    const ViewCamera cam = rasterCamera(view);
+    if (meshGeneration_ != sceneGeneration_ || meshW_ != view.width || meshH_ != view.height ||
+        meshZoom_ != view.zoom) {
+        rebuildMesh(cam);
+        meshGeneration_ = sceneGeneration_;
+        meshW_ = view.width;
+        meshH_ = view.height;
+        meshZoom_ = view.zoom;
+    }
+    resolvePendingInspect(view);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    drawRaster(view, cam);
+    glFinish(); // the raster time includes the GPU's (here: Mesa's) work
+    rasterMs_ = secondsSince(t0) * 1000.0;
+    rasterMsSmooth_ = rasterMsSmooth_ == 0 ? rasterMs_ : 0.9 * rasterMsSmooth_ + 0.1 * rasterMs_;
+
+    if (s.traced) {
+        const ViewCamera tc = traceCamera(view);
+        const rt::TraceSettings ts = traceSettings();
+        const bool same =
+            traceStarted_ && job_.camera() == tc && tracedModel_ == s.model &&
+            tracedSettings_.maxDepth == ts.maxDepth && tracedSettings_.minWeight == ts.minWeight &&
+            tracedGeneration_ == sceneGeneration_ && job_.request().threads == s.threads;
+        if (!same && !(userCancelled_ && traceStarted_ && job_.camera() == tc)) {
+            // A camera (or setting) change: stop the frame in progress, trace the new one.
+            if (traceStarted_ && job_.status().running) ++cancels_;
+            TraceRequest req;
+            req.scene = &scene_;
+            req.camera = tc;
+            req.model = s.model;
+            req.settings = ts;
+            req.threads = s.threads;
+            job_.start(req);
+            traceStarted_ = true;
+            userCancelled_ = false;
+            tracedModel_ = s.model;
+            tracedSettings_ = ts;
+            tracedGeneration_ = sceneGeneration_;
+            diffValid_ = false;
+        }
+        // Headless: the picture is read once the trace is done (the shell calls draw()
+        // while busy(); waiting here keeps it from spinning next to the workers).
+        if (view.headless) job_.wait();
+        job_.fetch(traceImage_, traceVersion_);
+        const TraceStatus st = job_.status();
+        if (st.finished) lastTraceSeconds_ = st.seconds;
+        if (s.showDiff && st.finished && traceImage_.width == tc.width) {
+            if (!diffValid_ || diffVersion_ != traceVersion_) {
+                // Raster pixels at the trace's resolution (every divisor-th pixel centre).
+                const Image raster = readFramebuffer(view.width, view.height);
+                Image a(tc.width, tc.height, 3), b(tc.width, tc.height, 3);
+                diffImage_ = Image(tc.width, tc.height, 3);
+                for (int y = 0; y < tc.height; ++y)
+                    for (int x = 0; x < tc.width; ++x) {
+                        const uint8_t* r = raster.at(std::min(x * s.divisor, view.width - 1),
+                                                     std::min(y * s.divisor, view.height - 1));
+                        const uint8_t* t = traceImage_.at(x, y);
+                        int d = 0;
+                        for (int c = 0; c < 3; ++c) {
+                            a.at(x, y)[c] = r[c];
+                            b.at(x, y)[c] = t[c];
+                            d = std::max(d, std::abs(int(r[c]) - int(t[c])));
+                        }
+                        heat(d, diffImage_.at(x, y));
+                    }
+                diff_ = compareImages(a, b);
+                diffValid_ = true;
+                diffVersion_ = traceVersion_;
+            }
+            drawImage(diffImage_, diffImage_.width, diffImage_.height, false);
+        } else if (!traceImage_.empty()) {
+            drawImage(traceImage_, traceImage_.width, traceImage_.height, true);
+        }
+    }
+    // The inspected ray in the 3D view (both modes; the projection is the raster one).
+    if (tree_) {
+        setupRasterView(cam, glm::length(cam.eye() - cam.target) * 1e-3,
+                        glm::length(cam.eye() - cam.target) * 1e3);
+        drawRayPath();
+    }
+}
+
+void RaytraceLab::startExperiment() {
+    experiment_ = Experiment{};
+    experiment_.active = true;
+    experiment_.scenes = {"one-sphere", "two-spheres"};
+    timings_.clear();
+}
+
+void RaytraceLab::stepExperiment(const View& view) {
+    Experiment& e = experiment_;
+    if (!e.tracing) {
+        if (e.next >= e.scenes.size()) {
+            e.active = false;
+            if (printTimings_) {
+                std::printf("%-14s %6s %8s %10s %10s %9s %12s %8s\n", "scene", "prims", "tris",
+                            "raster ms", "trace s", "bvh s", "rays/s", "ratio");
+                for (const TimingRow& r : timings_)
+                    std::printf("%-14s %6lld %8lld %10.3f %10.3f %9.4f %12.0f %8.0f\n",
+                                r.scene.c_str(), r.primitives, r.triangles, r.rasterMs,
+                                r.traceSeconds, r.accelSeconds, r.raysPerSecond,
+                                r.traceSeconds * 1000.0 / std::max(r.rasterMs, 1e-9));
+                std::fflush(stdout);
+            }
+            return;
+        }
+        std::string err;
+        e.scene = LabScene{};
+        if (!loadLabScene(e.scenes[e.next], e.scene, err)) {
+            std::fprintf(stderr, "lab07 experiment: %s\n", err.c_str());
+            ++e.next;
+            return;
+        }
+        setAccel(e.scene, s.bvh);
+        e.row = TimingRow{};
+        e.row.scene = e.scenes[e.next];
+        e.row.primitives = (long long)e.scene.scene->primitives.size();
+        e.row.accelSeconds = e.scene.accelSeconds;
+        e.row.width = view.width / s.divisor;
+        e.row.height = view.height / s.divisor;
+        // Raster time: the same scene drawn with this lab's raster path, 10 frames.
+        std::swap(scene_, e.scene);
+        const ModelKind keep = s.model;
+        s.model = scene_.model;
+        const ViewCamera cam = rasterCamera(view);
+        TessellationStats ts;
+        const std::vector<MeshBatch> keepMesh = std::move(mesh_);
+        mesh_ = tessellate(*scene_.scene, cam, {}, &ts);
+        e.row.triangles = ts.triangles;
+        drawRaster(view, cam);
+        glFinish();
+        const auto t0 = std::chrono::steady_clock::now();
+        const int frames = 10;
+        for (int i = 0; i < frames; ++i)
+            drawRaster(view, cam);
+        glFinish();
+        e.row.rasterMs = secondsSince(t0) * 1000.0 / frames;
+        TraceRequest req;
+        req.camera = traceCamera(view);
+        req.model = scene_.model;
+        req.settings = traceSettings();
+        req.threads = s.threads;
+        mesh_ = std::move(const_cast<std::vector<MeshBatch>&>(keepMesh));
+        s.model = keep;
+        std::swap(scene_, e.scene);
+        req.scene = &e.scene;
+        expJob_.start(req);
+        e.tracing = true;
+    }
+    if (view.headless) expJob_.wait();
+    const TraceStatus st = expJob_.status();
+    if (st.running) return;
+    e.tracing = false;
+    e.row.traceSeconds = st.seconds;
+    e.row.raysPerSecond =
+        double(st.primaryRays + st.secondaryRays + st.shadowRays) / std::max(st.seconds, 1e-9);
+    if (st.finished) timings_.push_back(e.row);
+    ++e.next;
+}
+
+void RaytraceLab::gui() {
+    ImGui::TextWrapped("%s", scene_.about.c_str());
+    if (ImGui::BeginCombo("scene", s.sceneName.c_str())) {
+        for (const auto& n : builtinSceneNames())
+            if (ImGui::Selectable(n.c_str(), n == s.sceneName)) {
+                std::string err;
+                loadScene(n, err);
+            }
+        ImGui::EndCombo();
+    }
+    ImGui::Text("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
+                meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
+    int mode = s.traced ? 1 : 0;
+    ImGui::RadioButton("g: OpenGL", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("G: ray traced", &mode, 1);
+    s.traced = mode == 1;
+    ImGui::Checkbox("f: per-fragment GLSL Phong", &s.glsl);
+    if (!programError_.empty()) ImGui::TextWrapped("shader: %s", programError_.c_str());
+    ImGui::Checkbox("d: difference heat map", &s.showDiff);
+
+    ImGui::Separator();
+    const TraceStatus st = job_.status();
+    ImGui::Text("raster %.2f ms / frame", rasterMsSmooth_);
+    if (traceStarted_) {
+        ImGui::ProgressBar(st.tilesTotal ? float(st.tilesDone) / float(st.tilesTotal) : 0.0f);
+        if (st.running)
+            ImGui::Text("tracing: %.1f s, about %.1f s left", st.seconds, st.secondsLeft);
+        else
+            ImGui::Text("trace %.3f s (%s)", st.seconds, st.finished ? "finished" : "cancelled");
+        if (st.finished)
+            ImGui::Text("trace / raster = %.0f",
+                        st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
+        ImGui::Text("rays: %lld primary, %lld secondary, %lld shadow", st.primaryRays,
+                    st.secondaryRays, st.shadowRays);
+        ImGui::Text("threads %d, cancelled frames %d", st.threads, cancels_);
+    }
+    if (s.showDiff && diffValid_)
+        ImGui::Text("|raster - trace|: mean %.2f, max %d (of 255)", diff_.meanDiff, diff_.maxDiff);
+
+    ImGui::Separator();
+    int model = s.model == ModelKind::Course ? 0 : 1;
+    ImGui::RadioButton("course model", &model, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("phong model", &model, 1);
+    s.model = model == 0 ? ModelKind::Course : ModelKind::Phong;
+    ImGui::SliderInt("depth limit", &s.maxDepth, 0, 20);
+    float w = float(s.minWeight);
+    if (ImGui::SliderFloat("weight cut-off", &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
+    ImGui::SliderInt("threads (0 = all)", &s.threads, 0, 64);
+    int res = s.divisor == 1 ? 0 : s.divisor == 2 ? 1 : 2;
+    ImGui::RadioButton("1/1", &res, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("1/2", &res, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("1/4", &res, 2);
+    s.divisor = 1 << res;
+    if (ImGui::Checkbox("b: BVH", &s.bvh)) applyAccel();
+    if (!bvhAvailable_ && s.bvh)
+        ImGui::TextWrapped("(no BVH: brute force over all objects)");
+    else if (scene_.accel)
+        ImGui::Text("BVH built in %.4f s", scene_.accelSeconds);
+
+    ImGui::Separator();
+    if (ImGui::Button("t: run timing experiment")) startExperiment();
+    if (experiment_.active)
+        ImGui::Text("running: %s", experiment_.next < experiment_.scenes.size()
+                                       ? experiment_.scenes[experiment_.next].c_str()
+                                       : "");
+    if (!timings_.empty() && ImGui::BeginTable("timings", 5)) {
+        ImGui::TableSetupColumn("scene");
+        ImGui::TableSetupColumn("raster ms");
+        ImGui::TableSetupColumn("trace s");
+        ImGui::TableSetupColumn("bvh s");
+        ImGui::TableSetupColumn("Mrays/s");
+        ImGui::TableHeadersRow();
+        for (const TimingRow& r : timings_) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::Text("%s", r.scene.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", r.rasterMs);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", r.traceSeconds);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.4f", r.accelSeconds);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.2f", r.raysPerSecond / 1e6);
+        }
+        ImGui::EndTable();
+    }
+
+    ImGui::Separator();
+    if (tree_) {
+        ImGui::Text("ray tree of pixel (%d, %d), screen (%.1f, %.1f)", inspectedPixel_.x,
+                    inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y);
+        ImGui::Checkbox("draw the ray path", &s.showRayPath);
+        for (const std::string& l : treeLines_)
+            ImGui::TextWrapped("%s", l.c_str());
+    } else {
+        ImGui::TextWrapped("Click a pixel to see its ray tree.");
+    }
+}
+
+std::unique_ptr<Lab> makeRaytraceLab() {
+    return std::make_unique<RaytraceLab>();
+}
+
+RaytraceState& raytraceState(Lab& lab) {
+    return static_cast<RaytraceLab&>(lab).s;
+}
+const RayTree* raytraceInspected(const Lab& lab) {
+    return static_cast<const RaytraceLab&>(lab).inspected();
+}
+void raytraceInspectPixel(Lab& lab, int x, int y) {
+    static_cast<RaytraceLab&>(lab).inspectPixel(x, y);
+}
+const std::vector<TimingRow>& raytraceTimings(const Lab& lab) {
+    return static_cast<const RaytraceLab&>(lab).timings();
+}
+int raytraceCancels(const Lab& lab) {
+    return static_cast<const RaytraceLab&>(lab).cancels();
+}
+bool raytraceLastTraceFinished(const Lab& lab) {
+    return static_cast<const RaytraceLab&>(lab).lastFinished();
+}
+
+} // namespace wb
