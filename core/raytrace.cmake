@@ -24,8 +24,9 @@ find_package(tinyobjloader REQUIRED)
 target_sources(core PRIVATE
   src/raytrace/nff.cpp
   src/raytrace/obj_file.cpp
+  src/raytrace/parallel_render.cpp
   src/raytrace/scene_file.cpp
   src/raytrace/smooth_triangle.cpp
   src/raytrace/spd.cpp
 )
-target_link_libraries(core PRIVATE tinyobjloader::tinyobjloader)
+target_link_libraries(core PRIVATE tinyobjloader::tinyobjloader TBB::tbb)

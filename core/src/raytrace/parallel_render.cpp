@@ -1,0 +1,143 @@
+#include "core/raytrace/parallel_render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <stdexcept>
+#include <vector>
+
+namespace wb::rt {
+
+int hardwareThreads() {
+    return tbb::info::default_concurrency();
+}
+
+namespace {
+
+bool finite(const Color& c) {
+    return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
+
+} // namespace
+
+Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model, int width,
+                     int height, const ParallelRenderOptions& opt, ParallelRenderStats* stats) {
+    if (width < 1 || height < 1 || width > 65536 || height > 65536)
+        throw std::invalid_argument("renderParallel: image size must be 1..65536");
+    if (opt.tileSize < 1) throw std::invalid_argument("renderParallel: tileSize must be >= 1");
+    const LookAtCamera* lookAt = dynamic_cast<const LookAtCamera*>(&camera);
+    if (opt.cornerRays && !lookAt)
+        throw std::invalid_argument("renderParallel: cornerRays needs a LookAtCamera");
+    const auto start = std::chrono::steady_clock::now();
+    const int threads = opt.threads > 0 ? opt.threads : hardwareThreads();
+
+    Image img(width, height, 3);
+    // The grid the tiles cover: pixels, or the (w+1)×(h+1) pixel corners.
+    const int gw = opt.cornerRays ? width + 1 : width;
+    const int gh = opt.cornerRays ? height + 1 : height;
+    std::vector<Color> corners(opt.cornerRays ? std::size_t(gw) * std::size_t(gh) : 0);
+    const int ts = opt.tileSize;
+    const int tilesX = (gw + ts - 1) / ts, tilesY = (gh + ts - 1) / ts;
+    const int tilesTotal = tilesX * tilesY;
+
+    std::atomic<long long> primary{0}, secondary{0}, shadow{0}, bad{0};
+    std::atomic<bool> cancelled{false};
+    std::mutex progressMutex;
+    int tilesDone = 0; // guarded by progressMutex
+
+    auto renderTile = [&](int tile) {
+        if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
+            cancelled = true;
+            return;
+        }
+        const int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
+        const int x1 = std::min(gw, x0 + ts), y1 = std::min(gh, y0 + ts);
+        // One tracer per tile: its counters are not shared between threads (no
+        // contended atomics); the totals are added once per tile.
+        Tracer tracer(scene, model, opt.trace);
+        long long nBad = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                if (opt.cornerRays) {
+                    corners[std::size_t(y) * std::size_t(gw) + std::size_t(x)] =
+                        tracer.trace(lookAt->rayAt(x, y, width, height));
+                } else {
+                    Color c = tracer.trace(camera.primaryRay(x, y, width, height));
+                    if (!finite(c)) {
+                        ++nBad;
+                        c = Color(0.0);
+                    }
+                    model.toRgb8(c, img.at(x, y));
+                }
+            }
+        primary += tracer.primaryRays.load();
+        secondary += tracer.secondaryRays.load();
+        shadow += tracer.shadowRays.load();
+        bad += nBad;
+        if (opt.progress) {
+            std::lock_guard<std::mutex> lock(progressMutex);
+            TileProgress p;
+            p.x0 = x0;
+            p.y0 = y0;
+            p.x1 = std::min(x1, width);
+            p.y1 = std::min(y1, height);
+            p.tilesDone = ++tilesDone;
+            p.tilesTotal = tilesTotal;
+            p.image = opt.cornerRays ? nullptr : &img;
+            opt.progress(p);
+        }
+    };
+
+    // More threads than cores (tests ask for 3 on 2 cores) must be allowed explicitly.
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                              std::size_t(std::max(threads, hardwareThreads())));
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tilesTotal, 1),
+            [&](const tbb::blocked_range<int>& r) {
+                for (int t = r.begin(); t != r.end(); ++t)
+                    renderTile(t);
+            },
+            tbb::simple_partitioner());
+    });
+
+    if (opt.cornerRays && !cancelled) {
+        // Each pixel is the mean of its four corners, in the model's units.
+        arena.execute([&] {
+            tbb::parallel_for(0, height, [&](int y) {
+                for (int x = 0; x < width; ++x) {
+                    const auto at = [&](int cx, int cy) {
+                        return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
+                    };
+                    Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
+                    if (!finite(c)) {
+                        ++bad;
+                        c = Color(0.0);
+                    }
+                    model.toRgb8(c, img.at(x, y));
+                }
+            });
+        });
+    }
+    if (stats) {
+        stats->seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stats->primaryRays = primary;
+        stats->secondaryRays = secondary;
+        stats->shadowRays = shadow;
+        stats->nonFinitePixels = bad;
+        stats->threads = threads;
+        stats->cancelled = cancelled;
+    }
+    return img;
+}
+
+} // namespace wb::rt
