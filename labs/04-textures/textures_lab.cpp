@@ -8,6 +8,7 @@
 #include "texture_file.h"
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
 
 #include <algorithm>
@@ -126,8 +127,8 @@ class TexturesLab : public Lab {
         }
         upload(latLongTex_, makeLatLongImage(512, 256));
         sphere_ = toGl(makeSphere(1.2, 48, 24));
-        torus_ = toGl(makeTorus(1.1, 0.45, 64, 32));
-        addTorusScales(torus_, 0.45);
+        torus_ = toGl(makeTorus(kBumpTorusMajor, kBumpTorusMinor, 64, 32));
+        addTorusScales(torus_, kBumpTorusMinor);
         std::string err;
         bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
         if (!bumpProgram_) {
@@ -364,16 +365,22 @@ class TexturesLab : public Lab {
     // Blinn bump mapping (section 1.5.2) in shaders/bump.*: four white lights and a weak
     // ambient as in fig. 5.20; the height map tiles 10× around the ring, 3× around the tube.
     void drawBump() {
-        const GLfloat lights[4][4] = {{4, 3, 4, 1}, {-4, 3, 4, 1}, {0, -3, 4, 1}, {0, 4, -4, 1}};
+
         const GLfloat white[] = {0.45f, 0.45f, 0.45f, 1}, black[] = {0, 0, 0, 1};
         const GLfloat weak[] = {0.12f, 0.12f, 0.12f, 1};
+        GLdouble mv[16], pr[16];
+        glGetDoublev(GL_MODELVIEW_MATRIX, mv);
+        glGetDoublev(GL_PROJECTION_MATRIX, pr);
+        s_->bumpModelview = glm::make_mat4(mv);
+        s_->bumpProjection = glm::make_mat4(pr);
         glMatrixMode(GL_MODELVIEW);
-        glPushMatrix(); // the lights are fixed in the world, not spun with the torus
+        glPushMatrix(); // the lights are fixed in eye space, not spun with the torus
         glLoadIdentity();
-        glTranslated(0.0, 0.0, -5.0);
         for (int i = 0; i < 4; ++i) {
             const GLenum l = GLenum(GL_LIGHT0 + i);
-            glLightfv(l, GL_POSITION, lights[i]);
+            const GLfloat pos[4] = {float(kBumpLights[i][0]), float(kBumpLights[i][1]),
+                                    float(kBumpLights[i][2]), 1.0f};
+            glLightfv(l, GL_POSITION, pos);
             glLightfv(l, GL_DIFFUSE, white);
             glLightfv(l, GL_SPECULAR, white);
             glLightfv(l, GL_AMBIENT, black);
@@ -401,7 +408,8 @@ class TexturesLab : public Lab {
             glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &h);
             glUseProgram(bumpProgram_);
             glUniform1i(glGetUniformLocation(bumpProgram_, "heightMap"), 0);
-            glUniform2f(glGetUniformLocation(bumpProgram_, "repeats"), 10.0f, 3.0f);
+            glUniform2f(glGetUniformLocation(bumpProgram_, "repeats"), float(kBumpRepeatS),
+                        float(kBumpRepeatT));
             glUniform2f(glGetUniformLocation(bumpProgram_, "texelSize"), 1.0f / float(w),
                         1.0f / float(h));
             glUniform1f(glGetUniformLocation(bumpProgram_, "depth"),

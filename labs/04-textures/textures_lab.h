@@ -4,6 +4,8 @@
 // Blinn bump mapping on the torus (section 1.5.2) in GLSL.
 #include "common/lab.h"
 
+#include <glm/glm.hpp>
+
 #include <memory>
 #include <string>
 
@@ -11,6 +13,12 @@ namespace wb {
 
 enum class TextureScene { Flat = 1, Sphere = 2, Torus = 3, Mirror = 4, Bump = 5 };
 enum class TextureFilter { Nearest = 0, Linear = 1, Mipmap = 2 };
+
+// Scene 5 (bump mapping), shared with the test's independent reference.
+constexpr double kBumpTorusMajor = 1.1, kBumpTorusMinor = 0.45; // the torus of scenes 3-5
+constexpr double kBumpRepeatS = 10, kBumpRepeatT = 3; // height-map tiles around the ring / the tube
+// Point lights of scene 5 in eye coordinates (four white lights, fig. 5.20).
+constexpr double kBumpLights[4][3] = {{4, 3, -1}, {-4, 3, -1}, {0, -3, -1}, {0, 4, -9}};
 
 struct TexturesLabState {
     TextureScene scene = TextureScene::Flat;      // keys 1-4
@@ -26,6 +34,7 @@ struct TexturesLabState {
                                    "assets/textures/bumps.png"}; // the last is the height map
     std::string message;     // texture load problems, shown in the panel and on stderr
     int sphereMapBuilds = 0; // how often the sphere map was rebuilt for a new view
+    glm::dmat4 bumpModelview{1.0}, bumpProjection{1.0}; // scene 5: the torus's matrices (tests)
 };
 
 std::unique_ptr<Lab> makeTexturesLab();

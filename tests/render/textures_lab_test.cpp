@@ -107,6 +107,112 @@ TEST_CASE("bump mapping changes the shading, not the silhouette", "[gl][textures
     CHECK(shadingDiffers > covered / 5);
 }
 
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+// The torus of scene 5 at (s, t), and its smooth normal (makeTorus's parametrisation).
+glm::dvec3 torusPoint(double s, double t) {
+    const double phi = kTwoPi * s, theta = kTwoPi * t;
+    return wb::kBumpTorusMajor * glm::dvec3(std::sin(phi), 0, std::cos(phi)) +
+           wb::kBumpTorusMinor * glm::dvec3(std::cos(theta) * std::sin(phi), std::sin(theta),
+                                            std::cos(theta) * std::cos(phi));
+}
+glm::dvec3 torusNormal(double s, double t) {
+    const double phi = kTwoPi * s, theta = kTwoPi * t;
+    return {std::cos(theta) * std::sin(phi), std::sin(theta), std::cos(theta) * std::cos(phi)};
+}
+
+// The height map of assets/textures/make_textures.py as a continuous function of the tile
+// coordinates (u, v) ∈ [0,1)²: round bumps of radius 26 texels centred in each 64-texel cell.
+double bumpHeight(double u, double v) {
+    const double x = std::fmod(u * 128.0, 64.0) - 32.0, y = std::fmod(v * 128.0, 64.0) - 32.0;
+    const double q = (x * x + y * y) / (26.0 * 26.0);
+    return q < 1.0 ? (1.0 - q) * (1.0 - q) : 0.0;
+}
+
+// The normal of the displaced surface p + D·n itself (not the approximation 5.14), by
+// central differences of the displaced points: the independent reference.
+glm::dvec3 displacedNormal(double s, double t, double depth) {
+    auto p = [&](double a, double b) {
+        const double u = std::fmod(a * wb::kBumpRepeatS + 10.0, 1.0);
+        const double v = std::fmod(b * wb::kBumpRepeatT + 10.0, 1.0);
+        return torusPoint(a, b) + depth * bumpHeight(u, v) * torusNormal(a, b);
+    };
+    const double h = 1e-6;
+    const glm::dvec3 ds = p(s + h, t) - p(s - h, t), dt = p(s, t + h) - p(s, t - h);
+    return glm::normalize(glm::cross(ds, dt));
+}
+
+} // namespace
+
+TEST_CASE("bump mapping: shading follows the displaced surface's own normal", "[gl][textures]") {
+    // For pixels on the torus' front, find the (s, t) the pixel centre shows (Newton on the
+    // projection of p(s, t)), compute the normal of p + D·n by differences, light it with the
+    // lab's four lights and material (the shader's Phong sum, recomputed here), and compare
+    // with the pixel. The shader uses (5.14), which drops D·∂n/∂s and D·∂n/∂t, and an 8-bit
+    // height map differentiated over two texels: the tolerance below is what those cost.
+    wb::TexturesLabState st;
+    auto lab = wb::makeTexturesLab(&st);
+    const int w = 400, h = 300;
+    wb::Image img = wb::test::renderLab(*lab, w, h, "5");
+    const glm::dmat4 mv = st.bumpModelview, pr = st.bumpProjection;
+    const glm::dvec4 vp(0, 0, w, h);
+    const glm::dmat3 nm = glm::transpose(glm::inverse(glm::dmat3(mv)));
+    auto window = [&](double s, double t) {
+        return glm::dvec2(glm::project(torusPoint(s, t), mv, pr, vp));
+    };
+    const glm::dvec3 mat(0.85, 0.65, 0.35);
+    double worst = 0, sum = 0;
+    int n = 0, flank = 0;
+    for (double s0 = -0.06; s0 <= 0.06; s0 += 0.004)
+        for (double t0 = 0.01; t0 <= 0.24; t0 += 0.01) {
+            // The pixel around (s0, t0), then the (s, t) exactly at its centre.
+            glm::dvec2 target = glm::floor(window(s0, t0)) + 0.5;
+            double s = s0, t = t0;
+            for (int it = 0; it < 8; ++it) {
+                const double e = 1e-7;
+                const glm::dvec2 f = window(s, t) - target;
+                const glm::dvec2 fs = (window(s + e, t) - window(s, t)) / e;
+                const glm::dvec2 ft = (window(s, t + e) - window(s, t)) / e;
+                const double det = fs.x * ft.y - fs.y * ft.x;
+                s -= (f.x * ft.y - f.y * ft.x) / det;
+                t -= (fs.x * f.y - fs.y * f.x) / det;
+            }
+            if (glm::length(window(s, t) - target) > 1e-3) continue;
+            const glm::dvec3 eyePos(mv * glm::dvec4(torusPoint(s, t), 1.0));
+            const glm::dvec3 v = glm::normalize(-eyePos);
+            if (glm::dot(glm::normalize(nm * torusNormal(s, t)), v) < 0.4) continue; // no grazing
+            const glm::dvec3 m = glm::normalize(nm * displacedNormal(s, t, st.bumpDepth));
+            if (glm::dot(m, glm::normalize(nm * torusNormal(s, t))) < 0.98) ++flank; // tilted > 11°
+            glm::dvec3 c = 0.12 * mat; // weak global ambient
+            for (const auto& lp : wb::kBumpLights) {
+                const glm::dvec3 l = glm::normalize(glm::dvec3(lp[0], lp[1], lp[2]) - eyePos);
+                const double diffuse = std::max(glm::dot(m, l), 0.0);
+                const double spec =
+                    diffuse > 0 ? std::pow(std::max(glm::dot(glm::reflect(-l, m), v), 0.0), 40.0)
+                                : 0.0;
+                c += 0.45 * diffuse * mat + 0.45 * 0.6 * spec * glm::dvec3(1.0);
+            }
+            const uint8_t* px = img.at(int(target.x), h - 1 - int(target.y));
+            for (int k = 0; k < 3; ++k) {
+                const double e = std::abs(px[k] - 255.0 * std::min(1.0, c[k]));
+                worst = std::max(worst, e);
+                sum += e;
+            }
+            ++n;
+        }
+    WARN("bump shading vs the displaced surface: "
+         << n << " pixels (" << flank << " on steep flanks), mean error " << sum / (3 * n)
+         << "/255, worst " << worst << "/255");
+    REQUIRE(n > 200);
+    CHECK(flank > 50);
+    // Measured: mean 0.52/255, worst 8.2/255 (at a flank's steepest texels). Bumps dented
+    // instead of raised, or a missing chain-rule factor, cost tens of levels on the flanks.
+    CHECK(sum / (3 * n) < 1.5);
+    CHECK(worst < 16.0);
+}
+
 TEST_CASE("mirror sphere: centre pixel reflects what is behind the viewer", "[gl][textures]") {
     // The ray from the eye to the sphere's centre is reflected straight back, to +z at yaw 0:
     // the yellow pillar, environmentColour((0,0,1)). Spinning the sphere changes nothing (a
