@@ -148,7 +148,7 @@ std::string usageText(const std::string& program, const Lab& lab) {
       << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
       << "  --frames N            windowed: quit after N frames (smoke tests)\n"
       << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
-      << "  --smoke               windowed: press each one-letter key of the lab, a frame apart\n";
+      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame apart\n";
     for (const auto& o : lab.options()) {
         std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
         s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what << "\n";

@@ -18,7 +18,7 @@ struct ShellOptions {
     std::string root;         // --root DIR: asset/shader root (else WORKBENCH_ROOT, else build-time)
     int frames = 0;           // --frames N: windowed smoke run, quit after N frames (0 = run until Esc)
     std::string screenshot;   // --screenshot FILE.png: windowed, save the last frame before quitting
-    bool smoke = false;       // --smoke: windowed, press every one-character key of the lab, one per frame
+    bool smoke = false;       // --smoke: windowed, press every one-character key of the lab twice, one press per frame
     std::vector<std::pair<std::string, std::string>> labOptions; // the lab's own --name value pairs
 };
 

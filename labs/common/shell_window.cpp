@@ -110,7 +110,8 @@ void display() {
     layout();
     glViewport(0, 0, g->view.width, g->view.height);
     g->lab->draw(g->view);
-    bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames;
+    // --frames counts on until every --smoke key has been pressed.
+    bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames && g->smokeKeys.empty();
     if (g->panelVisible) {
         // The panel draws with its own GL state; keep the lab's.
         glPushAttrib(GL_ALL_ATTRIB_BITS);
@@ -269,7 +270,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
     for (int k : keys) labKey(k);
     if (state.opts.smoke)
         for (const auto& k : state.lab->keys())
-            if (k.key.size() == 1 && k.key[0] != 27) state.smokeKeys.push_back(static_cast<unsigned char>(k.key[0]));
+            if (k.key.size() == 1 && k.key[0] != 27) // twice: a toggle shows its other state, then returns
+                state.smokeKeys.insert(state.smokeKeys.end(), 2, static_cast<unsigned char>(k.key[0]));
     glutMainLoop();
 
     ImGui_ImplOpenGL2_Shutdown();
