@@ -1,5 +1,6 @@
 #include "core/raytrace/spd.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,12 +51,15 @@ struct BallsGen {
         if (depth <= 0) return;
         --depth;
         glm::dmat3 mx(1.0);
-        if (dir.z >= 1.0) {
-        } else if (dir.z <= -1.0) {
+        const glm::dvec3 cr = glm::cross(glm::dvec3(0, 0, 1), dir);
+        const double crLen = glm::length(cr);
+        // Along ±z (also when rounding leaves |dir.z| a hair below 1 with x = y = 0,
+        // where the axis would be 0/0): identity or a half turn, as balls.c does.
+        if (dir.z >= 1.0 || (crLen == 0 && dir.z > 0)) {
+        } else if (dir.z <= -1.0 || crLen == 0) {
             mx = rotation({0, 1, 0}, kPi);
         } else {
-            const glm::dvec3 axis = glm::normalize(glm::cross(glm::dvec3(0, 0, 1), dir));
-            mx = rotation(axis, std::acos(dir.z));
+            mx = rotation(cr / crLen, std::acos(std::clamp(dir.z, -1.0, 1.0)));
         }
         const double scale = radius * (1.0 + ratio);
         for (const glm::dvec3& v : objset) {

@@ -1,0 +1,487 @@
+// Ray tracer at scale (issue 6): speed against error, in one run of this program.
+// SPD rules: 512×512 with eye rays through the pixel corners (513² rays), maximum
+// depth 5, setup (scene + BVH build) and tracing timed apart. For one sphere, two
+// spheres, balls 2–4, jacks 2–4 and a 9,248-triangle OBJ mesh: BVH build time, frame
+// time with 1 thread and with all threads (median of several runs), ray counts, rays
+// per second, primary-ray traversal throughput; the brute-force crossover; the binned
+// SAH build rate; the image error of every speed option against the full-depth,
+// no-cut-off double reference. Writes docs/bench/raytrace.md and raytrace.png (or
+// into --out-dir DIR). With -DWORKBENCH_EMBREE=ON the same eye and shadow rays go
+// through Embree 3 too.
+//
+// Usage: raytrace_scale_bench [--out-dir DIR] [--quick]
+#include "core/image.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/obj_file.h"
+#include "core/raytrace/parallel_render.h"
+#include "core/raytrace/phong_model.h"
+#include "core/raytrace/spd.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+#ifdef WB_EMBREE
+#include "embree_compare.h"
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace wb::rt;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point a) {
+    return std::chrono::duration<double>(Clock::now() - a).count();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+struct Options {
+    std::string outDir = WB_SOURCE_DIR "/docs/bench";
+    std::string workDir = WB_BINARY_DIR "/bench-out";
+    int runs = 5;   // frames per measurement; the median is reported
+    int size = 512; // image size (SPD: 512)
+};
+
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+std::string withCommas(long long v) {
+    std::string s = std::to_string(v), out;
+    int n = 0;
+    for (auto it = s.rbegin(); it != s.rend(); ++it) {
+        if (n && n % 3 == 0) out.insert(out.begin(), ',');
+        out.insert(out.begin(), *it);
+        ++n;
+    }
+    return out;
+}
+
+// A 9,248-triangle bumpy sphere (68×68 grid, two triangles a cell, with vertex
+// normals), written as OBJ so the bench loads it through tinyobjloader.
+std::string writeMesh(const std::string& dir) {
+    const std::string path = dir + "/bumpy_sphere.obj";
+    std::ofstream out(path);
+    const int n = 68;
+    const double pi = 3.14159265358979323846;
+    auto pos = [&](int i, int j) {
+        const double u = 2 * pi * i / n, v = pi * (j + 0.5) / (n + 0.0);
+        const double r = 1 + 0.08 * std::sin(5 * u) * std::sin(4 * v);
+        return glm::dvec3(r * std::cos(u) * std::sin(v), r * std::cos(v),
+                          r * std::sin(u) * std::sin(v));
+    };
+    out << "# bumpy sphere, " << 2 * n * (n - 1) << " triangles\n";
+    out.precision(9);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 p = pos(i, j);
+            out << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+        }
+    auto id = [&](int i, int j) { return (j * n + (i % n)) + 1; };
+    int tris = 0;
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            out << "f " << id(i, j) << ' ' << id(i + 1, j) << ' ' << id(i + 1, j + 1) << '\n';
+            out << "f " << id(i, j) << ' ' << id(i + 1, j + 1) << ' ' << id(i, j + 1) << '\n';
+            tris += 2;
+        }
+    // Cap the two poles' rings with fans so the mesh is closed: n triangles each.
+    out << "v 0 1 0\nv 0 -1 0\n";
+    const int top = n * n + 1, bottom = n * n + 2;
+    for (int i = 0; i < n; ++i) {
+        out << "f " << top << ' ' << id(i + 1, 0) << ' ' << id(i, 0) << '\n';
+        out << "f " << bottom << ' ' << id(i, n - 1) << ' ' << id(i + 1, n - 1) << '\n';
+        tris += 2;
+    }
+    (void)tris;
+    return path;
+}
+
+struct BenchScene {
+    std::string name;
+    std::function<SceneFile()> make;
+};
+
+struct FrameResult {
+    double setupS = 0, buildS = 0, frame1 = 0, frameN = 0;
+    ParallelRenderStats stats;
+    double traversal1 = 0; // M primary rays/s, closest hit only, 1 thread
+    std::size_t prims = 0;
+    int depth = 0, nodes = 0;
+    bool bvh = false;
+};
+
+double traversalRate(const Scene& scene, const LookAtCamera& cam, int size, int runs) {
+    // Closest hit of the 513² eye rays, no shading, one thread.
+    std::vector<double> t;
+    long long hits = 0;
+    for (int r = 0; r < runs; ++r) {
+        const auto t0 = Clock::now();
+        hits = 0;
+        for (int y = 0; y <= size; ++y)
+            for (int x = 0; x <= size; ++x) {
+                Hit h;
+                hits += scene.intersect(cam.rayAt(x, y, size, size), 0.0, 1e300, h);
+            }
+        t.push_back(seconds(t0));
+    }
+    if (hits < 0) std::puts(""); // keep the loop observable
+    return double(size + 1) * double(size + 1) / median(t) / 1e6;
+}
+
+FrameResult measure(const BenchScene& bs, const Options& o, bool quickRuns) {
+    FrameResult r;
+    const auto t0 = Clock::now();
+    SceneFile sf = bs.make();
+    auto bvh = makeAggregate(*sf.scene);
+    sf.scene->setAggregate(bvh.get());
+    r.setupS = seconds(t0);
+    r.buildS = bvh ? bvh->stats().buildSeconds : 0.0;
+    r.bvh = bool(bvh);
+    r.prims = sf.scene->primitives.size();
+    if (bvh) {
+        r.depth = bvh->stats().maxDepth;
+        r.nodes = bvh->stats().nodes;
+    }
+    const LookAtCamera cam = sf.camera();
+    PhongModel model;
+    ParallelRenderOptions opt;
+    opt.cornerRays = true;
+    opt.trace.maxDepth = 5;
+    const int runs = quickRuns ? 3 : o.runs;
+    for (int threads : {1, hardwareThreads()}) {
+        opt.threads = threads;
+        std::vector<double> t;
+        for (int i = 0; i < runs; ++i) {
+            ParallelRenderStats st;
+            renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &st);
+            t.push_back(st.seconds);
+            r.stats = st;
+        }
+        (threads == 1 ? r.frame1 : r.frameN) = median(t);
+    }
+    r.traversal1 = traversalRate(*sf.scene, cam, o.size, quickRuns ? 1 : 3);
+    return r;
+}
+
+// Speed-against-error rows on one scene.
+struct ErrorRow {
+    std::string option;
+    double frameS = 0;
+    int maxDiff = 0;
+    double meanDiff = 0;
+    int series = 0; // 0 reference/other, 1 depth, 2 weight cut-off, 3 float, 4 brute force
+};
+
+// A small plot drawn with wb::Image: frame time (x) against mean error (y, with 0 on
+// its own baseline), one colour per series.
+void drawPlot(const std::vector<ErrorRow>& rows, const std::string& path) {
+    const int W = 640, H = 400, L = 60, R = 20, T = 20, B = 50;
+    wb::Image img(W, H, 3);
+    std::fill(img.data.begin(), img.data.end(), uint8_t(255));
+    auto px = [&](int x, int y, glm::ivec3 c) {
+        if (x < 0 || y < 0 || x >= W || y >= H) return;
+        uint8_t* p = img.at(x, y);
+        p[0] = uint8_t(c.r);
+        p[1] = uint8_t(c.g);
+        p[2] = uint8_t(c.b);
+    };
+    auto line = [&](int x0, int y0, int x1, int y1, glm::ivec3 c) {
+        const int n = std::max(std::abs(x1 - x0), std::abs(y1 - y0)) + 1;
+        for (int i = 0; i <= n; ++i)
+            px(x0 + (x1 - x0) * i / n, y0 + (y1 - y0) * i / n, c);
+    };
+    double tMax = 0, eMax = 0;
+    for (const auto& r : rows) {
+        tMax = std::max(tMax, r.frameS);
+        eMax = std::max(eMax, r.meanDiff);
+    }
+    tMax *= 1.1;
+    eMax = eMax > 0 ? eMax * 1.1 : 1.0;
+    const glm::ivec3 grey(200), black(0);
+    // Axes and a grid every tenth of the range.
+    for (int i = 0; i <= 10; ++i) {
+        const int x = L + (W - L - R) * i / 10, y = H - B - (H - B - T) * i / 10;
+        line(x, T, x, H - B, grey);
+        line(L, y, W - R, y, grey);
+    }
+    line(L, H - B, W - R, H - B, black);
+    line(L, T, L, H - B, black);
+    const glm::ivec3 colours[5] = {
+        {0, 0, 0}, {220, 40, 40}, {40, 90, 220}, {30, 160, 60}, {160, 60, 200}};
+    auto toX = [&](double t) { return L + int((W - L - R) * t / tMax); };
+    auto toY = [&](double e) { return H - B - int((H - B - T) * e / eMax); };
+    for (int s = 1; s <= 2; ++s) { // connect the depth and weight series in order
+        int lx = -1, ly = -1;
+        for (const auto& r : rows)
+            if (r.series == s || (r.series == 0 && r.option == "reference")) {
+                const int x = toX(r.frameS), y = toY(r.meanDiff);
+                if (lx >= 0) line(lx, ly, x, y, colours[s]);
+                lx = x;
+                ly = y;
+            }
+    }
+    for (const auto& r : rows) {
+        const int x = toX(r.frameS), y = toY(r.meanDiff);
+        for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx)
+                px(x + dx, y + dy, colours[r.series]);
+    }
+    wb::writePng(path, img);
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    bool quick = false;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--out-dir") && i + 1 < argc)
+            o.outDir = argv[++i];
+        else if (!std::strcmp(argv[i], "--quick")) {
+            quick = true;
+            o.runs = 1;
+            o.size = 128;
+        } else {
+            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick]\n", argv[0]);
+            return 2;
+        }
+    }
+    std::string cmd = "mkdir -p '" + o.workDir + "' '" + o.outDir + "'";
+    if (std::system(cmd.c_str()) != 0) return 1;
+    std::ostringstream md;
+    const std::time_t now = std::time(nullptr);
+    char date[64];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+    md << "# Ray tracer at scale: bench report\n\n"
+       << "Generated by `build/bin/raytrace_scale_bench` (tests/bench/raytrace_scale_bench.cpp) on "
+       << date << ", " << hardwareThreads() << " hardware threads, Release build. One run of the "
+       << "program; every time is the median of " << o.runs << " frames (" << o.size << "×"
+       << o.size << ", " << (o.size + 1)
+       << "² eye rays through the pixel corners, depth 5, phong model).\n\n";
+
+    const std::string meshPath = writeMesh(o.workDir);
+    std::vector<BenchScene> scenes = {
+        {"one sphere", [] { return toScene(oneSphereScene()); }},
+        {"two spheres", [] { return toScene(twoSpheresScene()); }},
+        {"balls 2", [] { return toScene(spdBalls(2)); }},
+        {"balls 3", [] { return toScene(spdBalls(3)); }},
+        {"balls 4", [] { return toScene(spdBalls(4)); }},
+        {"jacks 2", [] { return toScene(spdJacks(2)); }},
+        {"jacks 3", [] { return toScene(spdJacks(3)); }},
+        {"jacks 4", [] { return toScene(spdJacks(4)); }},
+        {"mesh 9k (OBJ)", [meshPath] { return loadObjFile(meshPath); }},
+    };
+    md << "## Frames\n\n"
+       << "| scene | primitives | setup ms | of it BVH build ms | BVH nodes/depth | frame ms, 1 "
+          "thread "
+          "| frame ms, "
+       << hardwareThreads()
+       << " threads | speed-up | eye rays | shadow rays | "
+          "reflection+refraction rays | M rays/s, 1 thread | M rays/s, all | M eye rays/s "
+          "traversal only, 1 thread |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& bs : scenes) {
+        std::fprintf(stderr, "frames: %s\n", bs.name.c_str());
+        const FrameResult r = measure(bs, o, quick);
+        const ParallelRenderStats& s = r.stats;
+        const double rays = double(s.primaryRays + s.secondaryRays + s.shadowRays);
+        md << "| " << bs.name << " | " << withCommas(long(r.prims)) << " | "
+           << fmt("%.1f", r.setupS * 1e3) << " | " << fmt("%.2f", r.buildS * 1e3) << " | "
+           << (r.bvh ? std::to_string(r.nodes) + "/" + std::to_string(r.depth) : "plain loop")
+           << " | " << fmt("%.1f", r.frame1 * 1e3) << " | " << fmt("%.1f", r.frameN * 1e3) << " | "
+           << fmt("%.2f", r.frame1 / r.frameN) << " | " << withCommas(s.primaryRays) << " | "
+           << withCommas(s.shadowRays) << " | " << withCommas(s.secondaryRays) << " | "
+           << fmt("%.2f", rays / r.frame1 / 1e6) << " | " << fmt("%.2f", rays / r.frameN / 1e6)
+           << " | " << fmt("%.2f", r.traversal1) << " |\n";
+        std::fprintf(stderr, "  build %.2f ms, frame %.1f / %.1f ms\n", r.buildS * 1e3,
+                     r.frame1 * 1e3, r.frameN * 1e3);
+    }
+
+    // Crossover: random non-overlapping-ish spheres, n = 1..32, primary rays + shading.
+    md << "\n## Plain loop against BVH: the crossover\n\n"
+       << "n random spheres (radius 0.3 in a 6³ box, one light), 160×160 centre rays, depth 5, one "
+          "thread, median of "
+       << (quick ? 3 : 9) << " frames.\n\n"
+       << "| n | plain loop ms | BVH ms | BVH/plain |\n|---|---|---|---|\n";
+    int crossover = -1;
+    for (int n : {1, 2, 3, 4, 5, 6, 8, 10, 12, 16, 24, 32}) {
+        SceneFile sf;
+        sf.scene = std::make_unique<Scene>();
+        std::mt19937_64 g{std::uint64_t(n)};
+        std::uniform_real_distribution<double> u(-3, 3);
+        for (int i = 0; i < n; ++i)
+            sf.scene->add(Sphere({u(g), u(g), u(g)}, 0.3), 0);
+        sf.scene->lights.push_back(Light::point({5, 5, 10}));
+        const LookAtCamera cam({0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 40);
+        PhongModel model;
+        ParallelRenderOptions opt;
+        opt.threads = 1;
+        double times[2];
+        Bvh bvh(sf.scene->primitives);
+        for (int k = 0; k < 2; ++k) {
+            sf.scene->setAggregate(k ? &bvh : nullptr);
+            std::vector<double> t;
+            for (int r = 0; r < (quick ? 3 : 9); ++r) {
+                ParallelRenderStats st;
+                renderParallel(*sf.scene, cam, model, 160, 160, opt, &st);
+                t.push_back(st.seconds);
+            }
+            times[k] = median(t);
+        }
+        if (crossover < 0 && times[1] < times[0]) crossover = n;
+        md << "| " << n << " | " << fmt("%.2f", times[0] * 1e3) << " | "
+           << fmt("%.2f", times[1] * 1e3) << " | " << fmt("%.2f", times[1] / times[0]) << " |\n";
+    }
+    md << "\nFirst n where the BVH is faster: **" << crossover
+       << "** (the code's `kBvhCrossover` is " << kBvhCrossover << ").\n";
+
+    // Build rate.
+    md << "\n## Binned SAH build rate (one thread)\n\n| input | primitives | build ms | M "
+          "primitives/s "
+          "| nodes | depth |\n|---|---|---|---|---|---|\n";
+    for (int sf : {5, 6}) {
+        if (quick && sf == 6) continue;
+        SceneFile s = toScene(spdBalls(sf));
+        std::vector<double> t;
+        BvhStats st;
+        for (int r = 0; r < 3; ++r) {
+            Bvh b(s.scene->primitives);
+            t.push_back(b.stats().buildSeconds);
+            st = b.stats();
+        }
+        const double m = median(t);
+        md << "| balls " << sf << " | " << withCommas(long(st.primitives)) << " | "
+           << fmt("%.1f", m * 1e3) << " | " << fmt("%.2f", double(st.primitives) / m / 1e6) << " | "
+           << st.nodes << " | " << st.maxDepth << " |\n";
+    }
+    {
+        Scene s;
+        std::mt19937_64 g(7);
+        std::uniform_real_distribution<double> u(-100, 100), d(-1, 1);
+        const int n = quick ? 100000 : 1000000;
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 c(u(g), u(g), u(g));
+            s.add(Triangle(c, c + glm::dvec3(d(g), d(g), d(g)), c + glm::dvec3(d(g), d(g), d(g))),
+                  0);
+        }
+        std::vector<double> t;
+        BvhStats st;
+        for (int r = 0; r < 3; ++r) {
+            Bvh b(s.primitives);
+            t.push_back(b.stats().buildSeconds);
+            st = b.stats();
+        }
+        const double m = median(t);
+        md << "| random triangles | " << withCommas(long(st.primitives)) << " | "
+           << fmt("%.1f", m * 1e3) << " | " << fmt("%.2f", double(st.primitives) / m / 1e6) << " | "
+           << st.nodes << " | " << st.maxDepth << " |\n";
+    }
+
+    // Speed against error on balls 4 (balls 3 for the plain loop, which is slow).
+    std::fprintf(stderr, "speed against error\n");
+    std::vector<ErrorRow> rows;
+    {
+        SceneFile sf = toScene(spdBalls(quick ? 2 : 4));
+        const LookAtCamera cam = sf.camera();
+        PhongModel model;
+        auto run = [&](const TraceSettings& ts, const Aggregate* agg, wb::Image& img) {
+            sf.scene->setAggregate(agg);
+            ParallelRenderOptions opt;
+            opt.cornerRays = true;
+            opt.trace = ts;
+            std::vector<double> t;
+            for (int r = 0; r < (quick ? 1 : 3); ++r) {
+                ParallelRenderStats st;
+                img = renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &st);
+                t.push_back(st.seconds);
+            }
+            return median(t);
+        };
+        Bvh bvhD(sf.scene->primitives), bvhF(sf.scene->primitives, BvhOptions{16, 4, 1, 1, true});
+        TraceSettings ref;
+        ref.maxDepth = 5;
+        ref.minWeight = 0.0;
+        wb::Image refImg, img;
+        rows.push_back({"reference", run(ref, &bvhD, refImg), 0, 0.0, 0});
+        wb::writePng(o.workDir + "/balls_reference.png", refImg);
+        auto add = [&](const std::string& name, const TraceSettings& ts, const Aggregate* a,
+                       int series) {
+            const double t = run(ts, a, img);
+            const wb::ImageDiff d = wb::compareImages(refImg, img);
+            rows.push_back({name, t, d.maxDiff, d.meanDiff, series});
+        };
+        add("float node boxes", ref, &bvhF, 3);
+        for (int depth : {4, 3, 2, 1, 0}) {
+            TraceSettings ts = ref;
+            ts.maxDepth = depth;
+            add("depth " + std::to_string(depth), ts, &bvhD, 1);
+        }
+        for (double w : {0.01, 0.05, 0.1, 0.2, 0.3}) {
+            TraceSettings ts = ref;
+            ts.minWeight = w;
+            add("weight cut-off " + fmt("%g", w), ts, &bvhD, 2);
+        }
+    }
+    ErrorRow bruteRow;
+    {
+        // The plain loop must give exactly the BVH's image: balls 3 (822 primitives).
+        SceneFile sf = toScene(spdBalls(quick ? 2 : 3));
+        const LookAtCamera cam = sf.camera();
+        PhongModel model;
+        ParallelRenderOptions opt;
+        opt.cornerRays = true;
+        opt.trace.minWeight = 0.0;
+        Bvh bvh(sf.scene->primitives);
+        sf.scene->setAggregate(&bvh);
+        ParallelRenderStats a, b;
+        const wb::Image withBvh = renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &a);
+        sf.scene->setAggregate(nullptr);
+        const wb::Image plain = renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &b);
+        const wb::ImageDiff d = wb::compareImages(withBvh, plain);
+        bruteRow = {"plain loop (balls 3; BVH frame " + fmt("%.0f", a.seconds * 1e3) + " ms)",
+                    b.seconds, d.maxDiff, d.meanDiff, 4};
+    }
+    md << "\n## Speed against error (balls " << (quick ? 2 : 4) << ", all threads)\n\n"
+       << "Reference: depth 5, no weight cut-off (every reflected ray traced), double node boxes. "
+          "Error = |difference| of 8-bit channels against the reference image.\n\n"
+       << "| option | frame ms | max diff | mean diff |\n|---|---|---|---|\n";
+    for (const auto& r : rows)
+        md << "| " << r.option << " | " << fmt("%.1f", r.frameS * 1e3) << " | " << r.maxDiff
+           << " | " << fmt("%.4f", r.meanDiff) << " |\n";
+    md << "| " << bruteRow.option << " | " << fmt("%.1f", bruteRow.frameS * 1e3) << " | "
+       << bruteRow.maxDiff << " | " << fmt("%.4f", bruteRow.meanDiff) << " |\n";
+    drawPlot(rows, o.outDir + "/raytrace.png");
+    md << "\n![frame time (x, 0 at the left axis) against mean error (y, 0 at the bottom axis); "
+          "black: reference, red: depth limits 4..0 (joined), blue: weight cut-offs (joined), "
+          "green: float node boxes](raytrace.png)\n\n"
+          "Plot: x = frame time (grid lines every tenth of the largest time × 1.1), y = mean "
+          "error (grid every tenth of the largest error × 1.1). Black: reference; red: depth "
+          "limits (joined from the reference); blue: weight cut-offs (joined); green: float node "
+          "boxes.\n";
+#ifdef WB_EMBREE
+    md << embreeSection(o.size);
+#endif
+    const std::string mdPath = o.outDir + "/raytrace.md";
+    std::ofstream(mdPath) << md.str();
+    std::fputs(md.str().c_str(), stdout);
+    std::fprintf(stderr, "wrote %s and raytrace.png\n", mdPath.c_str());
+    return 0;
+}
