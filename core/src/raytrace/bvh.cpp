@@ -11,11 +11,6 @@ namespace wb::rt {
 
 namespace {
 
-double area(const glm::dvec3& lo, const glm::dvec3& hi) {
-    const glm::dvec3 d = hi - lo;
-    return 2 * (d.x * d.y + d.y * d.z + d.z * d.x);
-}
-
 float floatDown(double x) {
     float f = float(x);
     if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
@@ -27,23 +22,41 @@ float floatUp(double x) {
     return f;
 }
 
+// A primitive's box in float, rounded outward: the build works in float (half the
+// memory traffic of double); node boxes are unions of these, so they still enclose
+// every primitive exactly.
 struct Ref {
-    glm::dvec3 lo, hi, centre;
-    const Primitive* prim;
+    float lo[3], hi[3];
+    std::uint32_t prim;
+    float centre(int a) const { return 0.5f * (lo[a] + hi[a]); }
 };
 
-struct Box {
-    glm::dvec3 lo{std::numeric_limits<double>::infinity()};
-    glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
-    void extend(const glm::dvec3& l, const glm::dvec3& h) {
-        lo = glm::min(lo, l);
-        hi = glm::max(hi, h);
+struct FBox {
+    float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
+                   std::numeric_limits<float>::infinity()};
+    float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                   -std::numeric_limits<float>::infinity()};
+    void extend(const float* l, const float* h) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = l[a] < lo[a] ? l[a] : lo[a];
+            hi[a] = h[a] > hi[a] ? h[a] : hi[a];
+        }
+    }
+    void extend(const FBox& b) { extend(b.lo, b.hi); }
+    void extendPoint(float x, float y, float z) {
+        const float p[3] = {x, y, z};
+        extend(p, p);
+    }
+    double area() const {
+        const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1],
+                     dz = double(hi[2]) - lo[2];
+        return 2 * (dx * dy + dy * dz + dz * dx);
     }
 };
 
 // Beyond this depth the builder splits at the object median, so the tree depth stays
-// below kMaxDepth = kMedianDepth + log2(kNffMaxPrimitives-sized inputs) + slack.
-constexpr int kMedianDepth = 96;
+// below kMaxDepth = kMedianDepth + log2(any input size) + slack.
+constexpr int kMedianDepth = 80;
 constexpr int kMaxDepth = 128;          // traversal stack size
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
 
@@ -52,6 +65,8 @@ constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
 // primitive they hit.
 constexpr double kFarScale = 1 + 2 * 3 * (std::numeric_limits<double>::epsilon() / 2) /
                                      (1 - 3 * std::numeric_limits<double>::epsilon() / 2);
+constexpr float kFarScaleF = 1 + 2 * 3 * (std::numeric_limits<float>::epsilon() / 2) /
+                                     (1 - 3 * std::numeric_limits<float>::epsilon() / 2);
 
 } // namespace
 
@@ -65,95 +80,110 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
 
     std::vector<Ref> refs;
     refs.reserve(prims.size());
-    for (const auto& p : prims) {
-        const Aabb b = p->bounds();
+    FBox rootBox, rootCBox;
+    for (std::size_t i = 0; i < prims.size(); ++i) {
+        const Aabb b = prims[i]->bounds();
         const bool finite = std::isfinite(b.lo.x) && std::isfinite(b.lo.y) &&
                             std::isfinite(b.lo.z) && std::isfinite(b.hi.x) &&
                             std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
-        if (!finite || b.empty() || !b.bounded())
-            unbounded_.push_back(p.get());
-        else
-            refs.push_back(Ref{b.lo, b.hi, 0.5 * (b.lo + b.hi), p.get()});
+        Ref r;
+        for (int a = 0; a < 3; ++a) {
+            r.lo[a] = floatDown(b.lo[a]);
+            r.hi[a] = floatUp(b.hi[a]);
+        }
+        // Boxes beyond float's range (|x| > 3.4e38) are as good as unbounded here.
+        const bool fits = std::isfinite(r.lo[0]) && std::isfinite(r.lo[1]) &&
+                          std::isfinite(r.lo[2]) && std::isfinite(r.hi[0]) &&
+                          std::isfinite(r.hi[1]) && std::isfinite(r.hi[2]);
+        if (!finite || b.empty() || !b.bounded() || !fits) {
+            unbounded_.push_back(prims[i].get());
+            continue;
+        }
+        r.prim = std::uint32_t(i);
+        rootBox.extend(r.lo, r.hi);
+        rootCBox.extendPoint(r.centre(0), r.centre(1), r.centre(2));
+        refs.push_back(r);
     }
     stats_.primitives = refs.size();
     stats_.unbounded = unbounded_.size();
     order_.reserve(refs.size());
     if (!refs.empty()) {
-        nodes_.reserve(2 * refs.size() / std::size_t(std::max(1, options.maxLeafSize / 2)) + 1);
+        nodes_.reserve(2 * refs.size());
         struct Task {
             std::size_t begin, end;
-            std::uint32_t parent; // node whose right child this is (npos for left/root)
+            std::uint32_t parent; // node whose right child this is (kNone for left/root)
             int depth;
+            FBox box, cbox; // bounds of the boxes and of the centroids
         };
         constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        std::vector<Task> stack{{0, refs.size(), kNone, 0}};
-        const int nb = options.bins;
-        std::vector<Box> binBox(size_t(3 * nb));
-        std::vector<std::size_t> binCount(size_t(3 * nb));
-        std::vector<double> rightArea(static_cast<size_t>(nb));
-        std::vector<std::size_t> rightCount(static_cast<size_t>(nb));
-        double rootArea = 0;
+        std::vector<Task> stack{{0, refs.size(), kNone, 0, rootBox, rootCBox}};
+        const int maxBins = options.bins;
+        std::vector<FBox> binBox(size_t(3 * maxBins));
+        std::vector<std::uint32_t> binCount(size_t(3 * maxBins));
+        std::vector<double> rightArea(static_cast<size_t>(maxBins));
+        std::vector<std::size_t> rightCount(static_cast<size_t>(maxBins));
+        const double rootArea = rootBox.area() > 0 ? rootBox.area() : 1.0;
         while (!stack.empty()) {
             const Task task = stack.back();
             stack.pop_back();
             const auto idx = std::uint32_t(nodes_.size());
             if (task.parent != kNone) nodes_[task.parent].offset = idx;
-            Box box, cbox;
-            for (std::size_t i = task.begin; i < task.end; ++i) {
-                box.extend(refs[i].lo, refs[i].hi);
-                cbox.extend(refs[i].centre, refs[i].centre);
-            }
             Node node;
-            node.lo = box.lo;
-            node.hi = box.hi;
-            node.flo = glm::vec3(floatDown(box.lo.x), floatDown(box.lo.y), floatDown(box.lo.z));
-            node.fhi = glm::vec3(floatUp(box.hi.x), floatUp(box.hi.y), floatUp(box.hi.z));
+            for (int a = 0; a < 3; ++a) {
+                node.lo[a] = task.box.lo[a];
+                node.hi[a] = task.box.hi[a];
+            }
             node.offset = 0;
             node.count = 0;
             node.axis = 0;
             const std::size_t n = task.end - task.begin;
-            const double parentArea = area(box.lo, box.hi);
-            if (idx == 0) rootArea = parentArea > 0 ? parentArea : 1.0;
+            const double parentArea = task.box.area() > 0 ? task.box.area() : 1e-300;
             stats_.maxDepth = std::max(stats_.maxDepth, task.depth);
+            // Small nodes need few bins (n + 1 separate n distinct centroids well enough);
+            // clearing and sweeping 16 bins for 2 primitives would dominate the build.
+            const int nb = int(std::min<std::size_t>(std::size_t(maxBins), n + 1));
 
-            // Best binned SAH split over the three axes.
+            // Best binned SAH split over the three axes (bins over the centroid bounds).
             int bestAxis = -1, bestBin = 0;
             double bestCost = std::numeric_limits<double>::infinity();
-            const glm::dvec3 ext = cbox.hi - cbox.lo;
-            if (n > 1 && task.depth < kMedianDepth) {
-                std::fill(binBox.begin(), binBox.end(), Box{});
-                std::fill(binCount.begin(), binCount.end(), 0);
-                glm::dvec3 scale(0.0);
-                for (int a = 0; a < 3; ++a)
-                    if (ext[a] > 0) scale[a] = nb / ext[a];
-                for (std::size_t i = task.begin; i < task.end; ++i)
+            float scale[3], clo[3];
+            for (int a = 0; a < 3; ++a) {
+                clo[a] = task.cbox.lo[a];
+                const float ext = task.cbox.hi[a] - task.cbox.lo[a];
+                // Slightly under nb/ext so the largest centroid falls in bin nb−1.
+                scale[a] = ext > 0 ? float(nb) * (1 - 1e-6f) / ext : 0.0f;
+            }
+            const bool binnable = scale[0] > 0 || scale[1] > 0 || scale[2] > 0;
+            if (n > 1 && binnable && task.depth < kMedianDepth) {
+                std::fill(binBox.begin(), binBox.begin() + 3 * nb, FBox{});
+                std::fill(binCount.begin(), binCount.begin() + 3 * nb, 0u);
+                for (std::size_t i = task.begin; i < task.end; ++i) {
+                    const Ref& r = refs[i];
                     for (int a = 0; a < 3; ++a) {
-                        if (scale[a] == 0) continue;
-                        const int b =
-                            std::min(nb - 1, int((refs[i].centre[a] - cbox.lo[a]) * scale[a]));
-                        binBox[size_t(a * nb + b)].extend(refs[i].lo, refs[i].hi);
+                        const int b = std::min(nb - 1, int((r.centre(a) - clo[a]) * scale[a]));
+                        binBox[size_t(a * nb + b)].extend(r.lo, r.hi);
                         ++binCount[size_t(a * nb + b)];
                     }
+                }
                 for (int a = 0; a < 3; ++a) {
                     if (scale[a] == 0) continue;
-                    Box acc;
+                    FBox acc;
                     std::size_t cnt = 0;
                     for (int b = nb - 1; b > 0; --b) {
-                        acc.extend(binBox[size_t(a * nb + b)].lo, binBox[size_t(a * nb + b)].hi);
+                        acc.extend(binBox[size_t(a * nb + b)]);
                         cnt += binCount[size_t(a * nb + b)];
-                        rightArea[size_t(b)] = cnt ? area(acc.lo, acc.hi) : 0.0;
+                        rightArea[size_t(b)] = cnt ? acc.area() : 0.0;
                         rightCount[size_t(b)] = cnt;
                     }
-                    Box left;
+                    FBox left;
                     std::size_t lc = 0;
                     for (int b = 1; b < nb; ++b) {
-                        left.extend(binBox[size_t(a * nb + b - 1)].lo,
-                                    binBox[size_t(a * nb + b - 1)].hi);
+                        left.extend(binBox[size_t(a * nb + b - 1)]);
                         lc += binCount[size_t(a * nb + b - 1)];
                         const std::size_t rc = rightCount[size_t(b)];
                         if (lc == 0 || rc == 0) continue;
                         const double cost =
-                            double(lc) * area(left.lo, left.hi) + double(rc) * rightArea[size_t(b)];
+                            double(lc) * left.area() + double(rc) * rightArea[size_t(b)];
                         if (cost < bestCost) {
                             bestCost = cost;
                             bestAxis = a;
@@ -164,54 +194,73 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             }
             const double leafCost = options.intersectionCost * double(n);
             const double splitCost =
-                bestAxis < 0 ? std::numeric_limits<double>::infinity()
-                             : options.traversalCost + options.intersectionCost * bestCost /
-                                                           (parentArea > 0 ? parentArea : 1.0);
-            const bool mustSplit = n > kMaxLeaf;
-            const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && leafCost <= splitCost;
+                bestAxis < 0
+                    ? std::numeric_limits<double>::infinity()
+                    : options.traversalCost + options.intersectionCost * bestCost / parentArea;
             const bool canSah = bestAxis >= 0;
-            if (!mustSplit &&
-                (n == 1 || wantLeaf ||
-                 (!canSah && task.depth < kMedianDepth && n <= std::size_t(16) * 16))) {
-                // Leaf (also when every centroid coincides and n is modest).
+            const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && leafCost <= splitCost;
+            // Coincident centroids cannot be binned: a modest group becomes one leaf.
+            const bool stuck = !canSah && task.depth < kMedianDepth && n <= 256;
+            if (n <= kMaxLeaf && (n == 1 || wantLeaf || stuck)) {
                 node.offset = std::uint32_t(order_.size());
                 node.count = std::uint16_t(n);
                 for (std::size_t i = task.begin; i < task.end; ++i)
-                    order_.push_back(refs[i].prim);
+                    order_.push_back(prims[refs[i].prim].get());
                 nodes_.push_back(node);
                 ++stats_.leaves;
-                stats_.sahCost += leafCost * parentArea / rootArea;
+                stats_.sahCost += leafCost * task.box.area() / rootArea;
                 continue;
             }
             std::size_t mid;
             int axis;
-            if (canSah && !(task.depth >= kMedianDepth)) {
+            if (canSah) {
                 axis = bestAxis;
-                const double lo = cbox.lo[axis], sc = nb / ext[axis];
+                const float lo = clo[axis], sc = scale[axis];
                 auto it = std::partition(
                     refs.begin() + std::ptrdiff_t(task.begin),
                     refs.begin() + std::ptrdiff_t(task.end), [&](const Ref& r) {
-                        return std::min(nb - 1, int((r.centre[axis] - lo) * sc)) < bestBin;
+                        return std::min(nb - 1, int((r.centre(axis) - lo) * sc)) < bestBin;
                     });
                 mid = std::size_t(it - refs.begin());
             } else {
-                // Object median on the widest centroid axis (also for coincident centroids).
-                axis = (ext.x >= ext.y && ext.x >= ext.z) ? 0 : (ext.y >= ext.z ? 1 : 2);
+                // Object median on the widest centroid axis (deep trees, coincident centroids).
+                float best = -1;
+                axis = 0;
+                for (int a = 0; a < 3; ++a)
+                    if (task.cbox.hi[a] - task.cbox.lo[a] > best) {
+                        best = task.cbox.hi[a] - task.cbox.lo[a];
+                        axis = a;
+                    }
                 mid = task.begin + n / 2;
                 std::nth_element(
                     refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
                     refs.begin() + std::ptrdiff_t(task.end),
-                    [axis](const Ref& x, const Ref& y) { return x.centre[axis] < y.centre[axis]; });
+                    [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
             }
             node.axis = std::uint16_t(axis);
             nodes_.push_back(node);
-            stats_.sahCost += options.traversalCost * parentArea / rootArea;
+            stats_.sahCost += options.traversalCost * task.box.area() / rootArea;
+            // The children's bounds in one pass.
+            Task left{task.begin, mid, kNone, task.depth + 1, {}, {}};
+            Task right{mid, task.end, idx, task.depth + 1, {}, {}};
+            for (std::size_t i = task.begin; i < task.end; ++i) {
+                Task& t = i < mid ? left : right;
+                t.box.extend(refs[i].lo, refs[i].hi);
+                t.cbox.extendPoint(refs[i].centre(0), refs[i].centre(1), refs[i].centre(2));
+            }
             // Right first on the stack so the left child is built next, right after its parent.
-            stack.push_back({mid, task.end, idx, task.depth + 1});
-            stack.push_back({task.begin, mid, kNone, task.depth + 1});
+            stack.push_back(right);
+            stack.push_back(left);
         }
     }
     stats_.nodes = int(nodes_.size());
+    if (options_.floatBoxes) {
+        fboxes_.reserve(nodes_.size());
+        for (const Node& nd : nodes_)
+            fboxes_.push_back(
+                {glm::vec3(floatDown(nd.lo.x), floatDown(nd.lo.y), floatDown(nd.lo.z)),
+                 glm::vec3(floatUp(nd.hi.x), floatUp(nd.hi.y), floatUp(nd.hi.z))});
+    }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen
     stats_.buildSeconds =
@@ -226,46 +275,73 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
     const int neg[3] = {std::signbit(inv.x), std::signbit(inv.y), std::signbit(inv.z)};
     const glm::vec3 fo(o), finv(inv);
     const bool useFloat = options_.floatBoxes;
-    std::array<std::uint32_t, kMaxDepth> stack;
-    int sp = 0;
-    std::uint32_t idx = 0;
-    while (true) {
-        const Node& node = nodes_[idx];
-        bool hitBox;
+    // Entry distance of node i's box, or +inf when the ray misses it within (tMin, tMax].
+    // NaN (0·inf for a ray in a slab's plane) compares false: that slab is not a limit.
+    auto enter = [&](std::uint32_t i) {
         if (useFloat) {
-            // NaN (0·inf for a ray in a slab's plane) compares false: the slab is not a limit.
+            const FloatBox& b = fboxes_[i];
             float t0 = float(tMin), t1 = float(tMax);
             for (int a = 0; a < 3; ++a) {
-                const float near = ((neg[a] ? node.fhi[a] : node.flo[a]) - fo[a]) * finv[a];
-                const float far = ((neg[a] ? node.flo[a] : node.fhi[a]) - fo[a]) * finv[a];
-                t0 = near > t0 ? near : t0;
-                t1 = far * 1.0000004f < t1 ? far * 1.0000004f : t1;
-            }
-            hitBox = t0 <= t1;
-        } else {
-            double t0 = tMin, t1 = tMax;
-            for (int a = 0; a < 3; ++a) {
-                const double near = ((neg[a] ? node.hi[a] : node.lo[a]) - o[a]) * inv[a];
-                const double far = ((neg[a] ? node.lo[a] : node.hi[a]) - o[a]) * inv[a] * kFarScale;
+                const float near = ((neg[a] ? b.hi[a] : b.lo[a]) - fo[a]) * finv[a];
+                const float far = ((neg[a] ? b.lo[a] : b.hi[a]) - fo[a]) * finv[a] * kFarScaleF;
                 t0 = near > t0 ? near : t0;
                 t1 = far < t1 ? far : t1;
             }
-            hitBox = t0 <= t1;
+            return t0 <= t1 ? double(t0) : std::numeric_limits<double>::infinity();
         }
-        if (hitBox) {
-            if (node.count > 0) {
-                for (std::uint32_t i = node.offset, e = node.offset + node.count; i < e; ++i)
-                    if (!visit(*order_[i], tMax)) return;
-            } else {
-                const std::uint32_t first = neg[node.axis] ? node.offset : idx + 1;
-                const std::uint32_t second = neg[node.axis] ? idx + 1 : node.offset;
-                stack[size_t(sp++)] = second;
-                idx = first;
+        const Node& b = nodes_[i];
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < 3; ++a) {
+            const double near = ((neg[a] ? b.hi[a] : b.lo[a]) - o[a]) * inv[a];
+            const double far = ((neg[a] ? b.lo[a] : b.hi[a]) - o[a]) * inv[a] * kFarScale;
+            t0 = near > t0 ? near : t0;
+            t1 = far < t1 ? far : t1;
+        }
+        return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
+    };
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    struct Entry {
+        std::uint32_t node;
+        double t; // entry distance when pushed: skipped if a nearer hit came since
+    };
+    std::array<Entry, kMaxDepth> stack;
+    int sp = 0;
+    if (enter(0) == inf) return;
+    std::uint32_t idx = 0;
+    while (true) {
+        const Node& node = nodes_[idx];
+        if (node.count > 0) {
+            for (std::uint32_t i = node.offset, e = node.offset + node.count; i < e; ++i)
+                if (!visit(*order_[i], tMax)) return;
+        } else {
+            // Both children's boxes here: go to the nearer, keep the farther for later.
+            const std::uint32_t l = idx + 1, r = node.offset;
+            const double tl = enter(l), tr = enter(r);
+            if (tl != inf && tr != inf) {
+                if (tr < tl) {
+                    stack[size_t(sp++)] = {l, tl};
+                    idx = r;
+                } else {
+                    stack[size_t(sp++)] = {r, tr};
+                    idx = l;
+                }
+                continue;
+            }
+            if (tl != inf) {
+                idx = l;
+                continue;
+            }
+            if (tr != inf) {
+                idx = r;
                 continue;
             }
         }
-        if (sp == 0) return;
-        idx = stack[size_t(--sp)];
+        // Next pushed node that is still nearer than the nearest hit so far.
+        do {
+            if (sp == 0) return;
+            --sp;
+        } while (stack[size_t(sp)].t > tMax);
+        idx = stack[size_t(sp)].node;
     }
 }
 

@@ -20,7 +20,7 @@ struct BvhOptions {
     int maxLeafSize = 4;           // a node with at most this many primitives may become a leaf
     double traversalCost = 1.0;    // SAH cost of visiting a node, relative to...
     double intersectionCost = 1.0; // ...one primitive test
-    bool floatBoxes = false; // test node boxes in float (boxes rounded outward): faster, same hits
+    bool floatBoxes = false; // test node boxes in float (boxes rounded outward; origin rounded)
 };
 
 struct BvhStats {
@@ -50,11 +50,13 @@ class Bvh : public Aggregate {
     const BvhStats& stats() const { return stats_; }
 
     struct Node {
-        glm::dvec3 lo, hi;    // box
-        glm::vec3 flo, fhi;   // the same box in float, rounded outward
+        glm::dvec3 lo, hi;    // box (rounded outward from the float boxes of the build)
         std::uint32_t offset; // leaf: first index into order_; inner: right child index
         std::uint16_t count;  // leaf: number of primitives; inner: 0
-        std::uint16_t axis;   // inner: split axis (front-to-back order)
+        std::uint16_t axis;   // inner: split axis
+    };
+    struct FloatBox {
+        glm::vec3 lo, hi; // a node's box in float, rounded outward (floatBoxes traversal)
     };
 
   private:
@@ -64,6 +66,7 @@ class Bvh : public Aggregate {
     const std::vector<std::unique_ptr<Primitive>>& prims_;
     BvhOptions options_;
     std::vector<Node> nodes_;
+    std::vector<FloatBox> fboxes_;            // parallel to nodes_ when options_.floatBoxes
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     BvhStats stats_;
