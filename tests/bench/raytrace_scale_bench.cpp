@@ -477,7 +477,7 @@ int main(int argc, char** argv) {
           "limits (joined from the reference); blue: weight cut-offs (joined); green: float node "
           "boxes.\n";
 #ifdef WB_EMBREE
-    md << embreeSection(o.size);
+    md << embreeSection(o.size, quick ? 1 : 3, meshPath);
 #endif
     const std::string mdPath = o.outDir + "/raytrace.md";
     std::ofstream(mdPath) << md.str();

@@ -1,0 +1,8 @@
+#pragma once
+// The Embree 3 side of the ray tracer bench (built with -DWORKBENCH_EMBREE=ON).
+#include <string>
+
+// Markdown section: the same eye and shadow rays of each bench scene through our BVH
+// and through Embree (triangles and spheres native, cones/cylinders as user geometry
+// with our exact intersection), one thread, and ours/Embree.
+std::string embreeSection(int size, int runs, const std::string& meshPath);
