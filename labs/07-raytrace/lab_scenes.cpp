@@ -1,12 +1,17 @@
 #include "lab_scenes.h"
 
 #include "core/raytrace/box.h"
+#include "core/raytrace/bvh.h"
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/plane.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
+#include "core/raytrace/scene_file.h"
+#include "core/raytrace/spd.h"
 #include "core/raytrace/sphere.h"
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <stdexcept>
 
@@ -44,6 +49,25 @@ void buildSpheres(LabScene& s, int count) {
     s.model = ModelKind::Phong;
     s.about = count == 1 ? "one sphere over a floor (the lab's timing experiment)"
                          : "two spheres over a floor (the lab's timing experiment)";
+}
+
+// Diffuse spheres lit from the eye (so no shadow is visible): the scene on which the
+// per-fragment GLSL raster and the phong tracer must agree up to tessellation.
+void buildDiffuse(LabScene& s) {
+    rt::Scene& sc = *s.scene;
+    s.camera.eye = {0, 1.5, 6};
+    s.camera.target = {0, 0, 0};
+    s.camera.fovY = 45;
+    sc.lights.push_back(Light::point(s.camera.eye));
+    Material m = phongMaterial({0.9, 0.3, 0.2});
+    m.ks = 0;
+    sc.add(rt::Sphere({0, 0, 0}, 1.0), sc.addMaterial(m));
+    m.colour = {0.2, 0.8, 0.3};
+    sc.add(rt::Sphere({-1.6, -0.3, -1}, 0.7), sc.addMaterial(m));
+    m.colour = {0.3, 0.4, 0.9};
+    sc.add(rt::Sphere({1.5, 0.4, -0.5}, 0.5), sc.addMaterial(m));
+    s.model = ModelKind::Phong;
+    s.about = "diffuse spheres lit from the eye: raster and trace should agree";
 }
 
 Material seedMaterial(const dvec3& colour255, double kr) {
@@ -148,11 +172,40 @@ void buildTable(LabScene& s) {
     s.about = "seed 001: table and glass (cut paraboloid, ellipsoid, cylinders, plane)";
 }
 
+// A scene of issue 6's readers and generators (phong model, the file's view).
+void fromSceneFile(LabScene& s, rt::SceneFile&& f, const std::string& about) {
+    s.scene = std::move(f.scene);
+    s.camera.eye = f.view.from;
+    s.camera.target = f.view.at;
+    s.camera.up = f.view.up;
+    s.camera.fovY = f.view.angle;
+    s.model = ModelKind::Phong;
+    s.about = about;
+}
+
+// "balls:3" -> 3 when the prefix matches and N is 1..5.
+bool sizeFactor(const std::string& name, const std::string& prefix, int& n) {
+    if (name.compare(0, prefix.size(), prefix) != 0) return false;
+    const std::string tail = name.substr(prefix.size());
+    if (tail.size() != 1 || tail[0] < '1' || tail[0] > '5') return false;
+    n = tail[0] - '0';
+    return true;
+}
+
+bool hasExtension(const std::string& name, const std::string& ext) {
+    if (name.size() <= ext.size()) return false;
+    std::string tail = name.substr(name.size() - ext.size());
+    std::transform(tail.begin(), tail.end(), tail.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return tail == ext;
+}
+
 } // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"one-sphere",    "two-spheres", "seed000-part1", "seed000-part1-lit",
-            "seed000-part2", "glass-cube",  "seed001-table"};
+    return {"one-sphere",    "two-spheres", "diffuse-spheres", "seed000-part1", "seed000-part1-lit",
+            "seed000-part2", "glass-cube",  "seed001-table",   "balls:1",       "balls:2",
+            "balls:3",       "balls:4",     "jacks:1",         "jacks:2",       "jacks:3"};
 }
 
 bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
@@ -165,6 +218,8 @@ bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
             buildSpheres(s, 1);
         else if (name == "two-spheres")
             buildSpheres(s, 2);
+        else if (name == "diffuse-spheres")
+            buildDiffuse(s);
         else if (name == "seed000-part1")
             buildSeedPart1(s, true);
         else if (name == "seed000-part1-lit")
@@ -175,11 +230,21 @@ bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
             buildGlassCube(s);
         else if (name == "seed001-table")
             buildTable(s);
+        else if (int n = 0; sizeFactor(name, "balls:", n))
+            fromSceneFile(s, rt::toScene(rt::spdBalls(n)),
+                          "SPD balls (sphereflake) size " + std::to_string(n) + ": " +
+                              std::to_string(rt::spdBallsSpheres(n)) + " spheres");
+        else if (int m = 0; sizeFactor(name, "jacks:", m))
+            fromSceneFile(s, rt::toScene(rt::spdJacks(m)),
+                          "SPD jacks size " + std::to_string(m) + ": " +
+                              std::to_string(rt::spdJacksCount(m)) + " jacks");
+        else if (hasExtension(name, ".nff") || hasExtension(name, ".obj"))
+            fromSceneFile(s, rt::loadSceneFile(name), "file " + name);
         else {
             error = "unknown scene '" + name + "' (one of:";
-            for (const auto& n : builtinSceneNames())
-                error += " " + n;
-            error += ")";
+            for (const auto& known : builtinSceneNames())
+                error += " " + known;
+            error += ", balls:N, jacks:N with N = 1..5, or a .nff / .obj file)";
             return false;
         }
     } catch (const std::exception& e) {
@@ -198,7 +263,16 @@ bool setAccel(LabScene& s, bool on) {
         s.accelSeconds = 0;
         return true;
     }
-    return false; // the BVH of issue 6 is installed here once it lands
+    // Issue 6's binned-SAH BVH; below its measured crossover (a handful of objects) the
+    // brute-force loop is as fast and makeAggregate returns null.
+    const auto t0 = std::chrono::steady_clock::now();
+    s.scene->setAggregate(nullptr);
+    auto bvh = rt::makeAggregate(*s.scene);
+    s.accelSeconds =
+        bvh ? std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() : 0.0;
+    s.scene->setAggregate(bvh.get());
+    s.accel = std::move(bvh);
+    return true;
 }
 
 } // namespace wb

@@ -45,13 +45,14 @@ struct LabScene {
 // Names the panel offers (in-code and generated scenes; files come by path).
 std::vector<std::string> builtinSceneNames();
 
-// Builds or loads `name`: one-sphere, two-spheres, seed000-part1, seed000-part2,
+// Builds or loads `name`: one-sphere, two-spheres, diffuse-spheres, seed000-part1, seed000-part2,
 // seed000-part1-lit (rectangle 1 removed), glass-cube, seed001-table, balls:N, jacks:N
 // (N = 1..5), or a path ending in .nff / .obj. False with a message on a bad name or file.
 bool loadLabScene(const std::string& name, LabScene& out, std::string& error);
 
-// Installs (on) or removes (off) the BVH of a loaded scene; returns false when this
-// build has no BVH. The scene must not be traced while this runs.
+// Installs (on: when the scene is large enough to pay for it) or removes (off) the BVH
+// of a loaded scene; returns false when this build has no BVH. The scene must not be
+// traced while this runs.
 bool setAccel(LabScene& s, bool on);
 
 } // namespace wb

@@ -6,6 +6,7 @@
 #include "core/raytrace/polyhedron.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
+#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
@@ -121,7 +122,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
     dvec3 sceneCentre;
     double sceneRadius;
     sceneBounds(scene, sceneCentre, sceneRadius);
-    const double extent = opt.planeExtent > 0 ? opt.planeExtent : 4.0 * sceneRadius;
+    const double extent = opt.planeExtent > 0 ? opt.planeExtent : 40.0 * sceneRadius;
     const double pixelAngle = cam.screen.pixelSize / cam.dist; // radians per pixel near the axis
     // Pixels covered by a length at the nearest distance any orbit brings the bounding
     // sphere (c, r) to the eye (the mesh is kept while the view turns).
@@ -157,6 +158,8 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             b.grid(mat, rc->loc, rc->e1, rc->e2, rc->normal,
                    cells(pixels(glm::length(rc->e1), c, r)),
                    cells(pixels(glm::length(rc->e2), c, r)));
+        } else if (auto* st = dynamic_cast<const rt::SmoothTriangle*>(p)) {
+            b.tri(mat, st->v0, st->v1, st->v2, st->n0, st->n1, st->n2);
         } else if (auto* t = dynamic_cast<const rt::Triangle*>(p)) {
             const dvec3 n = glm::cross(t->v1 - t->v0, t->v2 - t->v0);
             b.flatTri(mat, t->v0, t->v1, t->v2, n);

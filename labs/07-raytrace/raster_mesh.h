@@ -29,7 +29,7 @@ struct TessellationOptions {
                                  // per-vertex (Gouraud) lighting samples point lights densely
     int minSegments = 8, maxSegments = 128; // around a circle
     double planeExtent = 0.0;               // half size of the square drawn for an infinite plane
-                                            // (0: 4× the radius of the bounded part of the scene)
+                                            // (0: 40× the bounded part's radius: near the horizon)
 };
 
 // Tessellates every primitive for the view `cam` (its pixel size sets the level).

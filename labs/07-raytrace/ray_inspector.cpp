@@ -8,6 +8,7 @@
 #include "core/raytrace/polyhedron.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
+#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/texture.h"
 #include "core/raytrace/triangle.h"
@@ -24,6 +25,7 @@ std::string primitiveKind(const rt::Primitive& p) {
     if (dynamic_cast<const rt::Sphere*>(&p)) return "sphere";
     if (dynamic_cast<const rt::Plane*>(&p)) return "plane";
     if (dynamic_cast<const rt::Rectangle*>(&p)) return "rectangle";
+    if (dynamic_cast<const rt::SmoothTriangle*>(&p)) return "smooth triangle";
     if (dynamic_cast<const rt::Triangle*>(&p)) return "triangle";
     if (dynamic_cast<const rt::Box*>(&p)) return "box";
     if (dynamic_cast<const rt::ConvexPolyhedron*>(&p)) return "polyhedron";

@@ -389,7 +389,7 @@ void RaytraceLab::drawRaster(const View& view, const ViewCamera& cam) {
     glm::dvec3 centre;
     double radius;
     sceneBounds(sc, centre, radius);
-    const double far = glm::length(cam.eye() - centre) + 5.0 * radius; // planes drawn to 4 radii
+    const double far = glm::length(cam.eye() - centre) + 60.0 * radius; // planes drawn to 40 radii
     const double nearest = glm::length(cam.eye() - centre) - radius;
     const double zNear = std::max(nearest * 0.9, far * 1e-4);
     setupRasterView(cam, zNear, far);

@@ -1,6 +1,7 @@
 #include "trace_job.h"
 
 #include "core/raytrace/course_model.h"
+#include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
 
 #include <chrono>
@@ -69,54 +70,45 @@ void TraceJob::run() {
     const rt::ShadingModel& model =
         req.model == ModelKind::Course ? static_cast<const rt::ShadingModel&>(course) : phong;
     const PixelCamera camera(req.camera);
-    const int w = req.camera.width, h = req.camera.height;
-    const int ts = req.tileSize > 0 ? req.tileSize : 16;
 
-    // One worker, tile after tile (the parallel renderer of issue 6 replaces this loop).
-    const rt::Tracer tracer(scene, model, req.settings);
-    long long bad = 0;
-    std::vector<uint8_t> tile(size_t(ts) * ts * 3);
-    bool stopped = false;
-    for (int y0 = 0; y0 < h && !stopped; y0 += ts)
-        for (int x0 = 0; x0 < w; x0 += ts) {
-            if (cancel_) {
-                stopped = true;
-                break;
+    // Issue 6's TBB tiled renderer: every finished tile is copied into the shown image
+    // under our lock (its callback is serialised and the tile's pixels are final), the
+    // cancel flag is polled between tiles.
+    rt::ParallelRenderOptions opt;
+    opt.threads = req.threads;
+    opt.tileSize = req.tileSize > 0 ? req.tileSize : 16;
+    opt.trace = req.settings;
+    opt.cancel = &cancel_;
+    opt.progress = [this](const rt::TileProgress& t) {
+        if (!t.image) return;
+        std::lock_guard<std::mutex> lock(mutex_);
+        for (int y = t.y0; y < t.y1; ++y)
+            for (int x = t.x0; x < t.x1; ++x) {
+                const uint8_t* q = t.image->at(x, y);
+                uint8_t* p = image_.at(x, y);
+                p[0] = q[0];
+                p[1] = q[1];
+                p[2] = q[2];
+                p[3] = 255;
             }
-            const int x1 = std::min(x0 + ts, w), y1 = std::min(y0 + ts, h);
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    rt::Color c = tracer.trace(camera.primaryRay(x, y, w, h));
-                    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z)) {
-                        ++bad;
-                        c = rt::Color(0.0);
-                    }
-                    model.toRgb8(c, &tile[(size_t(y - y0) * ts + size_t(x - x0)) * 3]);
-                }
-            std::lock_guard<std::mutex> lock(mutex_);
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    uint8_t* p = image_.at(x, y);
-                    const uint8_t* q = &tile[(size_t(y - y0) * ts + size_t(x - x0)) * 3];
-                    p[0] = q[0];
-                    p[1] = q[1];
-                    p[2] = q[2];
-                    p[3] = 255;
-                }
-            ++status_.tilesDone;
-            ++version_;
-        }
+        status_.tilesDone = t.tilesDone;
+        status_.tilesTotal = t.tilesTotal;
+        ++version_;
+    };
+    rt::ParallelRenderStats st;
+    rt::renderParallel(scene, camera, model, req.camera.width, req.camera.height, opt, &st);
+
     std::lock_guard<std::mutex> lock(mutex_);
     status_.running = false;
     status_.seconds = now() - startTime_;
     status_.secondsLeft = 0;
-    status_.finished = status_.tilesDone == status_.tilesTotal;
+    status_.finished = !st.cancelled && status_.tilesDone == status_.tilesTotal;
     status_.cancelled = !status_.finished;
-    status_.primaryRays = tracer.primaryRays;
-    status_.secondaryRays = tracer.secondaryRays;
-    status_.shadowRays = tracer.shadowRays;
-    status_.nonFinitePixels = bad;
-    status_.threads = 1;
+    status_.primaryRays = st.primaryRays;
+    status_.secondaryRays = st.secondaryRays;
+    status_.shadowRays = st.shadowRays;
+    status_.nonFinitePixels = st.nonFinitePixels;
+    status_.threads = st.threads;
     ++version_;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
-// The background trace of lab 07: one frame of the scene traced off the GL thread,
-// tile by tile, so the window keeps drawing while tiles appear (progress, time left),
-// and stoppable at any tile boundary (camera change, `x`, Esc). Finished tiles land in
-// an RGBA image whose alpha says which pixels are traced; a frame is never a mix of
-// two cameras: start() stops and joins the previous frame before the image is reset.
+// The background trace of lab 07: one frame of the scene traced off the GL thread by
+// issue 6's parallel renderer (all cores), tile by tile, so the window keeps drawing while tiles
+// appear (progress, time left), and stoppable at any tile boundary (camera change, `x`, Esc).
+// Finished tiles land in an RGBA image whose alpha says which pixels are traced; a frame is never a
+// mix of two cameras: start() stops and joins the previous frame before the image is reset.
 #include "lab_scenes.h"
 #include "view_camera.h"
 

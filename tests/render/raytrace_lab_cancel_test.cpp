@@ -1,0 +1,147 @@
+// Lab 07's background trace: a camera change in the middle of a trace cancels it and
+// starts the new frame, and the frame that ends is exactly the new camera's (no tile of
+// the old one left: "no torn image"); quitting mid-trace joins the worker. Run under the
+// sanitizers too (build with -DWORKBENCH_SANITIZE=ON).
+#include "render_check.h"
+
+#include "raytrace_lab.h"
+#include "trace_job.h"
+
+#include "common/gl_util.h"
+#include "core/raytrace/course_model.h"
+#include "core/raytrace/render.h"
+
+#include <GL/osmesa.h>
+
+#include <chrono>
+#include <thread>
+
+namespace {
+
+// An OSMesa context for driving draw() by hand (renderHeadless would wait for the trace).
+struct Context {
+    OSMesaContext ctx = nullptr;
+    std::vector<uint8_t> buffer;
+    Context(int w, int h) : buffer(size_t(w) * h * 4) {
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               24,
+                               OSMESA_STENCIL_BITS,
+                               8,
+                               OSMESA_PROFILE,
+                               OSMESA_COMPAT_PROFILE,
+                               0};
+        ctx = OSMesaCreateContextAttribs(attribs, nullptr);
+        REQUIRE(ctx);
+        REQUIRE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
+    }
+    ~Context() { OSMesaDestroyContext(ctx); }
+};
+
+constexpr int kW = 320, kH = 240;
+
+wb::View windowView() {
+    wb::View v;
+    v.width = kW;
+    v.height = kH;
+    v.headless = false; // as in a window: draw() does not wait for the trace
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("lab 07: a camera change during a trace cancels it; the result is the new view's",
+          "[gl]") {
+    wb::Image after;
+    int cancels = 0;
+    {
+        Context c(kW, kH);
+        auto lab = wb::makeRaytraceLab();
+        std::string err;
+        REQUIRE(lab->setOption("scene", "seed001-table", err));
+        REQUIRE(lab->setOption("threads", "1", err));
+        lab->init();
+        const wb::View v = windowView();
+        lab->key('G');
+        lab->draw(v); // starts the trace in the background
+        REQUIRE(lab->busy());
+        for (int i = 0; i < 3; ++i) { // three camera changes, each mid-trace
+            lab->key(wb::kKeyLeft);
+            lab->draw(v);
+        }
+        cancels = wb::raytraceCancels(*lab);
+        const auto t0 = std::chrono::steady_clock::now();
+        while (lab->busy()) {
+            lab->draw(v); // tiles appear while the window keeps drawing
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            REQUIRE(std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120));
+        }
+        lab->draw(v);
+        glFinish();
+        after = wb::readFramebuffer(kW, kH);
+        CHECK(wb::raytraceLastTraceFinished(*lab));
+    }
+    // A 320×240 trace of this scene takes far longer than a draw() call, so every change
+    // arrived mid-trace.
+    CHECK(cancels == 3);
+    // The frame shown equals a fresh headless render of the final camera, pixel for pixel.
+    auto fresh = wb::makeRaytraceLab();
+    std::string err;
+    REQUIRE(fresh->setOption("scene", "seed001-table", err));
+    const wb::Image ref = wb::test::renderLab(*fresh, kW, kH, "G{left}{left}{left}");
+    const wb::ImageDiff d = wb::compareImages(after, ref);
+    REQUIRE(d.sameSize);
+    CHECK(d.maxDiff == 0);
+}
+
+TEST_CASE("lab 07: quitting in the middle of a trace stops and joins the worker", "[gl]") {
+    Context c(kW, kH);
+    for (int round = 0; round < 3; ++round) {
+        auto lab = wb::makeRaytraceLab();
+        std::string err;
+        REQUIRE(lab->setOption("scene", "glass-cube", err));
+        lab->init();
+        lab->key('G');
+        lab->draw(windowView());
+        REQUIRE(lab->busy());
+        if (round == 1) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        const auto t0 = std::chrono::steady_clock::now();
+        lab.reset(); // what Esc does: the shell destroys the lab
+        // Cancel is polled between tiles: one 16×16 tile of this scene is well under 50 ms.
+        CHECK(std::chrono::steady_clock::now() - t0 < std::chrono::milliseconds(500));
+    }
+}
+
+TEST_CASE("lab 07: the tiled background trace equals the single-threaded reference renderer",
+          "[gl]") {
+    wb::LabScene s;
+    std::string err;
+    REQUIRE(wb::loadLabScene("glass-cube", s, err));
+    const wb::ViewCamera cam = wb::ViewCamera::make(s.camera, 10, -5, 1.2, 97, 61); // odd sizes
+    wb::TraceJob job;
+    wb::TraceRequest req;
+    req.scene = &s;
+    req.camera = cam;
+    req.model = s.model;
+    req.tileSize = 16; // 97 = 6·16 + 1: partial tiles at the right and bottom
+    job.start(req);
+    job.wait();
+    const wb::TraceStatus st = job.status();
+    CHECK(st.finished);
+    CHECK(st.tilesDone == 7 * 4);
+    CHECK(st.nonFinitePixels == 0);
+    wb::Image rgba;
+    uint64_t version = 0;
+    REQUIRE(job.fetch(rgba, version));
+    const wb::rt::CourseModel model;
+    const wb::Image ref = wb::rt::render(*s.scene, wb::PixelCamera(cam), model, 97, 61);
+    int differ = 0;
+    for (int y = 0; y < 61; ++y)
+        for (int x = 0; x < 97; ++x) {
+            differ += rgba.at(x, y)[3] != 255;
+            for (int ch = 0; ch < 3; ++ch)
+                differ += rgba.at(x, y)[ch] != ref.at(x, y)[ch];
+        }
+    CHECK(differ == 0);
+}
