@@ -21,3 +21,19 @@ wb_test(raytrace_scale_test
   LIBS core)
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-out)
 target_compile_definitions(raytrace_scale_test PRIVATE WB_TEST_TMP="${CMAKE_BINARY_DIR}/test-out")
+# Fuzzing (issue 6): the saved corpus and kept crashers run through both scene readers
+# in every build; -DWORKBENCH_FUZZ=ON (clang) adds the libFuzzer targets fuzz_nff, fuzz_obj.
+wb_test(raytrace_fuzz_corpus_test
+  SOURCES ../fuzz/corpus_test.cpp ../fuzz/scene_fuzz.cpp
+  LIBS core)
+target_compile_definitions(raytrace_fuzz_corpus_test PRIVATE
+  WB_FUZZ_DIR="${PROJECT_SOURCE_DIR}/tests/fuzz")
+option(WORKBENCH_FUZZ "Build the libFuzzer harnesses (needs clang)" OFF)
+if(WORKBENCH_FUZZ)
+  foreach(reader nff obj)
+    add_executable(fuzz_${reader} ../fuzz/fuzz_${reader}.cpp ../fuzz/scene_fuzz.cpp)
+    target_link_libraries(fuzz_${reader} PRIVATE core)
+    target_compile_options(fuzz_${reader} PRIVATE -fsanitize=fuzzer,address,undefined)
+    target_link_options(fuzz_${reader} PRIVATE -fsanitize=fuzzer,address,undefined)
+  endforeach()
+endif()

@@ -71,7 +71,7 @@ constexpr float kFarScaleF = 1 + 2 * 3 * (std::numeric_limits<float>::epsilon() 
 } // namespace
 
 Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions options)
-    : prims_(prims), options_(options) {
+    : options_(options) {
     if (options.bins < 2 || options.bins > 256 || options.maxLeafSize < 1 ||
         options.maxLeafSize > 255 || !(options.traversalCost >= 0) ||
         !(options.intersectionCost > 0))

@@ -63,7 +63,6 @@ class Bvh : public Aggregate {
     template <class Visit>
     void traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) const;
 
-    const std::vector<std::unique_ptr<Primitive>>& prims_;
     BvhOptions options_;
     std::vector<Node> nodes_;
     std::vector<FloatBox> fboxes_;            // parallel to nodes_ when options_.floatBoxes
