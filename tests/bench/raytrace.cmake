@@ -13,3 +13,7 @@ if(WORKBENCH_EMBREE)
   target_compile_definitions(raytrace_scale_bench PRIVATE WB_EMBREE=1)
   target_link_libraries(raytrace_scale_bench PRIVATE embree)
 endif()
+# SPD scenes as NFF files: spd_generate balls|jacks SIZE [FILE].
+add_executable(spd_generate spd_generate.cpp)
+target_compile_options(spd_generate PRIVATE ${WB_WARNINGS})
+target_link_libraries(spd_generate PRIVATE core)

@@ -4,6 +4,7 @@
 #include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -129,8 +130,19 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
     }
 }
 
+// Shortest text that reads back to the same double (std::to_chars): exact round trips
+// without 17-digit noise such as 0.33000000000000002.
+struct Num {
+    double v;
+};
+std::ostream& operator<<(std::ostream& out, Num n) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, n.v);
+    return out.write(buf, r.ptr - buf);
+}
+
 void writeVec(std::ostream& out, const glm::dvec3& v) {
-    out << v.x << ' ' << v.y << ' ' << v.z;
+    out << Num{v.x} << ' ' << Num{v.y} << ' ' << Num{v.z};
 }
 
 } // namespace
@@ -227,7 +239,6 @@ NffDocument readNffFile(const std::string& path) {
 }
 
 void writeNff(std::ostream& out, const NffDocument& doc) {
-    const auto oldPrec = out.precision(17);
     if (doc.hasView) {
         const SceneView& v = doc.view;
         out << "v\nfrom ";
@@ -236,8 +247,8 @@ void writeNff(std::ostream& out, const NffDocument& doc) {
         writeVec(out, v.at);
         out << "\nup ";
         writeVec(out, v.up);
-        out << "\nangle " << v.angle << "\nhither " << v.hither << "\nresolution " << v.width << ' '
-            << v.height << '\n';
+        out << "\nangle " << Num{v.angle} << "\nhither " << Num{v.hither} << "\nresolution "
+            << v.width << ' ' << v.height << '\n';
     }
     if (doc.hasBackground) {
         out << "b ";
@@ -259,8 +270,8 @@ void writeNff(std::ostream& out, const NffDocument& doc) {
             const NffSurface& f = doc.surfaces[size_t(written + 1)];
             out << "f ";
             writeVec(out, f.colour);
-            out << ' ' << f.kd << ' ' << f.ks << ' ' << f.shine << ' ' << f.t << ' ' << f.ior
-                << '\n';
+            out << ' ' << Num{f.kd} << ' ' << Num{f.ks} << ' ' << Num{f.shine} << ' ' << Num{f.t}
+                << ' ' << Num{f.ior} << '\n';
         }
     };
     for (const NffObject& o : doc.objects) {
@@ -269,14 +280,14 @@ void writeNff(std::ostream& out, const NffDocument& doc) {
         case NffObject::Kind::Sphere:
             out << "s ";
             writeVec(out, o.centre);
-            out << ' ' << o.radius << '\n';
+            out << ' ' << Num{o.radius} << '\n';
             break;
         case NffObject::Kind::Cone:
             out << (o.coneOneLine ? "c " : "c\n");
             writeVec(out, o.base);
-            out << ' ' << o.baseRadius << (o.coneOneLine ? " " : "\n");
+            out << ' ' << Num{o.baseRadius} << (o.coneOneLine ? " " : "\n");
             writeVec(out, o.apex);
-            out << ' ' << o.apexRadius << '\n';
+            out << ' ' << Num{o.apexRadius} << '\n';
             break;
         case NffObject::Kind::Polygon:
         case NffObject::Kind::PatchPolygon: {
@@ -295,7 +306,6 @@ void writeNff(std::ostream& out, const NffDocument& doc) {
         }
     }
     writeSurfacesUpTo(int(doc.surfaces.size()) - 1);
-    out.precision(oldPrec);
 }
 
 void writeNffFile(const std::string& path, const NffDocument& doc) {

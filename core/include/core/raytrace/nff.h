@@ -70,8 +70,10 @@ struct NffDocument {
 // Parses NFF text; `name` is used in error messages. Throws SceneFileError.
 NffDocument readNff(std::istream& in, const std::string& name);
 NffDocument readNffFile(const std::string& path);
-// Writes NFF text that readNff reads back to an equal document (numbers with 17
-// significant digits). Objects without a surface get a default `f`.
+// Writes NFF text that readNff reads back to an equal document (numbers in the
+// shortest form that reads back exactly). Each `f` is written just before the first
+// object that uses it, so surface indices must not decrease along `objects` (true for
+// read and generated documents); objects before any `f` keep surface -1.
 void writeNff(std::ostream& out, const NffDocument& doc);
 void writeNffFile(const std::string& path, const NffDocument& doc); // throws SceneFileError
 
