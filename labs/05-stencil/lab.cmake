@@ -1,2 +1,2 @@
-add_lab(05-stencil lab05-stencil "stencil: shadow on a staircase, rectangular and elliptical mirrors"
+add_lab(05-stencil lab05-stencil "Stencil buffer: shadow on a staircase, rectangular and elliptical mirrors"
   SOURCES stencil_lab.cpp)

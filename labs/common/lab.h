@@ -66,6 +66,8 @@ public:
         return false;
     }
     virtual void gui() {}                 // ImGui widgets for the lab's parameters
+    // True when the panel is the whole user interface (the launcher): it fills the window.
+    virtual bool panelFillsWindow() const { return false; }
     // Headless renders call draw() until this is false (for labs that work in the background).
     virtual bool busy() const { return false; }
 };

@@ -45,8 +45,10 @@ WindowState* g = nullptr;
 // nothing of the scene hides behind it (an instructor demoing keys 1-4 needs both).
 constexpr int kPanelWidth = 380;
 
+int panelWidth() { return g->lab->panelFillsWindow() ? g->windowWidth : kPanelWidth; }
+
 void layout() {
-    int sceneWidth = g->panelVisible ? g->windowWidth - kPanelWidth : g->windowWidth;
+    int sceneWidth = g->panelVisible ? g->windowWidth - panelWidth() : g->windowWidth;
     g->view.width = sceneWidth > 1 ? sceneWidth : 1;
     g->view.height = g->windowHeight > 1 ? g->windowHeight : 1;
 }
@@ -77,8 +79,8 @@ void saveScreenshot(const std::string& path) {
 }
 
 void drawPanel() {
-    ImGui::SetNextWindowPos(ImVec2(float(g->windowWidth - kPanelWidth), 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(float(kPanelWidth), float(g->windowHeight)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(float(g->windowWidth - panelWidth()), 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(panelWidth()), float(g->windowHeight)), ImGuiCond_Always);
     ImGui::Begin(g->lab->title().c_str(), nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     ImGui::Text("frame %.2f ms (%.0f fps)", g->smoothMs, g->smoothMs > 0 ? 1000.0 / g->smoothMs : 0.0);
@@ -238,7 +240,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
     // --size is the scene's size; the panel is added beside it.
-    state.windowWidth = state.opts.width + kPanelWidth;
+    state.windowWidth = state.opts.width + (state.lab->panelFillsWindow() ? 0 : kPanelWidth);
     state.windowHeight = state.opts.height;
     glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());

@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <climits>
+#include <cstdlib>
 #include <csignal>
 #include <cstdio>
 #include <sys/stat.h>
@@ -56,6 +57,7 @@ public:
             k.push_back({std::to_string(i + 1), std::string("start ") + kLabs[i].executable});
         return k;
     }
+    bool panelFillsWindow() const override { return true; }
     void init() override {
         signal(SIGCHLD, SIG_IGN); // labs run on their own; no zombies
     }
@@ -73,7 +75,7 @@ public:
         ImGui::TextWrapped("Choose a lab; it opens in its own window.");
         for (int i = 0; i < labCount(); ++i) {
             ImGui::PushID(i);
-            if (ImGui::Button(kLabs[i].executable, ImVec2(150, 0))) start(i);
+            if (ImGui::Button(kLabs[i].executable, ImVec2(160, 0))) start(i);
             ImGui::SameLine();
             ImGui::TextWrapped("%s", kLabs[i].description);
             ImGui::PopID();
@@ -102,10 +104,12 @@ std::unique_ptr<Lab> makeLauncher() { return std::make_unique<Launcher>(); }
 
 int renderAllHeadless(const std::string& outDir, const std::string& size) {
     mkdir(outDir.c_str(), 0755);
+    char absolute[PATH_MAX] = {};
+    const std::string dir = realpath(outDir.c_str(), absolute) ? std::string(absolute) : outDir;
     int failed = 0;
     for (int i = 0; i < labCount(); ++i) {
         std::string exe = binDir() + "/" + kLabs[i].executable + "-headless";
-        std::string out = outDir + "/" + kLabs[i].executable + ".png";
+        std::string out = dir + "/" + kLabs[i].executable + ".png";
         int rc = runAndWait({exe, "--out", out, "--size", size});
         std::printf("%-16s %s  %s\n", kLabs[i].executable, rc == 0 ? "ok    " : "FAILED", out.c_str());
         if (rc != 0) ++failed;
