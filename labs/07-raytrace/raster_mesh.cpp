@@ -158,11 +158,32 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             b.grid(mat, rc->loc, rc->e1, rc->e2, rc->normal,
                    cells(pixels(glm::length(rc->e1), c, r)),
                    cells(pixels(glm::length(rc->e2), c, r)));
-        } else if (auto* st = dynamic_cast<const rt::SmoothTriangle*>(p)) {
-            b.tri(mat, st->v0, st->v1, st->v2, st->n0, st->n1, st->n2);
         } else if (auto* t = dynamic_cast<const rt::Triangle*>(p)) {
-            const dvec3 n = glm::cross(t->v1 - t->v0, t->v2 - t->v0);
-            b.flatTri(mat, t->v0, t->v1, t->v2, n);
+            // Large triangles (an NFF floor) are split n ways along each edge, so Gouraud
+            // lighting samples the point lights as densely as on rectangles.
+            auto* st = dynamic_cast<const rt::SmoothTriangle*>(p);
+            const dvec3 g = glm::cross(t->v1 - t->v0, t->v2 - t->v0);
+            const dvec3 n0 = st ? st->n0 : g, n1 = st ? st->n1 : g, n2 = st ? st->n2 : g;
+            const dvec3 c = (t->v0 + t->v1 + t->v2) / 3.0;
+            const double edge = std::max({glm::length(t->v1 - t->v0), glm::length(t->v2 - t->v0),
+                                          glm::length(t->v2 - t->v1)});
+            const int n = cells(pixels(edge, c, edge));
+            auto at = [&](int i, int j) {
+                const double a = double(i) / n, bb = double(j) / n;
+                return std::pair<dvec3, dvec3>{t->v0 + a * (t->v1 - t->v0) + bb * (t->v2 - t->v0),
+                                               (1 - a - bb) * n0 + a * n1 + bb * n2};
+            };
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; i + j < n; ++j) {
+                    const auto [p00, q00] = at(i, j);
+                    const auto [p10, q10] = at(i + 1, j);
+                    const auto [p01, q01] = at(i, j + 1);
+                    b.tri(mat, p00, p10, p01, q00, q10, q01);
+                    if (i + j + 2 <= n) {
+                        const auto [p11, q11] = at(i + 1, j + 1);
+                        b.tri(mat, p10, p11, p01, q10, q11, q01);
+                    }
+                }
         } else if (auto* bx = dynamic_cast<const rt::Box*>(p)) {
             const dvec3 e[3] = {bx->e1, bx->e2, bx->e3};
             const double r = 0.5 * glm::length(e[0] + e[1] + e[2]);

@@ -30,6 +30,7 @@ void TraceJob::start(const TraceRequest& req) {
         status_.tilesTotal =
             ((req.camera.width + ts - 1) / ts) * ((req.camera.height + ts - 1) / ts);
         status_.running = true;
+        status_.threads = req.threads > 0 ? req.threads : rt::hardwareThreads();
         ++version_;
         startTime_ = now();
     }
