@@ -155,8 +155,9 @@ TEST_CASE("lab 07: per-fragment GLSL Phong raster agrees with the phong tracer o
     // The whole image: silhouette pixels (sky on one side, sphere on the other) differ by
     // up to the full contrast, but there are few of them: mean below 1 level.
     CHECK(all.meanDiff <= 1.0);
-    // Control: the fixed-function raster lights per vertex (Gouraud), which the tracer
-    // does not; it must be measurably further away, or the test could not tell.
-    const wb::Image fixed = render("diffuse-spheres", 160, 120, "g");
-    CHECK(wb::compareImages(fixed, t).meanDiff > all.meanDiff);
+    // Control: the same measure on a raster with the wrong lighting equation (the course
+    // model's GL set-up: global ambient 1, attenuation 1/distScale) must fail the bound,
+    // or this test could not tell a broken shader from a working one.
+    const wb::Image wrong = render("diffuse-spheres", 160, 120, "gfm");
+    CHECK(wb::compareImages(wrong, t).meanDiff > 5.0);
 }
