@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <emmintrin.h>
 #include <limits>
 #include <stdexcept>
 
@@ -52,6 +53,14 @@ struct FBox {
                      dz = double(hi[2]) - lo[2];
         return 2 * (dx * dy + dy * dz + dz * dx);
     }
+};
+
+// A node of the tree as built (depth first, left child right after its parent).
+struct BuildNode {
+    glm::dvec3 lo, hi;    // box
+    std::uint32_t offset; // leaf: first index into order_; inner: right child index
+    std::uint16_t count;  // leaf: number of primitives; inner: 0
+    std::uint16_t axis;   // inner: split axis
 };
 
 // Beyond this depth the builder splits at the object median, so the tree depth stays
@@ -104,11 +113,12 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         rootCBox.extendPoint(r.centre(0), r.centre(1), r.centre(2));
         refs.push_back(r);
     }
+    std::vector<BuildNode> build;
     stats_.primitives = refs.size();
     stats_.unbounded = unbounded_.size();
     order_.reserve(refs.size());
     if (!refs.empty()) {
-        nodes_.reserve(2 * refs.size());
+        build.reserve(2 * refs.size());
         struct Task {
             std::size_t begin, end;
             std::uint32_t parent; // node whose right child this is (kNone for left/root)
@@ -126,9 +136,9 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         while (!stack.empty()) {
             const Task task = stack.back();
             stack.pop_back();
-            const auto idx = std::uint32_t(nodes_.size());
-            if (task.parent != kNone) nodes_[task.parent].offset = idx;
-            Node node;
+            const auto idx = std::uint32_t(build.size());
+            if (task.parent != kNone) build[task.parent].offset = idx;
+            BuildNode node;
             for (int a = 0; a < 3; ++a) {
                 node.lo[a] = task.box.lo[a];
                 node.hi[a] = task.box.hi[a];
@@ -206,7 +216,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 node.count = std::uint16_t(n);
                 for (std::size_t i = task.begin; i < task.end; ++i)
                     order_.push_back(prims[refs[i].prim].get());
-                nodes_.push_back(node);
+                build.push_back(node);
                 ++stats_.leaves;
                 stats_.sahCost += leafCost * task.box.area() / rootArea;
                 continue;
@@ -238,7 +248,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
             }
             node.axis = std::uint16_t(axis);
-            nodes_.push_back(node);
+            build.push_back(node);
             stats_.sahCost += options.traversalCost * task.box.area() / rootArea;
             // The children's bounds in one pass.
             Task left{task.begin, mid, kNone, task.depth + 1, {}, {}};
@@ -253,13 +263,44 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             stack.push_back(left);
         }
     }
-    stats_.nodes = int(nodes_.size());
+    // Flatten: one Node per inner build node, holding its children's boxes.
+    stats_.nodes = int(build.size());
+    if (build.size() == 1) {
+        rootLeafCount_ = build[0].count;
+    } else if (!build.empty()) {
+        std::vector<std::uint32_t> wide(build.size(), 0);
+        std::uint32_t next = 0;
+        for (std::size_t i = 0; i < build.size(); ++i)
+            if (build[i].count == 0) wide[i] = next++;
+        nodes_.resize(next);
+        for (std::size_t i = 0; i < build.size(); ++i) {
+            if (build[i].count != 0) continue;
+            Node& w = nodes_[wide[i]];
+            const std::size_t kids[2] = {i + 1, build[i].offset};
+            for (int c = 0; c < 2; ++c) {
+                const BuildNode& k = build[kids[c]];
+                for (int a = 0; a < 3; ++a) {
+                    w.lo[a][c] = k.lo[a];
+                    w.hi[a][c] = k.hi[a];
+                }
+                w.count[c] = k.count;
+                w.child[c] = k.count ? k.offset : wide[kids[c]];
+            }
+        }
+    }
+    if (!build.empty())
+        for (int a = 0; a < 3; ++a) {
+            rootLo_[a] = build[0].lo[a];
+            rootHi_[a] = build[0].hi[a];
+        }
     if (options_.floatBoxes) {
-        fboxes_.reserve(nodes_.size());
-        for (const Node& nd : nodes_)
-            fboxes_.push_back(
-                {glm::vec3(floatDown(nd.lo.x), floatDown(nd.lo.y), floatDown(nd.lo.z)),
-                 glm::vec3(floatUp(nd.hi.x), floatUp(nd.hi.y), floatUp(nd.hi.z))});
+        fnodes_.resize(nodes_.size());
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+            for (int a = 0; a < 3; ++a)
+                for (int c = 0; c < 2; ++c) {
+                    fnodes_[i].lo[a][c] = floatDown(nodes_[i].lo[a][c]);
+                    fnodes_[i].hi[a][c] = floatUp(nodes_[i].hi[a][c]);
+                }
     }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen
@@ -269,79 +310,119 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
 
 template <class Visit>
 void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) const {
-    if (nodes_.empty()) return;
+    if (stats_.primitives == 0) return;
     const glm::dvec3 o = ray.origin;
     const glm::dvec3 inv = 1.0 / ray.direction;
     const int neg[3] = {std::signbit(inv.x), std::signbit(inv.y), std::signbit(inv.z)};
-    const glm::vec3 fo(o), finv(inv);
-    const bool useFloat = options_.floatBoxes;
-    // Entry distance of node i's box, or +inf when the ray misses it within (tMin, tMax].
-    // NaN (0·inf for a ray in a slab's plane) compares false: that slab is not a limit.
-    auto enter = [&](std::uint32_t i) {
-        if (useFloat) {
-            const FloatBox& b = fboxes_[i];
-            float t0 = float(tMin), t1 = float(tMax);
-            for (int a = 0; a < 3; ++a) {
-                const float near = ((neg[a] ? b.hi[a] : b.lo[a]) - fo[a]) * finv[a];
-                const float far = ((neg[a] ? b.lo[a] : b.hi[a]) - fo[a]) * finv[a] * kFarScaleF;
-                t0 = near > t0 ? near : t0;
-                t1 = far < t1 ? far : t1;
-            }
-            return t0 <= t1 ? double(t0) : std::numeric_limits<double>::infinity();
-        }
-        const Node& b = nodes_[i];
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    // The root box (scalar). NaN (0·inf for a ray in a slab's plane) compares false:
+    // that slab is not a limit.
+    {
         double t0 = tMin, t1 = tMax;
         for (int a = 0; a < 3; ++a) {
-            const double near = ((neg[a] ? b.hi[a] : b.lo[a]) - o[a]) * inv[a];
-            const double far = ((neg[a] ? b.lo[a] : b.hi[a]) - o[a]) * inv[a] * kFarScale;
+            const double near = ((neg[a] ? rootHi_[a] : rootLo_[a]) - o[a]) * inv[a];
+            const double far = ((neg[a] ? rootLo_[a] : rootHi_[a]) - o[a]) * inv[a] * kFarScale;
             t0 = near > t0 ? near : t0;
             t1 = far < t1 ? far : t1;
         }
-        return t0 <= t1 ? t0 : std::numeric_limits<double>::infinity();
+        if (!(t0 <= t1)) return;
+    }
+    auto visitLeaf = [&](std::uint32_t first, std::uint32_t count) {
+        for (std::uint32_t i = first, e = first + count; i < e; ++i)
+            if (!visit(*order_[i], tMax)) return false;
+        return true;
     };
-    constexpr double inf = std::numeric_limits<double>::infinity();
+    if (rootLeafCount_ > 0) {
+        visitLeaf(0, rootLeafCount_);
+        return;
+    }
+    const bool useFloat = options_.floatBoxes;
+    const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
+    const __m128d ix = _mm_set1_pd(inv.x), iy = _mm_set1_pd(inv.y), iz = _mm_set1_pd(inv.z);
+    const __m128d farScale = _mm_set1_pd(kFarScale);
+    const glm::vec3 fo(o), finv(inv);
+    // Entry distances of both children of node n (inf = missed within (tMin, tMax]).
+    auto enter = [&](std::uint32_t n, double d[2]) {
+        if (useFloat) {
+            const FloatNode& b = fnodes_[n];
+            for (int c = 0; c < 2; ++c) {
+                float t0 = float(tMin), t1 = float(tMax);
+                for (int a = 0; a < 3; ++a) {
+                    const float near = ((neg[a] ? b.hi[a][c] : b.lo[a][c]) - fo[a]) * finv[a];
+                    const float far =
+                        ((neg[a] ? b.lo[a][c] : b.hi[a][c]) - fo[a]) * finv[a] * kFarScaleF;
+                    t0 = near > t0 ? near : t0;
+                    t1 = far < t1 ? far : t1;
+                }
+                d[c] = t0 <= t1 ? double(t0) : inf;
+            }
+            return;
+        }
+        const Node& b = nodes_[n];
+        // _mm_max_pd/_mm_min_pd return their second operand when the first is NaN:
+        // a NaN slab distance leaves t0/t1 unchanged, as in the scalar test.
+        __m128d t0 = _mm_set1_pd(tMin), t1 = _mm_set1_pd(tMax);
+        const __m128d nx = _mm_load_pd(neg[0] ? b.hi[0] : b.lo[0]);
+        const __m128d fx = _mm_load_pd(neg[0] ? b.lo[0] : b.hi[0]);
+        t0 = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(nx, ox), ix), t0);
+        t1 = _mm_min_pd(_mm_mul_pd(_mm_mul_pd(_mm_sub_pd(fx, ox), ix), farScale), t1);
+        const __m128d ny = _mm_load_pd(neg[1] ? b.hi[1] : b.lo[1]);
+        const __m128d fy = _mm_load_pd(neg[1] ? b.lo[1] : b.hi[1]);
+        t0 = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(ny, oy), iy), t0);
+        t1 = _mm_min_pd(_mm_mul_pd(_mm_mul_pd(_mm_sub_pd(fy, oy), iy), farScale), t1);
+        const __m128d nz = _mm_load_pd(neg[2] ? b.hi[2] : b.lo[2]);
+        const __m128d fz = _mm_load_pd(neg[2] ? b.lo[2] : b.hi[2]);
+        t0 = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(nz, oz), iz), t0);
+        t1 = _mm_min_pd(_mm_mul_pd(_mm_mul_pd(_mm_sub_pd(fz, oz), iz), farScale), t1);
+        const int hit = _mm_movemask_pd(_mm_cmple_pd(t0, t1));
+        alignas(16) double t[2];
+        _mm_store_pd(t, t0);
+        d[0] = (hit & 1) ? t[0] : inf;
+        d[1] = (hit & 2) ? t[1] : inf;
+    };
     struct Entry {
-        std::uint32_t node;
-        double t; // entry distance when pushed: skipped if a nearer hit came since
+        std::uint32_t ref;   // node index, or first primitive of a leaf
+        std::uint32_t count; // 0: node; > 0: leaf
+        double t;            // entry distance: skipped once a nearer hit is known
     };
     std::array<Entry, kMaxDepth> stack;
     int sp = 0;
-    if (enter(0) == inf) return;
-    std::uint32_t idx = 0;
+    std::uint32_t cur = 0;
     while (true) {
-        const Node& node = nodes_[idx];
-        if (node.count > 0) {
-            for (std::uint32_t i = node.offset, e = node.offset + node.count; i < e; ++i)
-                if (!visit(*order_[i], tMax)) return;
-        } else {
-            // Both children's boxes here: go to the nearer, keep the farther for later.
-            const std::uint32_t l = idx + 1, r = node.offset;
-            const double tl = enter(l), tr = enter(r);
-            if (tl != inf && tr != inf) {
-                if (tr < tl) {
-                    stack[size_t(sp++)] = {l, tl};
-                    idx = r;
-                } else {
-                    stack[size_t(sp++)] = {r, tr};
-                    idx = l;
-                }
-                continue;
+        const Node& n = nodes_[cur];
+        double d[2];
+        enter(cur, d);
+        int first = d[1] < d[0] ? 1 : 0; // nearer child first
+        bool descended = false;
+        for (int k = 0; k < 2; ++k) {
+            const int c = k == 0 ? first : 1 - first;
+            if (d[c] == inf) continue;
+            if (k == 0 && d[1 - c] != inf) {
+                // Both hit: keep the farther for later, go on with the nearer.
+                const int f = 1 - c;
+                stack[size_t(sp++)] = {n.child[f], n.count[f], d[f]};
             }
-            if (tl != inf) {
-                idx = l;
-                continue;
+            if (n.count[c] > 0) {
+                if (!visitLeaf(n.child[c], n.count[c])) return;
+            } else {
+                cur = n.child[c];
+                descended = true;
             }
-            if (tr != inf) {
-                idx = r;
-                continue;
-            }
+            break;
         }
-        // Next pushed node that is still nearer than the nearest hit so far.
-        do {
+        if (descended) continue;
+        // Next entry still nearer than the nearest hit so far; leaves are visited here.
+        while (true) {
             if (sp == 0) return;
-            --sp;
-        } while (stack[size_t(sp)].t > tMax);
-        idx = stack[size_t(sp)].node;
+            const Entry e = stack[size_t(--sp)];
+            if (e.t > tMax) continue;
+            if (e.count > 0) {
+                if (!visitLeaf(e.ref, e.count)) return;
+                continue;
+            }
+            cur = e.ref;
+            break;
+        }
     }
 }
 

@@ -49,14 +49,15 @@ class Bvh : public Aggregate {
 
     const BvhStats& stats() const { return stats_; }
 
-    struct Node {
-        glm::dvec3 lo, hi;    // box (rounded outward from the float boxes of the build)
-        std::uint32_t offset; // leaf: first index into order_; inner: right child index
-        std::uint16_t count;  // leaf: number of primitives; inner: 0
-        std::uint16_t axis;   // inner: split axis
+    // The flattened tree: each node holds the boxes of its two children side by side
+    // ([axis][child], so one SSE2 operation tests both) and how to reach them.
+    struct alignas(16) Node {
+        double lo[3][2], hi[3][2]; // children's boxes (rounded outward from the build's floats)
+        std::uint32_t child[2];    // inner child: node index; leaf child: first index into order_
+        std::uint16_t count[2];    // 0: inner child; > 0: leaf child with this many primitives
     };
-    struct FloatBox {
-        glm::vec3 lo, hi; // a node's box in float, rounded outward (floatBoxes traversal)
+    struct FloatNode {
+        float lo[3][2], hi[3][2]; // the same boxes in float, rounded outward (floatBoxes)
     };
 
   private:
@@ -65,7 +66,9 @@ class Bvh : public Aggregate {
 
     BvhOptions options_;
     std::vector<Node> nodes_;
-    std::vector<FloatBox> fboxes_;            // parallel to nodes_ when options_.floatBoxes
+    std::vector<FloatNode> fnodes_; // parallel to nodes_ when options_.floatBoxes
+    double rootLo_[3] = {0, 0, 0}, rootHi_[3] = {0, 0, 0}; // box of the whole tree
+    std::uint32_t rootLeafCount_ = 0;         // > 0: the whole tree is one leaf (no nodes_)
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     BvhStats stats_;
