@@ -1,0 +1,135 @@
+// Renders an NFF or OBJ scene to PNG on all cores with a terminal progress bar and
+// prints the time and the ray counts (the command-line front end of issue 6 until
+// lab 07's --scene flag takes over; both call the same core functions).
+//
+// Usage: rt_render SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N]
+//                  [--depth D] [--spd] [--no-bvh]
+//   --size     image size (default: the file's `v` resolution, else 512x512)
+//   --threads  worker threads (default: all cores)
+//   --depth    maximum ray depth (default 5, the SPD rule)
+//   --spd      SPD rule: eye rays through the pixel corners ((w+1)(h+1) rays)
+//   --no-bvh   the plain loop over objects
+#include "core/image.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/parallel_render.h"
+#include "core/raytrace/phong_model.h"
+#include "core/raytrace/scene_file.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace {
+
+int usage(const char* argv0) {
+    std::fprintf(stderr,
+                 "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
+                 "[--depth D] [--spd] [--no-bvh]\n",
+                 argv0);
+    return 2;
+}
+
+bool parseInt(const char* s, int lo, int hi, int& out) {
+    char* end = nullptr;
+    const long v = std::strtol(s, &end, 10);
+    if (end == s || *end != '\0' || v < lo || v > hi) return false;
+    out = int(v);
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) return usage(argv[0]);
+    std::string scenePath, out = "render.png";
+    int width = 0, height = 0, threads = 0, depth = 5;
+    bool spd = false, useBvh = true;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
+        if (a == "--out") {
+            const char* v = next();
+            if (!v) return usage(argv[0]);
+            out = v;
+        } else if (a == "--size") {
+            const char* v = next();
+            if (!v || std::sscanf(v, "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
+                width > 16384 || height > 16384) {
+                std::fprintf(stderr, "%s: --size needs WxH within 1..16384\n", argv[0]);
+                return 2;
+            }
+        } else if (a == "--threads") {
+            const char* v = next();
+            if (!v || !parseInt(v, 1, 1024, threads)) return usage(argv[0]);
+        } else if (a == "--depth") {
+            const char* v = next();
+            if (!v || !parseInt(v, 0, 64, depth)) return usage(argv[0]);
+        } else if (a == "--spd") {
+            spd = true;
+        } else if (a == "--no-bvh") {
+            useBvh = false;
+        } else if (a == "--help" || a == "-h") {
+            usage(argv[0]);
+            return 0;
+        } else if (!a.empty() && a[0] != '-' && scenePath.empty()) {
+            scenePath = a;
+        } else {
+            return usage(argv[0]);
+        }
+    }
+    if (scenePath.empty()) return usage(argv[0]);
+    try {
+        const auto t0 = std::chrono::steady_clock::now();
+        wb::rt::SceneFile sf = wb::rt::loadSceneFile(scenePath);
+        const double loadS =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::unique_ptr<wb::rt::Bvh> bvh;
+        if (useBvh) bvh = wb::rt::makeAggregate(*sf.scene);
+        sf.scene->setAggregate(bvh.get());
+        if (width == 0) {
+            width = sf.view.width;
+            height = sf.view.height;
+        }
+        const wb::rt::LookAtCamera cam = sf.camera();
+        wb::rt::PhongModel model;
+        wb::rt::ParallelRenderOptions opt;
+        opt.threads = threads;
+        opt.cornerRays = spd;
+        opt.trace.maxDepth = depth;
+        int lastPercent = -1; // redraw the bar only when the percentage changes
+        opt.progress = [&lastPercent](const wb::rt::TileProgress& p) {
+            const int percent = 100 * p.tilesDone / p.tilesTotal;
+            if (percent == lastPercent) return;
+            lastPercent = percent;
+            const int bar = 40, done = bar * p.tilesDone / p.tilesTotal;
+            std::fprintf(stderr, "\r[%.*s%*s] %3d%%", done,
+                         "########################################", bar - done, "", percent);
+            std::fflush(stderr);
+        };
+        wb::rt::ParallelRenderStats st;
+        const wb::Image img =
+            wb::rt::renderParallel(*sf.scene, cam, model, width, height, opt, &st);
+        std::fprintf(stderr, "\n");
+        std::string err;
+        if (!wb::writePng(out, img, &err)) {
+            std::fprintf(stderr, "%s: %s\n", argv[0], err.c_str());
+            return 1;
+        }
+        const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
+        std::printf("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n", scenePath.c_str(),
+                    sf.scene->primitives.size(), loadS * 1e3,
+                    bvh ? bvh->stats().buildSeconds * 1e3 : 0.0, bvh ? "" : ", plain loop");
+        std::printf("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
+                    "reflection+refraction %lld rays; %.2f M rays/s -> %s\n",
+                    width, height, depth, st.threads, st.seconds * 1e3, st.primaryRays,
+                    st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6, out.c_str());
+        if (st.nonFinitePixels)
+            std::printf("warning: %lld non-finite pixels\n", st.nonFinitePixels);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 1;
+    }
+    return 0;
+}
