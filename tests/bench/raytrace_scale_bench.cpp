@@ -188,6 +188,7 @@ struct ErrorRow {
     int maxDiff = 0;
     double meanDiff = 0;
     int series = 0; // 0 reference/other, 1 depth, 2 weight cut-off, 3 float, 4 brute force
+    long long reflection = 0, shadow = 0; // ray counts of the frame
 };
 
 // A small plot drawn with wb::Image: frame time (x) against mean error (y, with 0 on
@@ -245,6 +246,14 @@ void drawPlot(const std::vector<ErrorRow>& rows, const std::string& path) {
                 px(x + dx, y + dy, colours[r.series]);
     }
     wb::writePng(path, img);
+}
+
+// The machine's load: the bench shares its cores with whatever else runs.
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    std::string a, b, c;
+    in >> a >> b >> c;
+    return a.empty() ? "unknown" : a + " " + b + " " + c;
 }
 
 } // namespace
@@ -402,6 +411,7 @@ int main(int argc, char** argv) {
         SceneFile sf = toScene(spdBalls(quick ? 2 : 4));
         const LookAtCamera cam = sf.camera();
         PhongModel model;
+        long long lastRefl = 0, lastShadow = 0;
         auto run = [&](const TraceSettings& ts, const Aggregate* agg, wb::Image& img) {
             sf.scene->setAggregate(agg);
             ParallelRenderOptions opt;
@@ -412,6 +422,8 @@ int main(int argc, char** argv) {
                 ParallelRenderStats st;
                 img = renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &st);
                 t.push_back(st.seconds);
+                lastRefl = st.secondaryRays;
+                lastShadow = st.shadowRays;
             }
             return median(t);
         };
@@ -420,13 +432,13 @@ int main(int argc, char** argv) {
         ref.maxDepth = 5;
         ref.minWeight = 0.0;
         wb::Image refImg, img;
-        rows.push_back({"reference", run(ref, &bvhD, refImg), 0, 0.0, 0});
+        rows.push_back({"reference", run(ref, &bvhD, refImg), 0, 0.0, 0, lastRefl, lastShadow});
         wb::writePng(o.workDir + "/balls_reference.png", refImg);
         auto add = [&](const std::string& name, const TraceSettings& ts, const Aggregate* a,
                        int series) {
             const double t = run(ts, a, img);
             const wb::ImageDiff d = wb::compareImages(refImg, img);
-            rows.push_back({name, t, d.maxDiff, d.meanDiff, series});
+            rows.push_back({name, t, d.maxDiff, d.meanDiff, series, lastRefl, lastShadow});
         };
         add("float node boxes", ref, &bvhF, 3);
         for (int depth : {4, 3, 2, 1, 0}) {
@@ -457,17 +469,24 @@ int main(int argc, char** argv) {
         const wb::Image plain = renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &b);
         const wb::ImageDiff d = wb::compareImages(withBvh, plain);
         bruteRow = {"plain loop (balls 3; BVH frame " + fmt("%.0f", a.seconds * 1e3) + " ms)",
-                    b.seconds, d.maxDiff, d.meanDiff, 4};
+                    b.seconds,
+                    d.maxDiff,
+                    d.meanDiff,
+                    4,
+                    b.secondaryRays,
+                    b.shadowRays};
     }
     md << "\n## Speed against error (balls " << (quick ? 2 : 4) << ", all threads)\n\n"
        << "Reference: depth 5, no weight cut-off (every reflected ray traced), double node boxes. "
           "Error = |difference| of 8-bit channels against the reference image.\n\n"
-       << "| option | frame ms | max diff | mean diff |\n|---|---|---|---|\n";
+       << "| option | frame ms | max diff | mean diff | reflection rays | shadow rays |\n"
+       << "|---|---|---|---|---|---|\n";
+    rows.push_back(bruteRow);
     for (const auto& r : rows)
         md << "| " << r.option << " | " << fmt("%.1f", r.frameS * 1e3) << " | " << r.maxDiff
-           << " | " << fmt("%.4f", r.meanDiff) << " |\n";
-    md << "| " << bruteRow.option << " | " << fmt("%.1f", bruteRow.frameS * 1e3) << " | "
-       << bruteRow.maxDiff << " | " << fmt("%.4f", bruteRow.meanDiff) << " |\n";
+           << " | " << fmt("%.4f", r.meanDiff) << " | " << withCommas(r.reflection) << " | "
+           << withCommas(r.shadow) << " |\n";
+    rows.pop_back(); // the plot shows balls 4 only
     drawPlot(rows, o.outDir + "/raytrace.png");
     md << "\n![frame time (x, 0 at the left axis) against mean error (y, 0 at the bottom axis); "
           "black: reference, red: depth limits 4..0 (joined), blue: weight cut-offs (joined), "
@@ -479,6 +498,7 @@ int main(int argc, char** argv) {
 #ifdef WB_EMBREE
     md << embreeSection(o.size, quick ? 1 : 3, meshPath);
 #endif
+    md << "\nLoad average at the end (1, 5, 15 min): " << loadAverage() << ".\n";
     const std::string mdPath = o.outDir + "/raytrace.md";
     std::ofstream(mdPath) << md.str();
     std::fputs(md.str().c_str(), stdout);
