@@ -322,6 +322,11 @@ class RaytraceLab : public Lab {
     GLuint program_ = 0;
     std::string programError_;
     double rasterMs_ = 0, rasterMsSmooth_ = 0;
+    Image rasterCache_; // the last raster frame, shown under the trace's tiles
+    ViewCamera rasterCacheCamera_;
+    bool rasterCacheGlsl_ = false;
+    ModelKind rasterCacheModel_ = ModelKind::Phong;
+    uint64_t rasterCacheScene_ = 0;
 
     // Trace.
     TraceJob job_;
@@ -572,11 +577,31 @@ void RaytraceLab::draw(const View& view) {
     }
     resolvePendingInspect(view);
 
-    const auto t0 = std::chrono::steady_clock::now();
-    drawRaster(view, cam);
-    glFinish(); // the raster time includes the GPU's (here: Mesa's) work
-    rasterMs_ = secondsSince(t0) * 1000.0;
-    rasterMsSmooth_ = rasterMsSmooth_ == 0 ? rasterMs_ : 0.9 * rasterMsSmooth_ + 0.1 * rasterMs_;
+    // While the traced view is shown, the raster picture under the untraced tiles does not
+    // change until the camera or the lighting does: it is kept as an image instead of
+    // being drawn again every frame (on a CPU rasterizer that would compete with the
+    // tracer's threads). In `g` it is drawn and timed every frame.
+    const bool cached = s.traced && !view.headless && !rasterCache_.empty() &&
+                        rasterCacheCamera_ == cam && rasterCacheGlsl_ == s.glsl &&
+                        rasterCacheModel_ == s.model && rasterCacheScene_ == sceneGeneration_;
+    if (cached) {
+        drawImage(rasterCache_, rasterCache_.width, rasterCache_.height, false);
+    } else {
+        const auto t0 = std::chrono::steady_clock::now();
+        drawRaster(view, cam);
+        glFinish(); // the raster time includes the GPU's (here: Mesa's) work
+        rasterMs_ = secondsSince(t0) * 1000.0;
+        rasterMsSmooth_ =
+            rasterMsSmooth_ == 0 ? rasterMs_ : 0.9 * rasterMsSmooth_ + 0.1 * rasterMs_;
+        rasterCache_ = Image();
+        if (s.traced && !view.headless) {
+            rasterCache_ = readFramebuffer(view.width, view.height);
+            rasterCacheCamera_ = cam;
+            rasterCacheGlsl_ = s.glsl;
+            rasterCacheModel_ = s.model;
+            rasterCacheScene_ = sceneGeneration_;
+        }
+    }
 
     if (s.traced && !experiment_.active) {
         const ViewCamera tc = traceCamera(view);

@@ -161,3 +161,26 @@ TEST_CASE("lab 07: per-fragment GLSL Phong raster agrees with the phong tracer o
     const wb::Image wrong = render("diffuse-spheres", 160, 120, "gfm");
     CHECK(wb::compareImages(wrong, t).meanDiff > 5.0);
 }
+
+TEST_CASE("lab 07 options: --scene, --threads, --depth, --model, --inspect reject bad values",
+          "[gl]") {
+    auto lab = wb::makeRaytraceLab();
+    std::string err;
+    CHECK_FALSE(lab->setOption("scene", "no-such-scene", err));
+    CHECK(err.find("no-such-scene") != std::string::npos);
+    CHECK_FALSE(lab->setOption("scene", "balls:9", err));
+    CHECK_FALSE(lab->setOption("scene", "/nonexistent/x.nff", err));
+    CHECK(err.find("x.nff") != std::string::npos); // the reader names the file
+    CHECK_FALSE(lab->setOption("depth", "21", err));
+    CHECK_FALSE(lab->setOption("depth", "3x", err));
+    CHECK_FALSE(lab->setOption("threads", "-1", err));
+    CHECK_FALSE(lab->setOption("model", "gouraud", err));
+    CHECK_FALSE(lab->setOption("inspect", "3", err));
+    CHECK(lab->setOption("scene", "jacks:2", err));
+    CHECK(lab->setOption("depth", "0", err));
+    CHECK(lab->setOption("threads", "1", err));
+    CHECK(lab->setOption("model", "course", err));
+    CHECK(wb::raytraceState(*lab).maxDepth == 0);
+    CHECK(wb::raytraceState(*lab).threads == 1);
+    CHECK(wb::raytraceState(*lab).sceneName == "jacks:2");
+}
