@@ -249,7 +249,8 @@ class RaytraceLab : public Lab {
 
   private:
     bool loadScene(const std::string& name, std::string& err) {
-        job_.cancel(); // the worker reads the scene: stop it before replacing it
+        job_.cancel();         // the worker reads the scene: stop it before replacing it
+        traceStarted_ = false; // (re)trace whatever is shown next
         LabScene next;
         if (!loadLabScene(name, next, err)) return false;
         scene_ = std::move(next);
@@ -310,6 +311,8 @@ class RaytraceLab : public Lab {
 
     LabScene scene_;
     uint64_t sceneGeneration_ = 0;
+    char fileBuffer_[512] = {}; // the panel's scene file path
+    std::string fileError_;
     bool bvhAvailable_ = false;
     std::string modelOption_;
 
@@ -787,6 +790,13 @@ void RaytraceLab::gui() {
             }
         ImGui::EndCombo();
     }
+    ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
+    ImGui::SameLine();
+    if (ImGui::Button("load .nff/.obj")) {
+        std::string err;
+        fileError_ = loadScene(fileBuffer_, err) ? "" : err;
+    }
+    if (!fileError_.empty()) ImGui::TextWrapped("%s", fileError_.c_str());
     ImGui::Text("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
                 meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
     int mode = s.traced ? 1 : 0;
