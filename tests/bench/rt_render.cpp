@@ -6,8 +6,9 @@
 //                  [--depth D] [--spd] [--no-bvh]
 //   --size     image size (default: the file's `v` resolution, else 512x512)
 //   --threads  worker threads (default: all cores)
-//   --depth    maximum ray depth (default 5, the SPD rule)
-//   --spd      SPD rule: eye rays through the pixel corners ((w+1)(h+1) rays)
+//   --depth    reflections/refractions per eye ray (default 5; with --spd 4, which is
+//              the SPD's "depth 5" counting the eye ray as level 1)
+//   --spd      SPD rules: eye rays through the pixel corners ((w+1)(h+1) rays), depth 4
 //   --no-bvh   the plain loop over objects
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
@@ -44,7 +45,7 @@ bool parseInt(const char* s, int lo, int hi, int& out) {
 int main(int argc, char** argv) {
     if (argc < 2) return usage(argv[0]);
     std::string scenePath, out = "render.png";
-    int width = 0, height = 0, threads = 0, depth = 5;
+    int width = 0, height = 0, threads = 0, depth = -1;
     bool spd = false, useBvh = true;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -80,6 +81,8 @@ int main(int argc, char** argv) {
         }
     }
     if (scenePath.empty()) return usage(argv[0]);
+    // SPD's "maximum depth 5" counts the eye ray as level 1: 4 reflections.
+    if (depth < 0) depth = spd ? 4 : 5;
     try {
         const auto t0 = std::chrono::steady_clock::now();
         wb::rt::SceneFile sf = wb::rt::loadSceneFile(scenePath);

@@ -76,7 +76,7 @@ class Bvh : public Aggregate {
 
 // Below this many primitives the plain loop over objects is at least as fast as the
 // BVH (measured by bench_raytrace_scale on this machine; see docs/raytrace-scale.md).
-constexpr std::size_t kBvhCrossover = 8;
+constexpr std::size_t kBvhCrossover = 2;
 
 // The aggregate a scene should use: a Bvh when it has at least `crossover`
 // primitives, nullptr (the scene's own brute-force loop) otherwise. Install it with
