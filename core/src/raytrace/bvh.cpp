@@ -29,7 +29,8 @@ float floatUp(double x) {
 struct Ref {
     float lo[3], hi[3];
     std::uint32_t prim;
-    float centre(int a) const { return 0.5f * (lo[a] + hi[a]); }
+    // Halves first: lo + hi overflows to inf for boxes near float's range.
+    float centre(int a) const { return 0.5f * lo[a] + 0.5f * hi[a]; }
 };
 
 struct FBox {
@@ -62,6 +63,15 @@ struct BuildNode {
     std::uint16_t count;  // leaf: number of primitives; inner: 0
     std::uint16_t axis;   // inner: split axis
 };
+
+// Bin of a centroid: clamped in float before the conversion (a huge or NaN product
+// converted to int is undefined behaviour; found by fuzz_nff).
+inline int binOf(float centre, float lo, float scale, int nb) {
+    float f = (centre - lo) * scale;
+    if (!(f >= 0)) f = 0;
+    if (f > float(nb - 1)) f = float(nb - 1);
+    return int(f);
+}
 
 // Beyond this depth the builder splits at the object median, so the tree depth stays
 // below kMaxDepth = kMedianDepth + log2(any input size) + slack.
@@ -170,7 +180,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 for (std::size_t i = task.begin; i < task.end; ++i) {
                     const Ref& r = refs[i];
                     for (int a = 0; a < 3; ++a) {
-                        const int b = std::min(nb - 1, int((r.centre(a) - clo[a]) * scale[a]));
+                        const int b = binOf(r.centre(a), clo[a], scale[a], nb);
                         binBox[size_t(a * nb + b)].extend(r.lo, r.hi);
                         ++binCount[size_t(a * nb + b)];
                     }
@@ -226,11 +236,11 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             if (canSah) {
                 axis = bestAxis;
                 const float lo = clo[axis], sc = scale[axis];
-                auto it = std::partition(
-                    refs.begin() + std::ptrdiff_t(task.begin),
-                    refs.begin() + std::ptrdiff_t(task.end), [&](const Ref& r) {
-                        return std::min(nb - 1, int((r.centre(axis) - lo) * sc)) < bestBin;
-                    });
+                auto it =
+                    std::partition(refs.begin() + std::ptrdiff_t(task.begin),
+                                   refs.begin() + std::ptrdiff_t(task.end), [&](const Ref& r) {
+                                       return binOf(r.centre(axis), lo, sc, nb) < bestBin;
+                                   });
                 mid = std::size_t(it - refs.begin());
             } else {
                 // Object median on the widest centroid axis (deep trees, coincident centroids).

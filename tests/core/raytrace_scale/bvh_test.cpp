@@ -172,3 +172,33 @@ TEST_CASE("rt_bvh: axis-parallel rays along box faces (0·inf in the slab test)"
             if (fb) CHECK(hb.t == hv.t);
         }
 }
+
+TEST_CASE("rt_bvh: boxes near float's range build and are found (fuzz_nff crasher)",
+          "[raytrace][bvh]") {
+    // lo + hi of these boxes overflows float; the bin index of such a centroid was an
+    // int conversion of inf (undefined behaviour, an out-of-range bin). Kept from fuzz_nff.
+    Scene s;
+    s.add(Sphere({0, 0, 0}, 1), 0);
+    s.add(Sphere({3.3e38, 0, 0}, 1e30), 0);
+    s.add(Sphere({-3.3e38, 1, 0}, 1e30), 0);
+    s.add(Sphere({0, 3.39e38, -3.39e38}, 1e37), 0);
+    for (int i = 0; i < 20; ++i)
+        s.add(Sphere({i * 3.0, 5, 0}, 1), 0);
+    Bvh bvh(s.primitives);
+    BruteForce brute(s.primitives);
+    for (int i = 0; i < 20; ++i) {
+        Ray ray;
+        ray.origin = {i * 3.0, 5, 10};
+        ray.direction = {0, 0, -1};
+        Hit hb, hv;
+        REQUIRE(brute.intersect(ray, 0, 1e300, hb));
+        REQUIRE(bvh.intersect(ray, 0, 1e300, hv));
+        CHECK(hb.primitive == hv.primitive);
+    }
+    Ray far;
+    far.origin = {3.3e38, 0, 1e35};
+    far.direction = {0, 0, -1};
+    Hit h;
+    CHECK(bvh.intersect(far, 0, 1e300, h));
+    CHECK(h.primitive == s.primitives[1].get());
+}
