@@ -75,7 +75,8 @@ class Bvh : public Aggregate {
 };
 
 // Below this many primitives the plain loop over objects is at least as fast as the
-// BVH (measured by bench_raytrace_scale on this machine; see docs/raytrace-scale.md).
+// BVH: raytrace_scale_bench measured the BVH as fast at 1 and faster from 2 on
+// (docs/bench/raytrace.md).
 constexpr std::size_t kBvhCrossover = 2;
 
 // The aggregate a scene should use: a Bvh when it has at least `crossover`
