@@ -71,8 +71,13 @@ void checkNumbers(const std::string& path) {
 
 SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     {
-        std::ifstream probe(path);
+        std::ifstream probe(path, std::ios::binary | std::ios::ate);
         if (!probe) throw SceneFileError(path + ":0: cannot open the file");
+        // tinyobjloader holds the whole file and its arrays in memory: cap the input so
+        // an enormous file is an error, not an out-of-memory.
+        if (probe.tellg() > std::streamoff(kObjMaxBytes))
+            throw SceneFileError(path + ":0: file larger than " +
+                                 std::to_string(kObjMaxBytes >> 20) + " MB");
     }
     checkNumbers(path);
     tinyobj::ObjReaderConfig config;

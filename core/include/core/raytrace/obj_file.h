@@ -12,6 +12,9 @@
 
 namespace wb::rt {
 
+// Largest .obj accepted (about 5 million triangles; tinyobjloader keeps it all in memory).
+constexpr std::size_t kObjMaxBytes = std::size_t(256) << 20;
+
 struct ObjLoadReport {
     std::vector<std::string> warnings; // repairs made (missing .mtl, degenerate faces dropped)
     std::size_t triangles = 0;         // after fan triangulation
