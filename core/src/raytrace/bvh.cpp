@@ -7,6 +7,7 @@
 #include <emmintrin.h>
 #include <limits>
 #include <stdexcept>
+#include <xmmintrin.h>
 
 namespace wb::rt {
 
@@ -310,6 +311,8 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 for (int c = 0; c < 2; ++c) {
                     fnodes_[i].lo[a][c] = floatDown(nodes_[i].lo[a][c]);
                     fnodes_[i].hi[a][c] = floatUp(nodes_[i].hi[a][c]);
+                    fnodes_[i].child[c] = nodes_[i].child[c];
+                    fnodes_[i].count[c] = nodes_[i].count[c];
                 }
     }
     if (stats_.maxDepth >= kMaxDepth)
@@ -350,28 +353,58 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
     const __m128d ox = _mm_set1_pd(o.x), oy = _mm_set1_pd(o.y), oz = _mm_set1_pd(o.z);
     const __m128d ix = _mm_set1_pd(inv.x), iy = _mm_set1_pd(inv.y), iz = _mm_set1_pd(inv.z);
     const __m128d farScale = _mm_set1_pd(kFarScale);
+    // Float path: the origin rounded to float is off by up to |o|·2^-24 per axis, so
+    // every box is widened by |o|max·2^-22; the slab distances carry 3 roundings
+    // (covered by kFarScaleF). Boxes are already rounded outward.
     const glm::vec3 fo(o), finv(inv);
+    const float eps =
+        float(std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)))) * 0x1p-22f;
+    const __m128 fox = _mm_set1_ps(fo.x), foy = _mm_set1_ps(fo.y), foz = _mm_set1_ps(fo.z);
+    const __m128 fix = _mm_set1_ps(finv.x), fiy = _mm_set1_ps(finv.y), fiz = _mm_set1_ps(finv.z);
+    const __m128 epsV = _mm_set1_ps(eps), farScaleF = _mm_set1_ps(kFarScaleF);
+    // The current nearest hit, widened so a box entered exactly there (a flat box, a
+    // primitive touching its box) is not lost to the rounding of its entry distance.
+    auto limit = [&]() { return tMax * kFarScale; };
     // Entry distances of both children of node n (inf = missed within (tMin, tMax]).
     auto enter = [&](std::uint32_t n, double d[2]) {
         if (useFloat) {
             const FloatNode& b = fnodes_[n];
-            for (int c = 0; c < 2; ++c) {
-                float t0 = float(tMin), t1 = float(tMax);
-                for (int a = 0; a < 3; ++a) {
-                    const float near = ((neg[a] ? b.hi[a][c] : b.lo[a][c]) - fo[a]) * finv[a];
-                    const float far =
-                        ((neg[a] ? b.lo[a][c] : b.hi[a][c]) - fo[a]) * finv[a] * kFarScaleF;
-                    t0 = near > t0 ? near : t0;
-                    t1 = far < t1 ? far : t1;
-                }
-                d[c] = t0 <= t1 ? double(t0) : inf;
-            }
+            auto pair = [](const float* p) {
+                return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
+            };
+            const double lim = limit();
+            __m128 t0 = _mm_set1_ps(float(tMin) - std::abs(float(tMin)) * 0x1p-20f);
+            __m128 t1 = _mm_set1_ps(lim > 3e38 ? std::numeric_limits<float>::infinity()
+                                               : float(lim) * (1 + 0x1p-20f));
+            const __m128 nx = _mm_sub_ps(pair(neg[0] ? b.hi[0] : b.lo[0]),
+                                         neg[0] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            const __m128 fx = _mm_add_ps(pair(neg[0] ? b.lo[0] : b.hi[0]),
+                                         neg[0] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nx, fox), fix), t0);
+            t1 = _mm_min_ps(_mm_mul_ps(_mm_mul_ps(_mm_sub_ps(fx, fox), fix), farScaleF), t1);
+            const __m128 ny = _mm_sub_ps(pair(neg[1] ? b.hi[1] : b.lo[1]),
+                                         neg[1] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            const __m128 fy = _mm_add_ps(pair(neg[1] ? b.lo[1] : b.hi[1]),
+                                         neg[1] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(ny, foy), fiy), t0);
+            t1 = _mm_min_ps(_mm_mul_ps(_mm_mul_ps(_mm_sub_ps(fy, foy), fiy), farScaleF), t1);
+            const __m128 nz = _mm_sub_ps(pair(neg[2] ? b.hi[2] : b.lo[2]),
+                                         neg[2] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            const __m128 fz = _mm_add_ps(pair(neg[2] ? b.lo[2] : b.hi[2]),
+                                         neg[2] ? _mm_sub_ps(_mm_setzero_ps(), epsV) : epsV);
+            t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nz, foz), fiz), t0);
+            t1 = _mm_min_ps(_mm_mul_ps(_mm_mul_ps(_mm_sub_ps(fz, foz), fiz), farScaleF), t1);
+            const int hit = _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+            alignas(16) float t[4];
+            _mm_store_ps(t, t0);
+            d[0] = (hit & 1) ? double(t[0]) : inf;
+            d[1] = (hit & 2) ? double(t[1]) : inf;
             return;
         }
         const Node& b = nodes_[n];
         // _mm_max_pd/_mm_min_pd return their second operand when the first is NaN:
         // a NaN slab distance leaves t0/t1 unchanged, as in the scalar test.
-        __m128d t0 = _mm_set1_pd(tMin), t1 = _mm_set1_pd(tMax);
+        __m128d t0 = _mm_set1_pd(tMin), t1 = _mm_set1_pd(limit());
         const __m128d nx = _mm_load_pd(neg[0] ? b.hi[0] : b.lo[0]);
         const __m128d fx = _mm_load_pd(neg[0] ? b.lo[0] : b.hi[0]);
         t0 = _mm_max_pd(_mm_mul_pd(_mm_sub_pd(nx, ox), ix), t0);
@@ -399,7 +432,8 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
     int sp = 0;
     std::uint32_t cur = 0;
     while (true) {
-        const Node& n = nodes_[cur];
+        const std::uint32_t* kids = useFloat ? fnodes_[cur].child : nodes_[cur].child;
+        const std::uint16_t* counts = useFloat ? fnodes_[cur].count : nodes_[cur].count;
         double d[2];
         enter(cur, d);
         int first = d[1] < d[0] ? 1 : 0; // nearer child first
@@ -410,12 +444,12 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
             if (k == 0 && d[1 - c] != inf) {
                 // Both hit: keep the farther for later, go on with the nearer.
                 const int f = 1 - c;
-                stack[size_t(sp++)] = {n.child[f], n.count[f], d[f]};
+                stack[size_t(sp++)] = {kids[f], counts[f], d[f]};
             }
-            if (n.count[c] > 0) {
-                if (!visitLeaf(n.child[c], n.count[c])) return;
+            if (counts[c] > 0) {
+                if (!visitLeaf(kids[c], counts[c])) return;
             } else {
-                cur = n.child[c];
+                cur = kids[c];
                 descended = true;
             }
             break;
@@ -425,7 +459,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
         while (true) {
             if (sp == 0) return;
             const Entry e = stack[size_t(--sp)];
-            if (e.t > tMax) continue;
+            if (e.t > limit()) continue;
             if (e.count > 0) {
                 if (!visitLeaf(e.ref, e.count)) return;
                 continue;
