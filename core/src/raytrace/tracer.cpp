@@ -40,7 +40,7 @@ double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, do
     return k;
 }
 
-static double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
+double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
     // How far along `dir` the point is as far from the surface as the RTG offset along
     // the normal would put it. The cosine is floored at 1e-3 so that a light at grazing
     // incidence (whose diffuse term is ~0 anyway) cannot push the start past blockers.
@@ -79,18 +79,31 @@ std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
     return out;
 }
 
-Color Tracer::trace(const Ray& ray) const {
+template <bool kObserve>
+Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const {
     if (ray.depth == 0)
         ++primaryRays;
     else
         ++secondaryRays;
+    if constexpr (kObserve) observer->rayBegin(ray, kind);
     Hit hit;
-    if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit))
-        return model_.background(scene_);
+    if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+        const Color bg = model_.background(scene_);
+        if constexpr (kObserve) {
+            observer->missed(bg);
+            observer->rayEnd(bg);
+        }
+        return bg;
+    }
     const Material& m = scene_.materials[size_t(hit.material)];
     const glm::dvec3 surface =
         (m.texture && hit.hasUv) ? sampleTexture(*m.texture, hit.uv) : m.colour;
-    Color c = model_.direct(scene_, ray, hit, m, surface, sampleLights(hit));
+    Color c;
+    { // the samples are freed before the recursion, as when they were a temporary
+        const std::vector<LightSample> samples = sampleLights(hit);
+        c = model_.direct(scene_, ray, hit, m, surface, samples);
+        if constexpr (kObserve) observer->hit(ray, hit, m, surface, samples, c);
+    }
 
     if (ray.depth < settings_.maxDepth) {
         // Reflected ray: same side, same medium.
@@ -101,7 +114,11 @@ Color Tracer::trace(const Ray& ray) const {
             r.weight = ray.weight * m.kr;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
-            c = model_.addScaled(c, trace(r), m.kr);
+            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer);
+            if constexpr (kObserve) observer->childResult(RayKind::Reflected, rc, m.kr);
+            c = model_.addScaled(c, rc, m.kr);
+        } else if (kObserve && m.kr > 0) {
+            observer->childSkipped(RayKind::Reflected, SkipReason::BelowWeight);
         }
         // Transmitted ray: through a thin (open) surface unchanged, into or out of a
         // body by formula (7) with the ratio of the indices on both sides.
@@ -126,13 +143,36 @@ Color Tracer::trace(const Ray& ray) const {
                 t.weight = ray.weight * m.kt;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                c = model_.addScaled(c, trace(t), m.kt);
+                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer);
+                if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
+                c = model_.addScaled(c, tc, m.kt);
+            } else if (kObserve) {
+                observer->childSkipped(RayKind::Refracted, SkipReason::TotalInternalReflection);
             }
+        } else if (kObserve && m.kt > 0) {
+            observer->childSkipped(RayKind::Refracted, SkipReason::BelowWeight);
         }
+    } else if (kObserve) {
+        if (m.kr > 0) observer->childSkipped(RayKind::Reflected, SkipReason::DepthLimit);
+        if (m.kt > 0) observer->childSkipped(RayKind::Refracted, SkipReason::DepthLimit);
     }
     // Attenuation along this ray's path in its medium (seed 000: in trace, after shading).
-    if (ray.medium.atten > 0) c = model_.scale(c, std::exp(-ray.medium.atten * hit.t));
+    if (ray.medium.atten > 0) {
+        const double factor = std::exp(-ray.medium.atten * hit.t);
+        if constexpr (kObserve) observer->attenuated(factor);
+        c = model_.scale(c, factor);
+    }
+    if constexpr (kObserve) observer->rayEnd(c);
     return c;
+}
+
+Color Tracer::trace(const Ray& ray) const {
+    return traceRay<false>(ray, RayKind::Primary, nullptr);
+}
+
+Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {
+    if (!observer) return trace(ray);
+    return traceRay<true>(ray, RayKind::Primary, observer);
 }
 
 } // namespace wb::rt

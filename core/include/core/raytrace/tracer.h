@@ -27,6 +27,44 @@ glm::dvec3 reflectDir(const glm::dvec3& e, const glm::dvec3& n);
 // against v (v·n <= 0), η = n_from/n_to. Empty on total internal reflection.
 std::optional<glm::dvec3> refractDir(const glm::dvec3& v, const glm::dvec3& n, double eta);
 
+// How far along a shadow feeler from surface point p (unit normal n, unit direction dir)
+// the feeler starts: where it is as far off the surface as offsetRayOrigin puts a
+// reflected ray's origin. The cosine is floored at 1e-3 so that a light at grazing
+// incidence cannot push the start past blockers. Public so that a tool listing a
+// feeler's blockers (lab 07's inspector) uses the tracer's own segment.
+double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir);
+
+// Which ray of the recursion an observer event is about.
+enum class RayKind { Primary, Reflected, Refracted };
+// Why a reflected or transmitted child ray was not traced.
+enum class SkipReason { DepthLimit, BelowWeight, TotalInternalReflection };
+
+// Sees the recursion of Tracer::trace(ray, observer) as it happens, so a tool (lab 07's
+// ray inspector) can build the ray tree without a second copy of the rules. Events of
+// one ray, in order: rayBegin; then missed, or hit followed per child (reflected first,
+// then transmitted) by either childSkipped or the child's own events and childResult;
+// attenuated when the ray's medium attenuates; rayEnd. Every method is a no-op.
+struct TraceObserver {
+    virtual ~TraceObserver() = default;
+    // `kind` is Primary for the ray given to trace, whatever its depth.
+    virtual void rayBegin(const Ray& /*ray*/, RayKind /*kind*/) {}
+    // The ray hits nothing: it carries the background.
+    virtual void missed(const Color& /*background*/) {}
+    // The nearest hit, its material, the surface colour (texel or material colour), the
+    // light samples the model was given and the model's direct colour.
+    virtual void hit(const Ray& /*ray*/, const Hit& /*hit*/, const Material& /*material*/,
+                     const glm::dvec3& /*surface*/, const std::vector<LightSample>& /*lights*/,
+                     const Color& /*direct*/) {}
+    // A child ray with k > 0 is not traced. DepthLimit is reported for each such child.
+    virtual void childSkipped(RayKind /*child*/, SkipReason /*why*/) {}
+    // The colour a traced child carried back (after its rayEnd), before it is × k.
+    virtual void childResult(RayKind /*child*/, const Color& /*colour*/, double /*k*/) {}
+    // The ray's colour is × factor = exp(−atten·t) for the medium it travelled in.
+    virtual void attenuated(double /*factor*/) {}
+    // What the ray carries back (also after missed).
+    virtual void rayEnd(const Color& /*colour*/) {}
+};
+
 class Tracer {
   public:
     Tracer(const Scene& scene, const ShadingModel& model, TraceSettings settings = {})
@@ -37,6 +75,8 @@ class Tracer {
 
     // Colour carried back along `ray`, in the model's units.
     Color trace(const Ray& ray) const;
+    // The same colour, reporting the recursion to `observer` (may be null).
+    Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
     std::vector<LightSample> sampleLights(const Hit& hit) const;
     // Π kt of the blockers met by origin + t·dir for tMin < t <= dist (dist may be inf).
@@ -47,6 +87,11 @@ class Tracer {
     mutable std::atomic<long long> primaryRays{0}, secondaryRays{0}, shadowRays{0};
 
   private:
+    // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
+    // kObserve = false compiles every event away: trace(ray) costs what it did before.
+    template <bool kObserve>
+    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const;
+
     const Scene& scene_;
     const ShadingModel& model_;
     TraceSettings settings_;
