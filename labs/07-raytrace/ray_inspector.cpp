@@ -10,13 +10,10 @@
 #include "core/raytrace/rectangle.h"
 #include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
-#include "core/raytrace/texture.h"
 #include "core/raytrace/triangle.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <limits>
 #include <unordered_map>
 
 namespace wb {
@@ -45,14 +42,23 @@ std::string primitiveKind(const rt::Primitive& p) {
 
 namespace {
 
-struct Inspector {
+// Builds the tree from the tracer's own recursion (Tracer::trace with an observer):
+// one node per rayBegin, filled by the events of that ray.
+struct Inspector : rt::TraceObserver {
     const rt::Scene& scene;
     ModelKind kind;
-    rt::TraceSettings settings;
     rt::CourseModel course;
     rt::PhongModel phong;
     std::unordered_map<const rt::Primitive*, int> index;
     RayTree tree;
+    std::vector<int> open; // nodes whose rays are being traced, innermost last
+    int lastEnded = -1;    // the node whose ray ended last: the child of a childResult
+
+    Inspector(const rt::Scene& s, ModelKind k) : scene(s), kind(k) {
+        for (size_t i = 0; i < s.primitives.size(); ++i)
+            index[s.primitives[i].get()] = int(i);
+        tree.model = k;
+    }
 
     const rt::ShadingModel& model() const {
         return kind == ModelKind::Course ? static_cast<const rt::ShadingModel&>(course) : phong;
@@ -63,18 +69,11 @@ struct Inspector {
         return it == index.end() ? -1 : it->second;
     }
 
-    // The tracer's feeler start (tracer.cpp, feelerStart): as far along the feeler as the
-    // normal offset of reflected rays puts an origin off the surface.
-    static double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
-        const double eps = glm::length(rt::offsetRayOrigin(p, n) - p);
-        return eps / std::max(glm::dot(dir, n), 1e-3);
-    }
+    RayNode& current() { return tree.nodes[size_t(open.back())]; }
 
     void shade(RayNode& node, const rt::Ray& ray, const rt::Hit& hit, const rt::Material& m,
                const glm::dvec3& surface, const std::vector<rt::LightSample>& samples) {
-        const rt::ShadingModel& mod = model();
-        node.direct = mod.direct(scene, ray, hit, m, surface, samples);
-        node.ambient = mod.direct(scene, ray, hit, m, surface, {});
+        node.ambient = model().direct(scene, ray, hit, m, surface, {});
         for (size_t i = 0; i < samples.size(); ++i) {
             FeelerRecord f;
             const rt::LightSample& s = samples[i];
@@ -84,10 +83,12 @@ struct Inspector {
             f.facing = glm::dot(s.toLight, hit.normal) > 0;
             f.transmittance = s.transmittance;
             if (f.facing) {
+                // Every blocker on the tracer's own feeler segment (Tracer::transmittance
+                // stops at the first opaque one; the inspector lists them all).
                 rt::Ray feeler;
                 feeler.origin = hit.point;
                 feeler.direction = s.toLight;
-                const double t0 = feelerStart(hit.point, hit.normal, s.toLight);
+                const double t0 = rt::feelerStart(hit.point, hit.normal, s.toLight);
                 if (t0 < s.distance)
                     scene.aggregate().forEachHit(feeler, t0, s.distance, [&](const rt::Hit& h) {
                         FeelerRecord::Blocker b;
@@ -133,105 +134,73 @@ struct Inspector {
         }
     }
 
-    int trace(const rt::Ray& ray, const std::string& what, int parent) {
-        const rt::Tracer tracer(scene, model(), settings);
-        const int id = int(tree.nodes.size());
-        tree.nodes.emplace_back();
-        {
-            RayNode& n = tree.nodes.back();
-            n.kind = what;
-            n.parent = parent;
-            n.ray = ray;
+    void rayBegin(const rt::Ray& ray, rt::RayKind what) override {
+        RayNode n;
+        n.kind = what == rt::RayKind::Primary     ? "primary"
+                 : what == rt::RayKind::Reflected ? "reflected"
+                                                  : "refracted";
+        n.parent = open.empty() ? -1 : open.back();
+        n.ray = ray;
+        open.push_back(int(tree.nodes.size()));
+        tree.nodes.push_back(std::move(n));
+    }
+
+    void hit(const rt::Ray& ray, const rt::Hit& hit, const rt::Material& m,
+             const glm::dvec3& surface, const std::vector<rt::LightSample>& samples,
+             const rt::Color& direct) override {
+        RayNode& n = current();
+        n.hit = true;
+        n.primitive = indexOf(hit.primitive);
+        n.primitiveKind = hit.primitive ? primitiveKind(*hit.primitive) : "?";
+        n.material = hit.material;
+        n.t = hit.t;
+        n.point = hit.point;
+        n.outwardNormal = hit.outwardNormal;
+        n.normal = hit.normal;
+        n.cosVN = hit.cosVN;
+        n.entering = hit.entering;
+        n.solid = hit.solid;
+        n.uv = hit.uv;
+        n.kr = m.kr;
+        n.kt = m.kt;
+        n.direct = direct;
+        shade(n, ray, hit, m, surface, samples);
+    }
+
+    void childSkipped(rt::RayKind child, rt::SkipReason why) override {
+        std::string& note = current().childNote;
+        switch (why) {
+        case rt::SkipReason::DepthLimit:
+            // Told once per child; one note for both.
+            if (note.find("depth limit") == std::string::npos) note += "depth limit reached; ";
+            break;
+        case rt::SkipReason::BelowWeight:
+            note += child == rt::RayKind::Reflected ? "reflected ray below the weight cut-off; "
+                                                    : "transmitted ray below the weight cut-off; ";
+            break;
+        case rt::SkipReason::TotalInternalReflection:
+            note += "total internal reflection (no transmitted ray); ";
+            break;
         }
-        rt::Hit hit;
-        if (!scene.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
-            tree.nodes[size_t(id)].colour = model().background(scene);
-            return id;
+    }
+
+    void childResult(rt::RayKind child, const rt::Color& colour, double) override {
+        RayNode& n = current();
+        if (child == rt::RayKind::Reflected) {
+            n.reflected = lastEnded;
+            n.reflectedColour = colour;
+        } else {
+            n.refracted = lastEnded;
+            n.refractedColour = colour;
         }
-        const rt::Material& m = scene.materials[size_t(hit.material)];
-        const glm::dvec3 surface =
-            (m.texture && hit.hasUv) ? rt::sampleTexture(*m.texture, hit.uv) : m.colour;
-        {
-            RayNode& n = tree.nodes[size_t(id)];
-            n.hit = true;
-            n.primitive = indexOf(hit.primitive);
-            n.primitiveKind = hit.primitive ? primitiveKind(*hit.primitive) : "?";
-            n.material = hit.material;
-            n.t = hit.t;
-            n.point = hit.point;
-            n.outwardNormal = hit.outwardNormal;
-            n.normal = hit.normal;
-            n.cosVN = hit.cosVN;
-            n.entering = hit.entering;
-            n.solid = hit.solid;
-            n.uv = hit.uv;
-            n.kr = m.kr;
-            n.kt = m.kt;
-            shade(n, ray, hit, m, surface, tracer.sampleLights(hit));
-        }
-        rt::Color c = tree.nodes[size_t(id)].direct;
-        std::string note;
-        if (ray.depth < settings.maxDepth) {
-            if (m.kr > 0) {
-                if (ray.weight * m.kr >= settings.minWeight) {
-                    rt::Ray r;
-                    r.origin = rt::offsetRayOrigin(hit.point, hit.normal);
-                    r.direction = rt::reflectDir(ray.direction, hit.normal);
-                    r.weight = ray.weight * m.kr;
-                    r.medium = ray.medium;
-                    r.depth = ray.depth + 1;
-                    const int child = trace(r, "reflected", id);
-                    tree.nodes[size_t(id)].reflected = child;
-                    tree.nodes[size_t(id)].reflectedColour = tree.nodes[size_t(child)].colour;
-                    c = model().addScaled(c, tree.nodes[size_t(child)].colour, m.kr);
-                } else {
-                    note += "reflected ray below the weight cut-off; ";
-                }
-            }
-            if (m.kt > 0) {
-                if (ray.weight * m.kt >= settings.minWeight) {
-                    std::optional<glm::dvec3> dir = ray.direction;
-                    rt::Medium medium = ray.medium;
-                    if (hit.solid) {
-                        double eta;
-                        if (hit.entering) {
-                            eta = ray.medium.refract / m.medium.refract;
-                            medium = m.medium;
-                        } else {
-                            eta = m.medium.refract / scene.air.refract;
-                            medium = scene.air;
-                        }
-                        dir = rt::refractDir(ray.direction, hit.normal, eta);
-                    }
-                    if (dir) {
-                        rt::Ray t;
-                        t.origin = rt::offsetRayOrigin(hit.point, -hit.normal);
-                        t.direction = *dir;
-                        t.weight = ray.weight * m.kt;
-                        t.medium = medium;
-                        t.depth = ray.depth + 1;
-                        const int child = trace(t, "refracted", id);
-                        tree.nodes[size_t(id)].refracted = child;
-                        tree.nodes[size_t(id)].refractedColour = tree.nodes[size_t(child)].colour;
-                        c = model().addScaled(c, tree.nodes[size_t(child)].colour, m.kt);
-                    } else {
-                        note += "total internal reflection (no transmitted ray); ";
-                    }
-                } else {
-                    note += "transmitted ray below the weight cut-off; ";
-                }
-            }
-        } else if (m.kr > 0 || m.kt > 0) {
-            note += "depth limit reached; ";
-        }
-        RayNode& n = tree.nodes[size_t(id)];
-        n.childNote = note;
-        if (ray.medium.atten > 0) {
-            n.attenuation = std::exp(-ray.medium.atten * hit.t);
-            c = model().scale(c, n.attenuation);
-        }
-        n.colour = c;
-        return id;
+    }
+
+    void attenuated(double factor) override { current().attenuation = factor; }
+
+    void rayEnd(const rt::Color& colour) override {
+        current().colour = colour;
+        lastEnded = open.back();
+        open.pop_back();
     }
 };
 
@@ -258,12 +227,10 @@ std::string colour(const rt::Color& c, ModelKind k) {
 
 RayTree inspectRay(const LabScene& s, ModelKind model, const rt::TraceSettings& settings,
                    const rt::Ray& ray) {
-    Inspector in{*s.scene, model, settings, {}, {}, {}, {}};
-    for (size_t i = 0; i < s.scene->primitives.size(); ++i)
-        in.index[s.scene->primitives[i].get()] = int(i);
-    in.tree.model = model;
-    in.trace(ray, "primary", -1);
+    Inspector in(*s.scene, model);
     const rt::Tracer tracer(*s.scene, in.model(), settings);
+    tracer.trace(ray, &in);
+    // The unobserved trace must give the same colour: a mismatch is shown, never hidden.
     in.tree.tracerColour = tracer.trace(ray);
     in.tree.matchesTracer = in.tree.tracerColour == in.tree.nodes[0].colour;
     in.model().toRgb8(in.tree.nodes[0].colour, in.tree.rgb);

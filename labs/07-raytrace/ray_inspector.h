@@ -2,9 +2,10 @@
 // The ray inspector: the whole ray tree of one pixel, every hit (object, t, point,
 // normal, entering or leaving), every shadow feeler with the objects that blocked it,
 // and each term of the colour (ambient, per-light diffuse and specular, reflected × kr,
-// transmitted × kt, attenuation). It replays the tracer's recursion with the tracer's
-// own pieces (Tracer::sampleLights, reflectDir, refractDir, the shading model), and the
-// root colour is checked against Tracer::trace: a mismatch is shown, never hidden.
+// transmitted × kt, attenuation). The tree is built from the events of the tracer's own
+// recursion (Tracer::trace with an rt::TraceObserver), so no rule exists twice; the
+// feelers' blocker lists use the tracer's segment (rt::feelerStart). The root colour is
+// checked against the unobserved Tracer::trace: a mismatch is shown, never hidden.
 #include "lab_scenes.h"
 
 #include "core/raytrace/shading.h"

@@ -150,8 +150,8 @@ TEST_CASE("lab 07 inspector: seed 000 part 1, P(50,0) in the shadow of rectangle
 
 TEST_CASE("lab 07 inspector: its replay equals the tracer on every pixel of several scenes",
           "[gl]") {
-    // The inspector re-walks the recursion with the tracer's pieces; if it ever drifted
-    // from Tracer::trace (a rule changed in one place only), matchesTracer turns false.
+    // The inspector's tree comes from the observed Tracer::trace; if observing ever
+    // changed a colour, matchesTracer (against the unobserved trace) turns false.
     for (const char* scene : {"glass-cube", "seed001-table", "two-spheres"}) {
         auto lab = wb::makeRaytraceLab();
         std::string err;
