@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <thread>
 
 namespace wb {
 
@@ -344,6 +345,38 @@ class RaytraceLab : public Lab {
     GLuint texture_ = 0;
     double lastTraceSeconds_ = 0;
 
+    // Headless (the command-line front end): waits for the trace with a progress bar on
+    // stderr, then prints the scene, time and ray counts on stdout.
+    void waitWithProgressBar() {
+        int lastPercent = -1; // redraw only when the percentage changes
+        for (;;) {
+            const TraceStatus st = job_.status();
+            const int percent = st.tilesTotal ? 100 * st.tilesDone / st.tilesTotal : 0;
+            if (percent != lastPercent) {
+                const int bar = 40, done = bar * percent / 100;
+                std::fprintf(stderr, "\r[%.*s%*s] %3d%%", done,
+                             "########################################", bar - done, "", percent);
+                std::fflush(stderr);
+                lastPercent = percent;
+            }
+            if (!st.running) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        job_.wait();
+        const TraceStatus st = job_.status();
+        const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
+        std::fprintf(stderr, "\n");
+        std::printf("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n", scene_.name.c_str(),
+                    scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
+                    scene_.accelSeconds * 1e3);
+        std::printf(
+            "%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
+            "%lld rays; %.2f M rays/s%s\n",
+            job_.camera().width, job_.camera().height, st.threads, st.seconds * 1e3, st.primaryRays,
+            st.shadowRays, st.secondaryRays, st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0,
+            st.nonFinitePixels ? " (warning: non-finite pixels)" : "");
+    }
+
     // Difference.
     bool diffValid_ = false;
     ImageDiff diff_;
@@ -632,7 +665,7 @@ void RaytraceLab::draw(const View& view) {
         }
         // Headless: the picture is read once the trace is done (the shell calls draw()
         // while busy(); waiting here keeps it from spinning next to the workers).
-        if (view.headless) job_.wait();
+        if (view.headless) waitWithProgressBar();
         job_.fetch(traceImage_, traceVersion_);
         const TraceStatus st = job_.status();
         if (st.finished) lastTraceSeconds_ = st.seconds;
