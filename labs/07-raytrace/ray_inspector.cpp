@@ -160,7 +160,7 @@ struct Inspector : rt::TraceObserver {
         n.cosVN = hit.cosVN;
         n.entering = hit.entering;
         n.solid = hit.solid;
-        n.uv = hit.uv;
+        n.uv = hit.primitive ? hit.primitive->textureCoords(hit) : hit.uv;
         n.kr = m.kr;
         n.kt = m.kt;
         n.direct = direct;

@@ -68,20 +68,25 @@ bool Quadric::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) cons
         hit.t = t;
         hit.point = p;
         hit.outwardNormal = g;
-        if (kind == Kind::Ellipsoid) {
-            const glm::dvec3 s = l / axes; // on the unit sphere
-            hit.uv = {std::atan2(s.y, s.x) / (2 * kPi) + 0.5,
-                      0.5 + std::asin(glm::clamp(s.z, -1.0, 1.0)) / kPi};
-        } else {
-            const double span = zHigh - zLow;
-            hit.uv = {std::atan2(l.y / axes.y, l.x / axes.x) / (2 * kPi) + 0.5,
-                      std::isfinite(span) && span < 1e300 ? (p.z - zLow) / span : l.z};
-        }
+        hit.uv = glm::dvec2(0.0); // textureCoords computes them from hit.point
         hit.hasUv = true;
         finishHit(ray, hit);
         return true;
     }
     return false;
+}
+
+glm::dvec2 Quadric::textureCoords(const Hit& hit) const {
+    const glm::dvec3& p = hit.point;
+    const glm::dvec3 l = p - centre;
+    if (kind == Kind::Ellipsoid) {
+        const glm::dvec3 s = l / axes; // on the unit sphere
+        return {std::atan2(s.y, s.x) / (2 * kPi) + 0.5,
+                0.5 + std::asin(glm::clamp(s.z, -1.0, 1.0)) / kPi};
+    }
+    const double span = zHigh - zLow;
+    return {std::atan2(l.y / axes.y, l.x / axes.x) / (2 * kPi) + 0.5,
+            std::isfinite(span) && span < 1e300 ? (p.z - zLow) / span : l.z};
 }
 
 Aabb Quadric::bounds() const {

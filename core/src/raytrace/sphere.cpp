@@ -49,11 +49,16 @@ bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const
     hit.t = t;
     hit.point = p;
     hit.outwardNormal = n;
-    hit.uv = glm::dvec2(std::atan2(n.y, n.x) / (2 * kPi) + 0.5,
-                        0.5 + std::asin(glm::clamp(n.z, -1.0, 1.0)) / kPi);
+    hit.uv = glm::dvec2(0.0); // textureCoords computes them from outwardNormal
     hit.hasUv = true;
     finishHit(ray, hit);
     return true;
+}
+
+glm::dvec2 Sphere::textureCoords(const Hit& hit) const {
+    const glm::dvec3& n = hit.outwardNormal;
+    return glm::dvec2(std::atan2(n.y, n.x) / (2 * kPi) + 0.5,
+                      0.5 + std::asin(glm::clamp(n.z, -1.0, 1.0)) / kPi);
 }
 
 Aabb Sphere::bounds() const {

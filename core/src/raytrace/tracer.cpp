@@ -96,8 +96,9 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
         return bg;
     }
     const Material& m = scene_.materials[size_t(hit.material)];
-    const glm::dvec3 surface =
-        (m.texture && hit.hasUv) ? sampleTexture(*m.texture, hit.uv) : m.colour;
+    const glm::dvec3 surface = (m.texture && hit.hasUv)
+                                   ? sampleTexture(*m.texture, hit.primitive->textureCoords(hit))
+                                   : m.colour;
     Color c;
     { // the samples are freed before the recursion, as when they were a temporary
         const std::vector<LightSample> samples = sampleLights(hit);

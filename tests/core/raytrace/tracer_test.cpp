@@ -216,8 +216,28 @@ TEST_CASE("textures: a plane bound by three points, a box face, an ellipsoid",
     side.origin = {0, -5, 0};
     side.direction = {0, 1, 0};
     REQUIRE(e.intersect(side, 0, 1e30, h)); // longitude −90°: u = 0.25, equator v = 0.5
-    CHECK(h.uv.x == Approx(0.25));
-    CHECK(h.uv.y == Approx(0.5));
+    CHECK(e.textureCoords(h).x == Approx(0.25));
+    CHECK(e.textureCoords(h).y == Approx(0.5));
     REQUIRE(e.intersect(down({0, 0, 5}), 0, 1e30, h)); // the pole: v = 1
-    CHECK(h.uv.y == Approx(1.0));
+    CHECK(e.textureCoords(h).y == Approx(1.0));
+    // The sphere computes its uv on demand, from the outward normal; the tracer must ask
+    // for them. From −y at height 0.5 the unit sphere is hit at longitude −90° (u = 0.25),
+    // latitude asin(0.5) = 30° (v = 0.5 + 1/6): the red tile (u 0.25, v 0.75 above).
+    Scene s2;
+    s2.globalAmbient = glm::dvec3(1.0);
+    const Sphere& sp = s2.add(Sphere({0, 0, 0}, 1), s2.addMaterial(m));
+    Ray lat30;
+    lat30.origin = {0, -5, 0.5};
+    lat30.direction = {0, 1, 0};
+    REQUIRE(sp.intersect(lat30, 0, 1e30, h));
+    REQUIRE(h.hasUv);
+    CHECK(sp.textureCoords(h).x == Approx(0.25));
+    CHECK(sp.textureCoords(h).y == Approx(0.5 + 1.0 / 6));
+    const Tracer tracer2(s2, model);
+    CHECK(tracer2.trace(lat30) == glm::dvec3(1, 0, 0));
+    lat30.origin.x = 0.5; // longitude atan2(−0.707, 0.5) ≈ −55°: u ≈ 0.35, still red
+    CHECK(tracer2.trace(lat30) == glm::dvec3(1, 0, 0));
+    lat30.origin = {0, 5, -0.5}; // from +y below the equator: u = 0.75, v = 1/3: white
+    lat30.direction = {0, -1, 0};
+    CHECK(tracer2.trace(lat30) == glm::dvec3(1, 1, 1));
 }

@@ -15,7 +15,8 @@ struct Hit {
     double cosVN = 0.0;                // dot(ray direction, normal), <= 0 (seed 000's cosvn)
     bool entering = false; // the ray enters a closed body here (false for open surfaces)
     bool solid = false;    // the primitive is a closed body (refraction changes medium)
-    glm::dvec2 uv{0.0};    // texture coordinates, valid when hasUv
+    glm::dvec2 uv{0.0};    // texture coordinates when hasUv; read them through
+                           // primitive->textureCoords(hit) (sphere, quadric fill them lazily)
     bool hasUv = false;    // the primitive provides texture coordinates
     int material = 0;      // index into Scene::materials
     const Primitive* primitive = nullptr; // who was hit

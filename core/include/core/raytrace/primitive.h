@@ -13,9 +13,9 @@ class Primitive {
     virtual ~Primitive() = default;
 
     // Nearest hit with tMin < t <= tMax. On success fills every field of `hit`
-    // (t, point, normals, cosVN, entering, solid, uv, material, primitive) and
-    // returns true; on failure leaves `hit` untouched. Never produces NaN/Inf:
-    // degenerate primitives simply report no hit.
+    // (t, point, normals, cosVN, entering, solid, hasUv, material, primitive; uv
+    // unless the primitive computes it in textureCoords) and returns true; on failure leaves `hit`
+    // untouched. Never produces NaN/Inf: degenerate primitives simply report no hit.
     virtual bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const = 0;
 
     // Any hit in (tMin, tMax]: the shadow-feeler query. The default calls intersect().
@@ -23,6 +23,12 @@ class Primitive {
         Hit h;
         return intersect(ray, tMin, tMax, h);
     }
+
+    // Texture coordinates of `hit` (a hit on this primitive with hasUv). Where they cost
+    // atan2/asin (sphere, quadric) they are computed here, on demand, from the hit's
+    // point or normal, bit for bit as intersect() would have: intersect() runs for every
+    // candidate and shadow blocker, but only the shading of a textured material needs uv.
+    virtual glm::dvec2 textureCoords(const Hit& hit) const { return hit.uv; }
 
     // A box enclosing the primitive (infinite for unbounded ones).
     virtual Aabb bounds() const = 0;

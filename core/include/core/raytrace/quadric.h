@@ -20,6 +20,7 @@ class Quadric : public Primitive {
             double zHigh = 1e300);
 
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
+    glm::dvec2 textureCoords(const Hit& hit) const override;
     Aabb bounds() const override;
     // Only an ellipsoid the cuts do not open is a closed body.
     bool solid() const override;

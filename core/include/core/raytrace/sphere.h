@@ -11,6 +11,7 @@ class Sphere : public Primitive {
     // for a negative or non-finite radius or centre.
     Sphere(const glm::dvec3& centre, double radius);
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
+    glm::dvec2 textureCoords(const Hit& hit) const override;
     Aabb bounds() const override;
     bool solid() const override { return true; }
 
