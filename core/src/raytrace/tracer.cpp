@@ -50,6 +50,12 @@ double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d
 
 std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
     std::vector<LightSample> out;
+    sampleLights(hit, out);
+    return out;
+}
+
+void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
+    out.clear();
     out.reserve(scene_.lights.size());
     for (const Light& l : scene_.lights) {
         LightSample s;
@@ -76,7 +82,6 @@ std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
         }
         out.push_back(s);
     }
-    return out;
 }
 
 template <bool kObserve>
@@ -100,10 +105,17 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
                                    ? sampleTexture(*m.texture, hit.primitive->textureCoords(hit))
                                    : m.colour;
     Color c;
-    { // the samples are freed before the recursion, as when they were a temporary
+    if constexpr (kObserve) { // observers may trace again from hit(): a vector of its own
         const std::vector<LightSample> samples = sampleLights(hit);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
-        if constexpr (kObserve) observer->hit(ray, hit, m, surface, samples, c);
+        observer->hit(ray, hit, m, surface, samples, c);
+    } else {
+        // One buffer per thread instead of a vector allocated per hit: the samples are
+        // used up by direct() before the recursion below, so nested rays can refill it.
+        // (A shading model must not call trace() from direct().)
+        thread_local std::vector<LightSample> samples;
+        sampleLights(hit, samples);
+        c = model_.direct(scene_, ray, hit, m, surface, samples);
     }
 
     if (ray.depth < settings_.maxDepth) {

@@ -79,6 +79,9 @@ class Tracer {
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
     std::vector<LightSample> sampleLights(const Hit& hit) const;
+    // The same samples into `out` (cleared first): lets the tracer reuse one buffer
+    // instead of allocating a vector per hit.
+    void sampleLights(const Hit& hit, std::vector<LightSample>& out) const;
     // Π kt of the blockers met by origin + t·dir for tMin < t <= dist (dist may be inf).
     double transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
                          double dist) const;
