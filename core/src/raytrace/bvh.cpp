@@ -497,6 +497,15 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
     });
 }
 
+void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
+                         const std::function<bool(const Primitive&)>& visit) const {
+    for (const Primitive* p : unbounded_)
+        if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+    traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
+        return !(p.occluded(ray, tMin, tMax) && !visit(p));
+    });
+}
+
 bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax)) return true;

@@ -22,6 +22,12 @@ void BruteForce::forEachHit(const Ray& ray, double tMin, double tMax,
         if (p->intersect(ray, tMin, tMax, h) && !visit(h)) return;
 }
 
+void BruteForce::forEachBlocker(const Ray& ray, double tMin, double tMax,
+                                const std::function<bool(const Primitive&)>& visit) const {
+    for (const auto& p : prims_)
+        if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+}
+
 Scene::Scene() : bruteForce_(primitives) {
     materials.push_back(Material{});
 }

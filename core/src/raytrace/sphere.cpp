@@ -22,7 +22,11 @@ Sphere::Sphere(const glm::dvec3& c, double r) : centre(c), radius(r) {
         throw std::invalid_argument("Sphere: radius must be finite and >= 0, centre finite");
 }
 
-bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+namespace {
+// The nearest root in (tMin, tMax] and the unit outward normal there (false: no hit).
+// Shared by intersect and occluded so both decide alike, bit for bit.
+inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, double tMin,
+                    double tMax, double& tOut, glm::dvec3& nOut) {
     if (radius == 0) return false;
     const glm::dvec3 f = ray.origin - centre;
     const double h = glm::dot(f, ray.direction); // half b; a = 1 for a unit direction
@@ -40,12 +44,20 @@ bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const
         t = roots.t1;
         if (!(t > tMin && t <= tMax)) return false;
     }
-    glm::dvec3 p = ray.at(t);
-    glm::dvec3 n = p - centre;
+    glm::dvec3 n = ray.at(t) - centre;
     const double nl = glm::length(n);
     if (!(nl > 0)) return false;
-    n /= nl;
-    p = centre + radius * n; // refine onto the surface: error relative to |p|, not to |origin|
+    tOut = t;
+    nOut = n / nl;
+    return true;
+}
+} // namespace
+
+bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    double t;
+    glm::dvec3 n;
+    if (!nearest(centre, radius, ray, tMin, tMax, t, n)) return false;
+    const glm::dvec3 p = centre + radius * n; // refine onto the surface: error relative to |p|
     hit.t = t;
     hit.point = p;
     hit.outwardNormal = n;
@@ -59,6 +71,12 @@ glm::dvec2 Sphere::textureCoords(const Hit& hit) const {
     const glm::dvec3& n = hit.outwardNormal;
     return glm::dvec2(std::atan2(n.y, n.x) / (2 * kPi) + 0.5,
                       0.5 + std::asin(glm::clamp(n.z, -1.0, 1.0)) / kPi);
+}
+
+bool Sphere::occluded(const Ray& ray, double tMin, double tMax) const {
+    double t;
+    glm::dvec3 n;
+    return nearest(centre, radius, ray, tMin, tMax, t, n);
 }
 
 Aabb Sphere::bounds() const {

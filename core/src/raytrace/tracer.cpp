@@ -28,8 +28,9 @@ double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, do
     feeler.origin = origin;
     feeler.direction = dir;
     double k = 1.0;
-    scene_.aggregate().forEachHit(feeler, tMin, dist, [&](const Hit& h) {
-        const double kt = scene_.materials[size_t(h.material)].kt;
+    // Only the blockers' materials matter: no hit records (Primitive::occluded).
+    scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&](const Primitive& p) {
+        const double kt = scene_.materials[size_t(p.material)].kt;
         if (kt < settings_.opaqueKt) {
             k = 0.0; // an opaque blocker: no need to look further
             return false;

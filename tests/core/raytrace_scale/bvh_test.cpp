@@ -78,6 +78,23 @@ void compareWithBruteForce(const Scene& s, const Bvh& bvh, int rays, std::uint64
         brute.forEachHit(ray, 0.0, inf, [&](const Hit& h) { return sb.insert(h.primitive), true; });
         bvh.forEachHit(ray, 0.0, inf, [&](const Hit& h) { return sv.insert(h.primitive), true; });
         REQUIRE(sb == sv);
+        // The shadow walk (Primitive::occluded, no hit records) meets the same blockers,
+        // and so do segments ending between hits.
+        std::set<const Primitive*> ob, ov;
+        brute.forEachBlocker(ray, 0.0, inf,
+                             [&](const Primitive& p) { return ob.insert(&p), true; });
+        bvh.forEachBlocker(ray, 0.0, inf, [&](const Primitive& p) { return ov.insert(&p), true; });
+        REQUIRE(ob == sb);
+        REQUIRE(ov == sb);
+        if (fb) {
+            const double mid = hb.t * 1.5;
+            std::set<const Primitive*> hm, om;
+            brute.forEachHit(ray, 0.0, mid,
+                             [&](const Hit& h) { return hm.insert(h.primitive), true; });
+            bvh.forEachBlocker(ray, 0.0, mid,
+                               [&](const Primitive& p) { return om.insert(&p), true; });
+            REQUIRE(om == hm);
+        }
         // A segment that ends before the nearest hit meets nothing.
         if (fb) REQUIRE_FALSE(bvh.occluded(ray, 0.0, hb.t * 0.999));
     }

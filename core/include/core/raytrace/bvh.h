@@ -44,6 +44,8 @@ class Bvh : public Aggregate {
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
+    void forEachBlocker(const Ray& ray, double tMin, double tMax,
+                        const std::function<bool(const Primitive&)>& visit) const override;
     // Any hit in (tMin, tMax] (shadow feeler for opaque scenes).
     bool occluded(const Ray& ray, double tMin, double tMax) const;
 

@@ -24,6 +24,13 @@ class Aggregate {
     // (each primitive once, in no particular order); stops early when visit returns false.
     virtual void forEachHit(const Ray& ray, double tMin, double tMax,
                             const std::function<bool(const Hit&)>& visit) const = 0;
+    // The same walk for shadow feelers, which need only who blocks (its material):
+    // `visit` gets each primitive the ray meets in (tMin, tMax]. The default asks
+    // forEachHit; BruteForce and Bvh ask Primitive::occluded, which may skip the hit record.
+    virtual void forEachBlocker(const Ray& ray, double tMin, double tMax,
+                                const std::function<bool(const Primitive&)>& visit) const {
+        forEachHit(ray, tMin, tMax, [&](const Hit& h) { return visit(*h.primitive); });
+    }
 };
 
 class BruteForce : public Aggregate {
@@ -32,6 +39,8 @@ class BruteForce : public Aggregate {
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
+    void forEachBlocker(const Ray& ray, double tMin, double tMax,
+                        const std::function<bool(const Primitive&)>& visit) const override;
 
   private:
     const std::vector<std::unique_ptr<Primitive>>& prims_;

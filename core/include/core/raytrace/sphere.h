@@ -11,6 +11,8 @@ class Sphere : public Primitive {
     // for a negative or non-finite radius or centre.
     Sphere(const glm::dvec3& centre, double radius);
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
+    // The same decision as intersect() without filling a hit record.
+    bool occluded(const Ray& ray, double tMin, double tMax) const override;
     glm::dvec2 textureCoords(const Hit& hit) const override;
     Aabb bounds() const override;
     bool solid() const override { return true; }
