@@ -1,5 +1,7 @@
 #include "embree_compare.h"
 
+#include "bench_scenes.h"
+
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/obj_file.h"
@@ -186,23 +188,9 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "shadow M "
           "rays/s ours | Embree | ours/Embree | eye hits ours / Embree | occluded ours / Embree |\n"
        << "|---|---|---|---|---|---|---|---|---|---|\n";
-    struct Item {
-        const char* name;
-        std::function<SceneFile()> make;
-    };
-    const std::vector<Item> items = {
-        {"one sphere", [] { return toScene(oneSphereScene()); }},
-        {"two spheres", [] { return toScene(twoSpheresScene()); }},
-        {"balls 2", [] { return toScene(spdBalls(2)); }},
-        {"balls 3", [] { return toScene(spdBalls(3)); }},
-        {"balls 4", [] { return toScene(spdBalls(4)); }},
-        {"jacks 2", [] { return toScene(spdJacks(2)); }},
-        {"jacks 3", [] { return toScene(spdJacks(3)); }},
-        {"jacks 4", [] { return toScene(spdJacks(4)); }},
-        {"mesh 9k (OBJ)", [&] { return loadObjFile(meshPath); }},
-    };
-    for (const Item& it : items) {
-        std::fprintf(stderr, "embree: %s\n", it.name);
+    const std::vector<BenchScene> items = benchScenes(meshPath);
+    for (const BenchScene& it : items) {
+        std::fprintf(stderr, "embree: %s\n", it.name.c_str());
         SceneFile sf = it.make();
         Bvh bvh(sf.scene->primitives);
         EmbreeScene es(*sf.scene);
@@ -298,7 +286,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             buf, sizeof buf,
             "| %s | %.2f / %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %lld / %lld | "
             "%lld / %lld |\n",
-            it.name, bvh.stats().buildSeconds * 1e3, es.buildS * 1e3, ne / ourEye / 1e6,
+            it.name.c_str(), bvh.stats().buildSeconds * 1e3, es.buildS * 1e3, ne / ourEye / 1e6,
             ne / emEye / 1e6, emEye / ourEye, ns / ourShadow / 1e6, ns / emShadow / 1e6,
             emShadow / ourShadow, ourHits, emHits, ourOcc, emOcc);
         md << buf;

@@ -10,6 +10,7 @@
 // through Embree 3 too.
 //
 // Usage: raytrace_scale_bench [--out-dir DIR] [--quick]
+#include "bench_scenes.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/obj_file.h"
@@ -113,11 +114,6 @@ std::string writeMesh(const std::string& dir) {
     (void)tris;
     return path;
 }
-
-struct BenchScene {
-    std::string name;
-    std::function<SceneFile()> make;
-};
 
 struct FrameResult {
     double setupS = 0, buildS = 0, frame1 = 0, frameN = 0;
@@ -320,17 +316,7 @@ int main(int argc, char** argv) {
        << loadAverage() << ".\n\n";
 
     const std::string meshPath = writeMesh(o.workDir);
-    std::vector<BenchScene> scenes = {
-        {"one sphere", [] { return toScene(oneSphereScene()); }},
-        {"two spheres", [] { return toScene(twoSpheresScene()); }},
-        {"balls 2", [] { return toScene(spdBalls(2)); }},
-        {"balls 3", [] { return toScene(spdBalls(3)); }},
-        {"balls 4", [] { return toScene(spdBalls(4)); }},
-        {"jacks 2", [] { return toScene(spdJacks(2)); }},
-        {"jacks 3", [] { return toScene(spdJacks(3)); }},
-        {"jacks 4", [] { return toScene(spdJacks(4)); }},
-        {"mesh 9k (OBJ)", [meshPath] { return loadObjFile(meshPath); }},
-    };
+    const std::vector<BenchScene> scenes = benchScenes(meshPath);
     md << "## Frames\n\n"
        << "| scene | primitives | setup ms | of it BVH build ms | BVH nodes/depth | frame ms, 1 "
           "thread "
