@@ -40,6 +40,50 @@ std::vector<TableObjects> placeObjects(unsigned seed) {
 }
 
 namespace {
+// The next value of `grid` (ascending) strictly beyond `v` in direction dir within
+// [lo, hi]; `v` itself when there is none. The relative tolerance 1e-4 keeps a value
+// dragged in the panel a hair off a grid point from counting as a step.
+float stepThrough(const std::vector<float>& grid, float v, float lo, float hi, int dir) {
+    if (dir > 0) {
+        for (float g : grid)
+            if (g > v * 1.0001f && g >= lo && g <= hi) return g;
+    } else {
+        for (auto it = grid.rbegin(); it != grid.rend(); ++it)
+            if (*it < v * 0.9999f && *it >= lo && *it <= hi) return *it;
+    }
+    return v;
+}
+} // namespace
+
+const std::vector<float>& nearSteps() {
+    static const std::vector<float> grid = [] {
+        std::vector<float> g = {0.1f, 0.25f}; // below the first step: depth-precision values
+        for (int k = 1; float(k) * kNearStep <= kNearMax; ++k)
+            g.push_back(float(k) * kNearStep); // k·0.5 is exact in float
+        return g;
+    }();
+    return grid;
+}
+
+const std::vector<float>& farSteps() {
+    static const std::vector<float> grid = [] {
+        std::vector<float> g;
+        for (int k = 1; float(k) * kFarStep <= kFarMax; ++k)
+            g.push_back(float(k) * kFarStep);
+        return g;
+    }();
+    return grid;
+}
+
+float stepNear(float zNear, float zFar, int dir) {
+    return stepThrough(nearSteps(), zNear, 0.0f, zFar - kNearStep, dir);
+}
+
+float stepFar(float zFar, float zNear, int dir) {
+    return stepThrough(farSteps(), zFar, zNear + kNearStep, kFarMax, dir);
+}
+
+namespace {
 
 // One triangle with per-vertex normals, wound counter-clockwise as seen from the side
 // the normals point to (checked against the geometric normal, so generators need not care).
@@ -317,8 +361,8 @@ class TransformsLab : public Lab {
     std::vector<KeyHelp> keys() const override {
         return {{"1 2 3", "glOrtho / gluPerspective / glFrustum"},
                 {"z x", "camera in / out (gluLookAt)"},
-                {"n N", "near plane closer / farther"},
-                {"b B", "far plane closer / farther"},
+                {"n N", "near plane -/+ 0.5"},
+                {"b B", "far plane -/+ 2"},
                 {"r", "new random placement"},
                 {"c", "classroom / single table"},
                 {"m", "mirror image in the blackboard wall"},
@@ -466,16 +510,16 @@ bool TransformsLab::key(int k) {
         s.distance = std::min(60.0f, s.distance + 1.0f);
         return true;
     case 'n':
-        s.zNear = std::max(0.05f, s.zNear * 0.5f);
+        s.zNear = stepNear(s.zNear, s.zFar, -1);
         return true;
     case 'N':
-        s.zNear = std::min(s.zFar * 0.9f, s.zNear * 2.0f);
+        s.zNear = stepNear(s.zNear, s.zFar, +1);
         return true;
     case 'b':
-        s.zFar = std::max(s.zNear * 1.1f, s.zFar - 4.0f);
+        s.zFar = stepFar(s.zFar, s.zNear, -1);
         return true;
     case 'B':
-        s.zFar = std::min(200.0f, s.zFar + 4.0f);
+        s.zFar = stepFar(s.zFar, s.zNear, +1);
         return true;
     case 'r':
         ++s.seed;

@@ -43,6 +43,23 @@ struct TableObjects {
     float penX, penZ, penAngle;
     float potX, potZ, potAngle;
 };
+// Near and far plane keys step through fixed grids so that every state can be reached
+// and a value comes back exactly after n then N: near = k·kNearStep (with 0.1 and 0.25
+// below the first step), far = k·kFarStep. Steps are small enough to stop with the
+// plane inside the back row of tables (~11.1 to 12 units deep from the default eye).
+constexpr float kNearStep = 0.5f; // n N: 0.1, 0.25, 0.5, 1.0, 1.5, ... (k·0.5 is exact in float)
+constexpr float kFarStep = 2.0f;  // b B: 2, 4, ..., 200
+constexpr float kNearMax = 30.0f, kFarMax = 200.0f;
+// The grids, ascending: near 0.1, 0.25, 0.5, 1.0, ..., 30; far 2, 4, ..., 200.
+const std::vector<float>& nearSteps();
+const std::vector<float>& farSteps();
+// The next grid value after `zNear` (dir = +1) or before it (dir = -1), kept at least
+// kNearStep in front of `zFar`; a value between grid points (dragged in the panel) goes
+// to its neighbour; at the end of the grid the value stays.
+float stepNear(float zNear, float zFar, int dir);
+// The same for the far plane, kept at least kNearStep behind `zNear`.
+float stepFar(float zFar, float zNear, int dir);
+
 // 12 tables' placements from `seed` (row-major, front row first); the same seed, the same room.
 std::vector<TableObjects> placeObjects(unsigned seed);
 

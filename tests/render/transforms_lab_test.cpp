@@ -171,3 +171,75 @@ TEST_CASE("lab 03 goldens: ortho, perspective, frustum, camera, single table", "
         wb::test::checkGolden(img, name, 4, 0.1);
     }
 }
+
+// Issue 11: the near plane used to double per press (… 6.4, 12.8, 25.6), jumping over
+// the back row of tables, and the far plane came back as 60.055 after `b` `B`.
+TEST_CASE("near and far keys step through grids that come back exactly", "[gl]") {
+    wb::TransformsState s;
+    auto lab = wb::makeTransformsLab(&s);
+    // N from the default 1.0 visits every k·0.5 up to 30, each value exact.
+    std::vector<float> seen;
+    for (int i = 0; i < 80; ++i) {
+        REQUIRE(lab->key('N'));
+        if (!seen.empty() && seen.back() == s.zNear) break;
+        seen.push_back(s.zNear);
+    }
+    REQUIRE(seen.size() == 58); // 1.5, 2.0, ..., 30.0
+    for (size_t i = 0; i < seen.size(); ++i)
+        CHECK(seen[i] == float(i + 3) * wb::kNearStep);
+    // n all the way down, through 0.5, 0.25 and 0.1, and back up to exactly 1.
+    for (int i = 0; i < 80; ++i)
+        lab->key('n');
+    CHECK(s.zNear == 0.1f);
+    for (float want : {0.25f, 0.5f, 1.0f}) {
+        lab->key('N');
+        CHECK(s.zNear == want);
+    }
+    // b B and B b return the far plane to exactly 60.
+    lab->key('b');
+    CHECK(s.zFar == 58.0f);
+    lab->key('B');
+    CHECK(s.zFar == 60.0f);
+    lab->key('B');
+    lab->key('b');
+    CHECK(s.zFar == 60.0f);
+    // Far never passes near: with near at 10 the far plane stops at 12 (near + 0.5 rounded up).
+    s.zNear = 10.0f;
+    for (int i = 0; i < 40; ++i)
+        lab->key('b');
+    CHECK(s.zFar == 12.0f);
+    // A value dragged in the panel between grid points goes to its neighbours.
+    s.zNear = 7.3f;
+    lab->key('N');
+    CHECK(s.zNear == 7.5f);
+    s.zNear = 7.3f;
+    lab->key('n');
+    CHECK(s.zNear == 7.0f);
+}
+
+TEST_CASE("a near-plane step stops inside the back row of tables", "[gl]") {
+    // Depth (distance along the view direction) of the back-row table's box, from the
+    // default eye: the table top is 1.4 × 0.7 and stands 0.75 high at z = wall + 9.
+    wb::TransformsState s;
+    const glm::vec3 centre(0, 0.8f, -1.0f);
+    const float e = glm::radians(s.elevation);
+    const glm::vec3 eye = centre + s.distance * glm::vec3(0, std::sin(e), std::cos(e));
+    const glm::vec3 dir = glm::normalize(centre - eye);
+    float dMin = 1e9f, dMax = -1e9f;
+    for (float x : {-1.5f - 0.7f, -1.5f + 0.7f})
+        for (float y : {0.0f, 0.78f})
+            for (float z : {wb::kWallZ + 9.0f - 0.35f, wb::kWallZ + 9.0f + 0.35f}) {
+                const float d = glm::dot(glm::vec3(x, y, z) - eye, dir);
+                dMin = std::min(dMin, d), dMax = std::max(dMax, d);
+            }
+    INFO("back-row table depth " << dMin << " .. " << dMax);
+    auto inside = [&](const std::vector<float>& values) {
+        int n = 0;
+        for (float v : values)
+            n += v > dMin && v < dMax;
+        return n;
+    };
+    CHECK(inside(wb::nearSteps()) >= 1);       // the grid stops with the table cut open
+    // The old doubling (from 1, or from 0.1 as in the issue's 6.4, 12.8, 25.6) jumped over it.
+    CHECK(inside({1, 2, 4, 8, 16, 32, 0.1f, 0.2f, 0.4f, 0.8f, 1.6f, 3.2f, 6.4f, 12.8f, 25.6f}) == 0);
+}
