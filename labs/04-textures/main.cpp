@@ -2,7 +2,7 @@
 // sphere and torus, a mirror object with GL_SPHERE_MAP texgen (section 1.5.3, lab 4), and
 // Blinn bump mapping on the torus (section 1.5.2).
 // Keys:
-//   1  flat textured object     2  sphere     3  torus     4  mirror object (sphere map)
+//   0  overview (first frame)   1  flat textured object     2  sphere     3  torus     4  mirror object (sphere map)
 //   5  bump-mapped torus (GLSL) k  bump mapping on/off
 //   w  GL_REPEAT / GL_CLAMP     f  filter: nearest / linear / mipmaps
 //   t  texture: bricks / uv grid     o  mirror object sphere / torus     b  background room

@@ -84,7 +84,8 @@ class TexturesLab : public Lab {
     explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_) {}
     std::string title() const override { return "Lab 04 - textures"; }
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "flat textured object (wrap and filter show here)"},
+        return {{"0", "overview: mirror object, textured sphere and torus"},
+                {"1", "flat textured object (wrap and filter show here)"},
                 {"2", "hand-made sphere"},
                 {"3", "hand-made torus"},
                 {"4", "mirror object: GL_SPHERE_MAP texgen"},
@@ -150,7 +151,14 @@ class TexturesLab : public Lab {
         glEnable(GL_TEXTURE_2D);
         glEnable(GL_NORMALIZE);
         glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-        if (s_->background && s_->scene == TextureScene::Mirror) drawRoom();
+        if (s_->background &&
+            (s_->scene == TextureScene::Mirror || s_->scene == TextureScene::Overview))
+            drawRoom();
+        if (s_->scene == TextureScene::Overview) {
+            drawOverview(view);
+            glDisable(GL_TEXTURE_2D);
+            return;
+        }
 
         glPushMatrix();
         if (s_->scene != TextureScene::Flat)
@@ -173,6 +181,8 @@ class TexturesLab : public Lab {
         case TextureScene::Bump:
             drawBump();
             break;
+        case TextureScene::Overview: // drawn above
+            break;
         }
         glPopMatrix();
         glDisable(GL_TEXTURE_2D);
@@ -180,6 +190,9 @@ class TexturesLab : public Lab {
 
     bool key(int k) override {
         switch (k) {
+        case '0':
+            s_->scene = TextureScene::Overview;
+            return true;
         case '1':
             s_->scene = TextureScene::Flat, s_->texture = 0;
             return true;
@@ -232,7 +245,9 @@ class TexturesLab : public Lab {
 
     void gui() override {
         int scene = int(s_->scene);
-        ImGui::Text("Scene (1-5)");
+        ImGui::Text("Scene (0-5)");
+        ImGui::RadioButton("all", &scene, 0);
+        ImGui::SameLine();
         ImGui::RadioButton("flat", &scene, 1);
         ImGui::SameLine();
         ImGui::RadioButton("sphere", &scene, 2);
@@ -310,8 +325,33 @@ class TexturesLab : public Lab {
         glPopMatrix();
     }
 
-    void drawLit(const GlMesh& mesh) {
-        glBindTexture(GL_TEXTURE_2D, textures_[s_->texture]);
+    // The first frame: the sphere-mapped mirror object in the middle of the room, the
+    // textured sphere (uv grid) on its left and the torus (bricks) on its right, each
+    // spun by the arrows about its own centre. The mirror reflects the room only: a
+    // sphere map holds the environment at infinity, not the neighbouring bodies.
+    void drawOverview(const View& view) {
+        auto place = [&](double x, double y, double scale, double tilt) {
+            glPushMatrix();
+            glTranslated(x, y, 0.0);
+            glScaled(scale, scale, scale);
+            glRotated(tilt, 1.0, 0.0, 0.0);
+            glRotated(s_->spinX, 1.0, 0.0, 0.0);
+            glRotated(s_->spinY, 0.0, 1.0, 0.0);
+        };
+        place(0.0, 0.25, 0.8, 0.0);
+        drawMirror(view);
+        glPopMatrix();
+        place(-1.8, -0.6, 0.48, 25.0);
+        drawLit(sphere_, 1);
+        glPopMatrix();
+        place(1.8, -0.6, 0.42, 40.0);
+        drawLit(torus_, 0);
+        glPopMatrix();
+    }
+
+    void drawLit(const GlMesh& mesh) { drawLit(mesh, s_->texture); }
+    void drawLit(const GlMesh& mesh, int texture) {
+        glBindTexture(GL_TEXTURE_2D, textures_[texture]);
         applyTextureParameters();
         setLight();
         drawMesh(mesh);

@@ -11,7 +11,9 @@
 
 namespace wb {
 
-enum class TextureScene { Flat = 1, Sphere = 2, Torus = 3, Mirror = 4, Bump = 5 };
+// Overview (key 0, the first frame): the sphere-mapped mirror object between the textured
+// sphere and torus, in the room; 1-5 show one subject each.
+enum class TextureScene { Overview = 0, Flat = 1, Sphere = 2, Torus = 3, Mirror = 4, Bump = 5 };
 enum class TextureFilter { Nearest = 0, Linear = 1, Mipmap = 2 };
 
 // Scene 5 (bump mapping), shared with the test's independent reference.
@@ -21,7 +23,7 @@ constexpr double kBumpRepeatS = 10, kBumpRepeatT = 3; // height-map tiles around
 constexpr double kBumpLights[4][3] = {{4, 3, -1}, {-4, 3, -1}, {0, -3, -1}, {0, 4, -9}};
 
 struct TexturesLabState {
-    TextureScene scene = TextureScene::Flat;      // keys 1-4
+    TextureScene scene = TextureScene::Overview; // keys 0-5
     bool repeat = true;                           // w: GL_REPEAT, else GL_CLAMP
     TextureFilter filter = TextureFilter::Mipmap; // f cycles nearest / linear / mipmaps
     int texture = 0;          // t: 0 = bricks.png, 1 = uvgrid.png (1-3 pick the natural one)

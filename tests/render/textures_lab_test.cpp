@@ -310,3 +310,24 @@ TEST_CASE("missing, corrupt, truncated and oversized textures give a checkerboar
     CHECK(magentaPixels(wb::test::renderLab(*lab, 160, 120, "1")) == 0);
     CHECK(st.message.empty());
 }
+
+// Issue 11: the first frame showed the brick plane alone; it now shows the lab's main
+// subject, the sphere-mapped mirror between the textured sphere and torus (key 0).
+TEST_CASE("lab 04 first frame is the overview", "[gl][textures]") {
+    wb::TexturesLabState st;
+    auto lab = wb::makeTexturesLab(&st);
+    CHECK(st.scene == wb::TextureScene::Overview);
+    wb::Image first = wb::test::renderLab(*lab, 160, 120);
+    wb::Image flat = wb::test::renderLab(*wb::makeTexturesLab(), 160, 120, "1");
+    wb::Image zero = wb::test::renderLab(*wb::makeTexturesLab(), 160, 120, "10");
+    CHECK(wb::compareImages(first, zero).maxDiff == 0); // key 0 goes back to it
+    CHECK(wb::compareImages(first, flat).meanDiff > 20.0);
+    // The mirror's centre (0, 0.25) at scale 0.8 reflects straight back: the yellow
+    // pillar behind the viewer, as in the mirror test (±12/255, filtering of the map).
+    // Its pixel: 0.25 up at distance 5 with fovy 45 is 0.25/(5·tan 22.5°)·60 = 7 rows up.
+    const glm::dvec3 expect = wb::environmentColour({0, 0, 1}) * 255.0;
+    const uint8_t* p = first.at(80, 60 - 7);
+    for (int k = 0; k < 3; ++k)
+        CHECK(std::abs(p[k] - expect[k]) <= 12.0);
+    wb::test::checkGolden(first, "lab04-overview", 48, 0.5); // tolerances as the goldens above
+}
