@@ -5,8 +5,8 @@
 // Keys:
 //   1 2 3     glOrtho / gluPerspective / glFrustum
 //   z x       camera in / out (gluLookAt)
-//   n N       near plane closer / farther
-//   b B       far plane closer / farther
+//   n N       near plane -/+ one step (0.1, 0.25, then 0.5 ... 30 in steps of 0.5)
+//   b B       far plane -/+ 2 (2 ... 200)
 //   r         new random placement (reseed)
 //   c         classroom / single table
 //   m         mirror image in the blackboard wall on/off
