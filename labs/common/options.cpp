@@ -1,6 +1,9 @@
 #include "options.h"
 
-#include <cerrno>
+#include "cli_values.h"
+
+#include <CLI/CLI.hpp>
+
 #include <cstdlib>
 #include <sstream>
 
@@ -10,86 +13,106 @@ namespace {
 // Largest side we accept for --size: OSMesa's limit is 16384, and 8192² RGBA is already 256 MiB.
 constexpr int kMaxSide = 8192;
 
-bool parseInt(const std::string& s, int lo, int hi, int& out) {
-    if (s.empty() || s.size() > 9) return false;
-    for (char c : s)
-        if (c < '0' || c > '9') return false;
-    long v = std::strtol(s.c_str(), nullptr, 10);
-    if (v < lo || v > hi) return false;
-    out = int(v);
-    return true;
-}
+// The flags the shell declares that take a value (see cli::joinValues).
+const std::vector<std::string> kValueFlags = {"--out", "--size", "--keys", "--root", "--frames", "--screenshot",
+                                              "--ui-scale"};
 
-bool parseSize(const std::string& s, int& w, int& h) {
-    auto x = s.find('x');
-    if (x == std::string::npos) return false;
-    return parseInt(s.substr(0, x), 1, kMaxSide, w) && parseInt(s.substr(x + 1), 1, kMaxSide, h);
+bool parseScale(const std::string& s, float& out) {
+    char* end = nullptr;
+    const float v = std::strtof(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || !(v >= kMinUiScale && v <= kMaxUiScale)) return false;
+    out = v;
+    return true;
 }
 
 } // namespace
 
 bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHelp>& labOptions,
                   ShellOptions& o, std::string& error) {
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        auto value = [&](std::string& v) {
-            if (i + 1 >= argc) {
-                error = arg + " needs a value";
-                return false;
+    CLI::App app{"lab"};
+    app.set_help_flag(); // --help prints usageText(), our own format with the lab's keys
+    app.allow_extras();  // unknown flags and stray words are reported below, in our words
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast); // as before: the last wins
+    std::string valueError; // set by a value check before it throws, so our message is the one shown
+    auto check = [&valueError](const std::string& flag, bool ok, const std::string& message) {
+        if (ok) return;
+        valueError = message;
+        throw CLI::ValidationError(flag, message);
+    };
+    app.add_flag("--headless", o.headless);
+    app.add_flag("-h,--help", o.help);
+    app.add_option_function<std::string>("--out", [&](const std::string& v) {
+        check("--out", !v.empty(), "--out needs a file name");
+        o.out = v;
+    });
+    cli::addSizeOption(app, "--size", kMaxSide, o.width, o.height, valueError, "");
+    app.add_option_function<std::string>("--keys", [&](const std::string& v) {
+        std::vector<int> codes;
+        std::string keyError;
+        check("--keys", parseKeys(v, codes, keyError), keyError);
+        o.keys = v;
+    });
+    app.add_option("--root", o.root);
+    app.add_option_function<std::string>("--frames", [&](const std::string& v) {
+        check("--frames", cli::parseInt(v, 1, 1000000, o.frames), "--frames '" + v + "': expected a positive count");
+    });
+    app.add_flag("--smoke", o.smoke);
+    app.add_option("--screenshot", o.screenshot);
+    app.add_option_function<std::string>("--ui-scale", [&](const std::string& v) {
+        check("--ui-scale", parseScale(v, o.uiScale),
+              "--ui-scale '" + v + "': expected a number from 0.5 to 4 (1 = normal size)");
+    });
+    app.add_flag("--check-panel", o.checkPanel);
+
+    // The lab's own options, kept in command-line order for Lab::setOption.
+    std::vector<std::string> valueFlags = kValueFlags;
+    std::vector<std::vector<std::string>> labValues(labOptions.size());
+    std::vector<const CLI::Option*> labFlags(labOptions.size());
+    try {
+        for (size_t i = 0; i < labOptions.size(); ++i) {
+            const std::string flag = "--" + labOptions[i].name;
+            if (labOptions[i].argument.empty()) {
+                labFlags[i] = app.add_flag(flag)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+            } else {
+                labFlags[i] = app.add_option(flag, labValues[i])->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+                valueFlags.push_back(flag);
             }
-            v = argv[++i];
-            return true;
-        };
-        std::string v;
-        if (arg == "--headless") {
-            o.headless = true;
-        } else if (arg == "--help" || arg == "-h") {
-            o.help = true;
-        } else if (arg == "--out") {
-            if (!value(o.out)) return false;
-            if (o.out.empty()) {
-                error = "--out needs a file name";
-                return false;
-            }
-        } else if (arg == "--size") {
-            if (!value(v)) return false;
-            if (!parseSize(v, o.width, o.height)) {
-                error = "--size '" + v + "': expected WxH with 1 <= W,H <= " + std::to_string(kMaxSide);
-                return false;
-            }
-        } else if (arg == "--keys") {
-            if (!value(o.keys)) return false;
-            std::vector<int> codes;
-            if (!parseKeys(o.keys, codes, error)) return false;
-        } else if (arg == "--root") {
-            if (!value(o.root)) return false;
-        } else if (arg == "--frames") {
-            if (!value(v)) return false;
-            if (!parseInt(v, 1, 1000000, o.frames)) {
-                error = "--frames '" + v + "': expected a positive count";
-                return false;
-            }
-        } else if (arg == "--smoke") {
-            o.smoke = true;
-        } else if (arg == "--screenshot") {
-            if (!value(o.screenshot)) return false;
-        } else if (arg.rfind("--", 0) == 0) {
-            std::string name = arg.substr(2);
-            const OptionHelp* found = nullptr;
-            for (const auto& opt : labOptions)
-                if (opt.name == name) found = &opt;
-            if (!found) {
-                error = "unknown option " + arg + " (see --help)";
-                return false;
-            }
-            if (!found->argument.empty() && !value(v)) return false;
-            o.labOptions.emplace_back(name, found->argument.empty() ? "1" : v);
-        } else {
-            error = "unexpected argument '" + arg + "' (see --help)";
-            return false;
         }
+    } catch (const CLI::Error& e) {
+        error = std::string("the lab's options clash with the shell's: ") + e.what();
+        return false;
     }
-    if (o.headless && o.out.empty() && !o.help) {
+
+    const std::vector<std::string> args = cli::joinValues(argc, argv, valueFlags);
+    try {
+        app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
+    } catch (const CLI::ParseError& e) {
+        if (!valueError.empty()) {
+            error = valueError;
+        } else {
+            // The only other failure left: a value flag last on the line, e.g. `--out`.
+            std::string what = e.what();
+            auto colon = what.find(':');
+            error = (colon != std::string::npos ? what.substr(0, colon) : what) + " needs a value";
+        }
+        return false;
+    }
+    const auto extras = app.remaining();
+    if (!extras.empty()) {
+        const std::string& arg = extras.front();
+        error = arg.rfind('-', 0) == 0 ? "unknown option " + arg + " (see --help)"
+                                       : "unexpected argument '" + arg + "' (see --help)";
+        return false;
+    }
+    std::vector<size_t> seen(labOptions.size(), 0);
+    for (const CLI::Option* opt : app.parse_order())
+        for (size_t i = 0; i < labOptions.size(); ++i)
+            if (opt == labFlags[i]) {
+                const size_t k = seen[i]++;
+                o.labOptions.emplace_back(labOptions[i].name,
+                                          labOptions[i].argument.empty() ? "1" : labValues[i].at(k));
+            }
+    if (o.headless && o.out.empty() && !o.help && !o.checkPanel) {
         error = "--headless needs --out FILE.png";
         return false;
     }
@@ -124,7 +147,7 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
         for (const auto& [n, k] : named)
             if (name == n) code = k;
         int f = 0;
-        if (code < 0 && name.size() >= 2 && name[0] == 'f' && parseInt(name.substr(1), 1, 12, f))
+        if (code < 0 && name.size() >= 2 && name[0] == 'f' && cli::parseInt(name.substr(1), 1, 12, f))
             code = kKeyF1 + f - 1;
         if (code < 0) {
             error = "--keys: unknown key name {" + name + "}";
@@ -136,19 +159,36 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
     return true;
 }
 
+int windowWidth(const ShellOptions& opts, bool panelFillsWindow) {
+    return opts.width + (panelFillsWindow ? 0 : int(float(kPanelWidth) * opts.uiScale + 0.5f));
+}
+
 std::string usageText(const std::string& program, const Lab& lab) {
+    const bool fills = lab.panelFillsWindow();
+    ShellOptions defaults;
+    const std::string image = std::to_string(kDefaultWidth) + "x" + std::to_string(kDefaultHeight);
+    const std::string window = std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
     std::ostringstream s;
     s << lab.title() << "\n\n"
       << "usage: " << program << " [options]\n\n"
       << "  --headless            render with OSMesa (no window) and exit; needs --out\n"
-      << "  --out FILE.png        where the headless render goes\n"
-      << "  --size WxH            image/window size in pixels (default 800x600)\n"
+      << "  --out FILE.png        where the headless render goes\n";
+    if (fills)
+        s << "  --size WxH            window size in pixels (default " << window << ")\n";
+    else
+        s << "  --size WxH            headless: image size (default " << image << "); windowed: the scene's\n"
+          << "                        size, the panel (" << kPanelWidth << " px at --ui-scale 1) is added beside it:\n"
+          << "                        the window opens at " << window << " by default\n";
+    s << "  --ui-scale X          panel text and widgets X times larger, 0.5..4 (projector: 2);\n"
+      << "                        in the window also Ctrl+= / Ctrl+- or the panel's View slider\n"
       << "  --keys \"...\"          keys replayed before drawing, e.g. \"1g{left}\"\n"
       << "  --root DIR            folder with assets/ and shaders/ (default: the source tree;\n"
       << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
       << "  --frames N            windowed: quit after N frames (smoke tests)\n"
       << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
-      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame apart\n";
+      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame apart\n"
+      << "  --check-panel         headless: lay the panel out at the default size (after --keys, then\n"
+      << "                        after each one-letter key) and fail if any text is clipped\n";
     for (const auto& o : lab.options()) {
         std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
         s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what << "\n";
@@ -156,7 +196,8 @@ std::string usageText(const std::string& program, const Lab& lab) {
     s << "\nKeys:\n";
     for (const auto& k : lab.keys())
         s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what << "\n";
-    s << "  h         hide/show the panel\n  +/-       zoom\n  Esc       quit\n";
+    if (!fills) s << "  h         hide/show the panel\n  +/-       zoom (also the wheel)\n  drag      rotate the scene\n";
+    s << "  Ctrl+= / Ctrl+-  larger / smaller panel text\n  Esc       quit\n";
     return s.str();
 }
 

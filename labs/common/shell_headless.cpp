@@ -1,9 +1,13 @@
 // The headless path of the shell: OSMesa, no window, no GLUT, no ImGui drawing.
 #include "gl_util.h"
+#include "panel.h"
+#include "panel_check.h"
 #include "shell.h"
 
 #include <GL/osmesa.h>
+#include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace wb {
@@ -45,6 +49,85 @@ bool renderHeadless(Lab& lab, int width, int height, const std::vector<int>& key
     return true;
 }
 
+namespace {
+
+// --check-panel: the lab in an OSMesa context of the scene's size, its panel laid out by
+// ImGui (no GL drawing) at the window's default size and scale, once after --keys and once
+// after each one-letter key of the lab; every clipped text is printed. Exit 0 when none.
+int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const std::vector<int>& keys) {
+    const int width = opts.width, height = opts.height;
+    const int attribs[] = {OSMESA_FORMAT,  OSMESA_RGBA,           OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
+                           OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
+    std::vector<uint8_t> buffer(size_t(width) * size_t(height) * 4);
+    if (!ctx || !OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
+        std::fprintf(stderr, "%s: OSMesa: cannot create a %dx%d context\n", program, width, height);
+        if (ctx) OSMesaDestroyContext(ctx);
+        return 1;
+    }
+    View view;
+    view.width = width;
+    view.height = height;
+    view.headless = true;
+    bool panelShown = true;
+    lab.init();
+    for (int k : keys)
+        if (!shellKey(k, view, panelShown)) lab.key(k);
+
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    const std::string fontMessage = setupImGuiFonts(opts.uiScale);
+    if (!fontMessage.empty()) std::fprintf(stderr, "%s: %s\n", program, fontMessage.c_str());
+    unsigned char* pixels = nullptr;
+    int tw = 0, th = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &tw, &th); // builds the atlas; no texture is needed
+    const float windowW = float(windowWidth(opts, lab.panelFillsWindow()));
+    // Tall enough that no widget is scrolled out of view (ImGui draws only what is visible);
+    // the scrollbar's room is kept as in the real, shorter window.
+    const float tall = 20000.0f;
+    io.DisplaySize = ImVec2(windowW, tall);
+    PanelState panel;
+    panel.uiScale = panel.requestedScale = opts.uiScale;
+    panel.width = 0.0f;
+
+    std::vector<std::string> reported; // each text once, with the first state it was seen in
+    int clipped = 0;
+    auto check = [&](const std::string& state) {
+        glViewport(0, 0, width, height);
+        lab.draw(view);
+        // Three frames: the first sizes the window, the second adds the scrollbar, the third is checked.
+        for (int frame = 0; frame < 3; ++frame) {
+            io.DeltaTime = 1.0f / 60.0f;
+            ImGui::NewFrame();
+            if (frame == 2) panelcheck::start();
+            drawPanel(lab, panel, windowW, tall, true);
+            ImGui::Render();
+        }
+        for (const auto& c : panelcheck::stop()) {
+            if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
+            reported.push_back(c.text);
+            std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n", program, state.c_str(),
+                        c.text.c_str(), double(c.overflow), c.window.c_str());
+            ++clipped;
+        }
+    };
+    check(keys.empty() ? "at start" : "after --keys");
+    for (const auto& k : lab.keys()) {
+        if (k.key.size() != 1) continue;
+        const int code = static_cast<unsigned char>(k.key[0]);
+        if (!shellKey(code, view, panelShown)) lab.key(code);
+        check("after key '" + k.key + "'");
+    }
+    ImGui::DestroyContext();
+    OSMesaDestroyContext(ctx);
+    std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program, double(windowW),
+                opts.height, double(opts.uiScale), clipped, clipped == 1 ? "" : "s");
+    return clipped ? 1 : 0;
+}
+
+} // namespace
+
 int runLab(int argc, char** argv, LabFactory factory) {
     auto lab = factory();
     ShellOptions opts;
@@ -56,6 +139,14 @@ int runLab(int argc, char** argv, LabFactory factory) {
     if (opts.help) {
         std::fputs(usageText(argv[0], *lab).c_str(), stdout);
         return 0;
+    }
+    if (opts.checkPanel) {
+        std::vector<int> keys;
+        if (!parseKeys(opts.keys, keys, error) || !applyOptions(opts, *lab, error)) {
+            std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
+            return 2;
+        }
+        return checkPanel(argv[0], *lab, opts, keys);
     }
     if (opts.out.empty()) {
         std::fprintf(stderr, "%s: the headless renderer needs --out FILE.png\n", argv[0]);

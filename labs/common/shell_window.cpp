@@ -2,6 +2,8 @@
 // GLUT events go to ImGui first and are dropped when ImGui wants them
 // (as in Dear ImGui's GLUT + OpenGL2 example).
 #include "gl_util.h"
+#include "imgui_input.h"
+#include "panel.h"
 #include "shell.h"
 
 #include <GL/freeglut.h>
@@ -9,7 +11,9 @@
 #include <imgui_impl_glut.h>
 #include <imgui_impl_opengl2.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
@@ -25,15 +29,15 @@ struct WindowState {
     ShellOptions opts;
     std::string program;
     View view;                    // the scene's part of the window (left of the panel)
-    int windowWidth = 800;        // whole window, pixels
-    int windowHeight = 600;
+    int windowWidth = kDefaultWidth + kPanelWidth; // whole window, pixels
+    int windowHeight = kDefaultHeight;
     bool panelVisible = true;
+    PanelState panel;             // the panel's own settings (width, UI scale, measure fps)
+    ImGuiInput input;             // GLUT events queued for ImGui, see imgui_input.h
     int frame = 0;
     std::vector<int> smokeKeys;   // --smoke: keys still to press, one per frame
-    double frameMs = 0.0;         // CPU time of the last draw() + panel, milliseconds
-    double smoothMs = 0.0;        // the same, exponentially smoothed for reading
-    std::string lastScreenshot;   // path or error of the last screenshot, shown in the panel
-    bool screenshotRequested = false;
+    int settleFrames = 0;         // frames still to draw after an event (ImGui shows hover/press a frame late)
+    bool timerPending = false;    // a glutTimerFunc redraw is on its way (busy lab)
     bool dragging = false;        // left button down outside the panel
     bool moved = false;           // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
@@ -41,11 +45,14 @@ struct WindowState {
 };
 WindowState* g = nullptr;
 
-// The panel is docked at the right edge and the scene gets the rest of the window, so
-// nothing of the scene hides behind it (an instructor demoing keys 1-4 needs both).
-constexpr int kPanelWidth = 380;
+// While a lab works in the background (a trace), its progress is shown this often.
+constexpr unsigned kBusyRedrawMs = 33;
 
-int panelWidth() { return g->lab->panelFillsWindow() ? g->windowWidth : kPanelWidth; }
+int panelWidth() {
+    if (g->lab->panelFillsWindow()) return g->windowWidth;
+    float w = g->panel.width > 0 ? g->panel.width : defaultPanelWidth(g->panel.uiScale);
+    return std::min(int(w + 0.5f), g->windowWidth - 1);
+}
 
 void layout() {
     int sceneWidth = g->panelVisible ? g->windowWidth - panelWidth() : g->windowWidth;
@@ -55,10 +62,18 @@ void layout() {
 
 void quit() { glutLeaveMainLoop(); }
 
+// Something changed: draw this frame and a couple more for ImGui to catch up.
+void changed() {
+    g->settleFrames = 3;
+    glutPostRedisplay();
+}
+
+void setUiScale(float scale) { g->panel.requestedScale = scale; }
+
 void labKey(int code) {
     if (code == 27) return quit();
     if (!shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
-    glutPostRedisplay();
+    changed();
 }
 
 std::string timestampedName() {
@@ -74,27 +89,56 @@ std::string timestampedName() {
 void saveScreenshot(const std::string& path) {
     Image img = readFramebuffer(g->windowWidth, g->windowHeight);
     std::string error;
-    g->lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
-    std::fprintf(stderr, "%s\n", g->lastScreenshot.c_str());
+    g->panel.lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
+    std::fprintf(stderr, "%s\n", g->panel.lastScreenshot.c_str());
 }
 
-void drawPanel() {
-    ImGui::SetNextWindowPos(ImVec2(float(g->windowWidth - panelWidth()), 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(float(panelWidth()), float(g->windowHeight)), ImGuiCond_Always);
-    ImGui::Begin(g->lab->title().c_str(), nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::Text("frame %.2f ms (%.0f fps)", g->smoothMs, g->smoothMs > 0 ? 1000.0 / g->smoothMs : 0.0);
-    if (ImGui::Button("Screenshot (PNG)")) g->screenshotRequested = true;
-    if (!g->lastScreenshot.empty()) ImGui::TextWrapped("%s", g->lastScreenshot.c_str());
-    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) g->lab->gui();
-    if (ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) {
-        for (const auto& k : g->lab->keys()) ImGui::BulletText("%-6s %s", k.key.c_str(), k.what.c_str());
-        ImGui::BulletText("%-6s %s", "h", "hide/show this panel");
-        ImGui::BulletText("%-6s %s", "+/-", "zoom (also the wheel)");
-        ImGui::BulletText("%-6s %s", "drag", "rotate the scene");
-        ImGui::BulletText("%-6s %s", "Esc", "quit");
+// A new UI scale: fonts rebuilt at the new size (sharp, not stretched), style scaled, the
+// panel's width scaled with it. Between frames only.
+void applyUiScale() {
+    PanelState& p = g->panel;
+    if (p.scaleSliderActive || p.requestedScale == p.uiScale) return;
+    const float ratio = p.requestedScale / p.uiScale;
+    p.uiScale = p.requestedScale;
+    ImGui_ImplOpenGL2_DestroyFontsTexture(); // re-created by the next ImGui_ImplOpenGL2_NewFrame
+    const std::string message = setupImGuiFonts(p.uiScale);
+    if (!message.empty()) std::fprintf(stderr, "%s: %s\n", g->program.c_str(), message.c_str());
+    p.width = std::floor(p.width * ratio + 0.5f);
+    p.resetWidth = true;
+}
+
+// ImGui's mouse cursor (resize arrows on the panel's edge) as GLUT's.
+void updateCursor() {
+    int cursor = GLUT_CURSOR_LEFT_ARROW;
+    switch (ImGui::GetMouseCursor()) {
+    case ImGuiMouseCursor_ResizeEW: cursor = GLUT_CURSOR_LEFT_RIGHT; break;
+    case ImGuiMouseCursor_ResizeNS: cursor = GLUT_CURSOR_UP_DOWN; break;
+    case ImGuiMouseCursor_ResizeNWSE: cursor = GLUT_CURSOR_BOTTOM_RIGHT_CORNER; break;
+    case ImGuiMouseCursor_ResizeNESW: cursor = GLUT_CURSOR_BOTTOM_LEFT_CORNER; break;
+    case ImGuiMouseCursor_TextInput: cursor = GLUT_CURSOR_TEXT; break;
+    case ImGuiMouseCursor_Hand: cursor = GLUT_CURSOR_INFO; break;
+    default: break;
     }
-    ImGui::End();
+    static int current = -1;
+    if (cursor != current) glutSetCursor(current = cursor);
+}
+
+void busyTimer(int) {
+    g->timerPending = false;
+    glutPostRedisplay();
+}
+
+// Redraw on change only: input (and the frames ImGui needs after it), a queued event, a
+// lab working in the background, --frames / --smoke runs, or "measure fps".
+void scheduleNextFrame() {
+    const bool continuous = g->panel.measureFps || g->opts.frames > 0 || !g->smokeKeys.empty();
+    if (continuous || g->input.pending() || g->settleFrames > 0 || ImGui::GetIO().WantTextInput) {
+        if (g->settleFrames > 0) --g->settleFrames;
+        glutPostRedisplay();
+    } else if (g->lab->busy() && !g->timerPending) {
+        g->timerPending = true;
+        glutTimerFunc(kBusyRedrawMs, busyTimer, 0);
+    }
 }
 
 void display() {
@@ -103,10 +147,17 @@ void display() {
         labKey(g->smokeKeys.front());
         g->smokeKeys.erase(g->smokeKeys.begin());
     }
+    applyUiScale();
+    g->input.applyToFrame(ImGui::GetIO());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGLUT_NewFrame();
-    if (g->panelVisible) drawPanel();
+    if (g->panelVisible) {
+        const float before = g->panel.width;
+        drawPanel(*g->lab, g->panel, float(g->windowWidth), float(g->windowHeight));
+        if (g->panel.width != before) g->settleFrames = std::max(g->settleFrames, 1); // dragged: scene follows
+    }
     ImGui::Render();
+    updateCursor();
 
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
     layout();
@@ -116,6 +167,7 @@ void display() {
     bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames && g->smokeKeys.empty();
     if (g->panelVisible) {
         // The panel draws with its own GL state; keep the lab's.
+        glViewport(0, 0, g->windowWidth, g->windowHeight);
         glPushAttrib(GL_ALL_ATTRIB_BITS);
         glUseProgram(0);
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
@@ -123,40 +175,65 @@ void display() {
     }
     // --screenshot and the button save what the user sees, panel included (`h` hides it).
     if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot);
-    if (g->screenshotRequested) {
-        g->screenshotRequested = false;
+    if (g->panel.screenshotRequested) {
+        g->panel.screenshotRequested = false;
         saveScreenshot(timestampedName());
     }
     glutSwapBuffers();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    g->frameMs = ms;
-    g->smoothMs = g->frame == 0 ? ms : 0.9 * g->smoothMs + 0.1 * ms;
+    g->panel.frameMs = g->frame == 0 ? ms : 0.9 * g->panel.frameMs + 0.1 * ms;
     ++g->frame;
     if (lastFrame) return quit();
-    glutPostRedisplay();
+    scheduleNextFrame();
 }
 
 void reshape(int w, int h) {
-    ImGui_ImplGLUT_ReshapeFunc(w, h);
+    ImGui::GetIO().DisplaySize = ImVec2(float(w), float(h));
     g->windowWidth = w;
     g->windowHeight = h;
     layout();
+    changed();
 }
 
-void keyboard(unsigned char c, int x, int y) {
-    ImGui_ImplGLUT_KeyboardFunc(c, x, y);
+// Ctrl+= / Ctrl++ / Ctrl+- / Ctrl+0: the UI scale (GLUT gives '=' '+' '-' '0' with Ctrl down).
+bool uiScaleKey(unsigned char c, int mods) {
+    if (!(mods & GLUT_ACTIVE_CTRL)) return false;
+    const int direction = (c == '=' || c == '+') ? 1 : c == '-' ? -1 : c == '0' ? 0 : 2;
+    if (direction == 2) return false;
+    setUiScale(stepUiScale(g->panel.uiScale, direction));
+    return true;
+}
+
+void keyboard(unsigned char c, int, int) {
+    const int mods = glutGetModifiers();
+    g->input.keyboard(c, true, mods);
+    changed();
+    if (uiScaleKey(c, mods)) return;
     if (ImGui::GetIO().WantCaptureKeyboard) return;
     labKey(c);
 }
 
-void special(int key, int x, int y) {
-    ImGui_ImplGLUT_SpecialFunc(key, x, y);
+void keyboardUp(unsigned char c, int, int) {
+    g->input.keyboard(c, false, glutGetModifiers());
+    changed();
+}
+
+void special(int key, int, int) {
+    g->input.special(key, true, glutGetModifiers());
+    changed();
     if (ImGui::GetIO().WantCaptureKeyboard) return;
+    if (key >= GLUT_KEY_SHIFT_L && key <= GLUT_KEY_ALT_R) return; // modifiers alone are not lab keys
     labKey(kKeySpecial + key);
 }
 
+void specialUp(int key, int, int) {
+    g->input.special(key, false, glutGetModifiers());
+    changed();
+}
+
 void mouse(int button, int state, int x, int y) {
-    ImGui_ImplGLUT_MouseFunc(button, state, x, y);
+    g->input.mouse(button, state, x, y, glutGetModifiers());
+    changed();
     if (ImGui::GetIO().WantCaptureMouse && !g->dragging) return;
     if (button != GLUT_LEFT_BUTTON) return;
     if (state == GLUT_DOWN) {
@@ -168,11 +245,11 @@ void mouse(int button, int state, int x, int y) {
         if (g->dragging && !g->moved) g->lab->click(x, y, g->view);
         g->dragging = false;
     }
-    glutPostRedisplay();
 }
 
 void motion(int x, int y) {
-    ImGui_ImplGLUT_MotionFunc(x, y);
+    g->input.motion(x, y);
+    changed();
     if (!g->dragging) return;
     if (std::abs(x - g->downX) + std::abs(y - g->downY) > 3) g->moved = true;
     if (g->moved) {
@@ -181,14 +258,19 @@ void motion(int x, int y) {
     }
     g->lastX = x;
     g->lastY = y;
-    glutPostRedisplay();
+}
+
+void passiveMotion(int x, int y) {
+    g->input.motion(x, y);
+    changed();
 }
 
 void wheel(int button, int dir, int x, int y) {
-    ImGui_ImplGLUT_MouseWheelFunc(button, dir, x, y);
+    (void)button;
+    g->input.wheel(dir, x, y, glutGetModifiers());
+    changed();
     if (ImGui::GetIO().WantCaptureMouse) return;
     g->view.zoom *= dir > 0 ? 1.1f : 1.0f / 1.1f;
-    glutPostRedisplay();
 }
 
 // The headless renderer is the same lab compiled against OSMesa, installed next to us.
@@ -239,8 +321,10 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    // --size is the scene's size; the panel is added beside it.
-    state.windowWidth = state.opts.width + (state.lab->panelFillsWindow() ? 0 : kPanelWidth);
+    // --size is the scene's size; the panel is added beside it (usageText states the same sum).
+    state.panel.uiScale = state.panel.requestedScale = state.opts.uiScale;
+    state.panel.keysLikeShell = !state.lab->panelFillsWindow();
+    state.windowWidth = windowWidth(state.opts, state.lab->panelFillsWindow());
     state.windowHeight = state.opts.height;
     glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());
@@ -253,19 +337,23 @@ int runLab(int argc, char** argv, LabFactory factory) {
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini littering the working directory
-    ImGui::StyleColorsDark();
-    ImGui_ImplGLUT_Init();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr; // no imgui.ini littering the working directory
+    io.DisplaySize = ImVec2(float(state.windowWidth), float(state.windowHeight));
+    const std::string fontMessage = setupImGuiFonts(state.panel.uiScale);
+    if (!fontMessage.empty()) std::fprintf(stderr, "%s: %s\n", argv[0], fontMessage.c_str());
+    ImGui_ImplGLUT_Init(); // key map and frame timing only; events go through ImGuiInput
     ImGui_ImplOpenGL2_Init();
+    io.BackendFlags |= ImGuiBackendFlags_HasMouseCursors; // updateCursor(): the panel's edge can be dragged
     glutDisplayFunc(display);
     glutReshapeFunc(reshape);
     glutKeyboardFunc(keyboard);
-    glutKeyboardUpFunc(ImGui_ImplGLUT_KeyboardUpFunc);
+    glutKeyboardUpFunc(keyboardUp);
     glutSpecialFunc(special);
-    glutSpecialUpFunc(ImGui_ImplGLUT_SpecialUpFunc);
+    glutSpecialUpFunc(specialUp);
     glutMouseFunc(mouse);
     glutMotionFunc(motion);
-    glutPassiveMotionFunc(ImGui_ImplGLUT_MotionFunc);
+    glutPassiveMotionFunc(passiveMotion);
     glutMouseWheelFunc(wheel);
 
     state.lab->init();

@@ -20,4 +20,4 @@ target_link_libraries(spd_generate PRIVATE core)
 # Command-line renderer: rt_render SCENE.nff|.obj --out FILE.png [--size WxH --threads N --depth D --spd].
 add_executable(rt_render rt_render.cpp)
 target_compile_options(rt_render PRIVATE ${WB_WARNINGS})
-target_link_libraries(rt_render PRIVATE core)
+target_link_libraries(rt_render PRIVATE core wb_cli)

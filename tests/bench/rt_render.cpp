@@ -5,7 +5,7 @@
 // Usage: rt_render SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N]
 //                  [--depth D] [--spd] [--no-bvh]
 //   --size     image size (default: the file's `v` resolution, else 512x512)
-//   --threads  worker threads (default: all cores)
+//   --threads  worker threads (default and 0: all cores)
 //   --depth    reflections/refractions per eye ray (default 5; with --spd 4, which is
 //              the SPD's "depth 5" counting the eye ray as level 1)
 //   --spd      SPD rules: eye rays through the pixel corners ((w+1)(h+1) rays), depth 4
@@ -15,29 +15,23 @@
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/scene_file.h"
+#include "common/cli_values.h"
+
+#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 
 namespace {
 
-int usage(const char* argv0) {
-    std::fprintf(stderr,
-                 "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
-                 "[--depth D] [--spd] [--no-bvh]\n",
-                 argv0);
-    return 2;
-}
+constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
+                               "[--depth D] [--spd] [--no-bvh]\n";
 
-bool parseInt(const char* s, int lo, int hi, int& out) {
-    char* end = nullptr;
-    const long v = std::strtol(s, &end, 10);
-    if (end == s || *end != '\0' || v < lo || v > hi) return false;
-    out = int(v);
-    return true;
+int usage(const char* argv0) {
+    std::fprintf(stderr, kUsage, argv0);
+    return 2;
 }
 
 } // namespace
@@ -46,40 +40,33 @@ int main(int argc, char** argv) {
     if (argc < 2) return usage(argv[0]);
     std::string scenePath, out = "render.png";
     int width = 0, height = 0, threads = 0, depth = -1;
-    bool spd = false, useBvh = true;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto next = [&]() -> const char* { return i + 1 < argc ? argv[++i] : nullptr; };
-        if (a == "--out") {
-            const char* v = next();
-            if (!v) return usage(argv[0]);
-            out = v;
-        } else if (a == "--size") {
-            const char* v = next();
-            if (!v || std::sscanf(v, "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
-                width > 16384 || height > 16384) {
-                std::fprintf(stderr, "%s: --size needs WxH within 1..16384\n", argv[0]);
-                return 2;
-            }
-        } else if (a == "--threads") {
-            const char* v = next();
-            if (!v || !parseInt(v, 1, 1024, threads)) return usage(argv[0]);
-        } else if (a == "--depth") {
-            const char* v = next();
-            if (!v || !parseInt(v, 0, 64, depth)) return usage(argv[0]);
-        } else if (a == "--spd") {
-            spd = true;
-        } else if (a == "--no-bvh") {
-            useBvh = false;
-        } else if (a == "--help" || a == "-h") {
-            usage(argv[0]);
-            return 0;
-        } else if (!a.empty() && a[0] != '-' && scenePath.empty()) {
-            scenePath = a;
-        } else {
-            return usage(argv[0]);
-        }
+    bool spd = false, noBvh = false, help = false;
+    // The flags through CLI11, --size and --threads through the shell's shared checks
+    // (labs/common/cli_values.h): WxH strictly, threads 0 (all cores) .. 1024.
+    CLI::App app{"rt_render"};
+    app.set_help_flag();
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    std::string valueError;
+    app.add_flag("-h,--help", help);
+    app.add_option("scene", scenePath);
+    app.add_option("--out", out);
+    wb::cli::addSizeOption(app, "--size", 16384, width, height, valueError, "");
+    wb::cli::addThreadsOption(app, "--threads", threads, valueError, "");
+    app.add_option("--depth", depth)->check(CLI::Range(0, 64));
+    app.add_flag("--spd", spd);
+    app.add_flag("--no-bvh", noBvh);
+    const auto args = wb::cli::joinValues(argc, argv, {"--out", "--size", "--threads", "--depth"});
+    try {
+        app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
+    } catch (const CLI::ParseError&) {
+        if (!valueError.empty()) std::fprintf(stderr, "%s: %s\n", argv[0], valueError.c_str());
+        return usage(argv[0]);
     }
+    if (help) {
+        std::printf(kUsage, argv[0]);
+        return 0;
+    }
+    const bool useBvh = !noBvh;
     if (scenePath.empty()) return usage(argv[0]);
     // SPD's "maximum depth 5" counts the eye ray as level 1: 4 reflections.
     if (depth < 0) depth = spd ? 4 : 5;
