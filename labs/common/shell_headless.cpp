@@ -120,6 +120,7 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const st
         check("after key '" + k.key + "'");
     }
     ImGui::DestroyContext();
+    glFinish();
     OSMesaDestroyContext(ctx);
     std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program, double(windowW),
                 opts.height, double(opts.uiScale), clipped, clipped == 1 ? "" : "s");

@@ -2,6 +2,8 @@
 
 #include "common/gl.h"
 
+#include <imgui.h>
+
 namespace wb::test {
 namespace {
 class TestLab : public Lab {
@@ -26,14 +28,28 @@ public:
         glEnd();
     }
     bool key(int k) override {
+        if (k == 'L') {
+            s_->longLabel = !s_->longLabel;
+            return true;
+        }
         if (k != 'g') return false;
         s_->green = !s_->green;
         return true;
+    }
+    void gui() override {
+        if (ImGui::Button("Press me")) ++s_->presses;
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        s_->buttonX = 0.5f * (a.x + b.x);
+        s_->buttonY = 0.5f * (a.y + b.y);
+        if (!s_->longLabel) return;
+        ImGui::SliderFloat("a label far too long to fit beside its slider in any panel", &value_, 0, 1);
+        for (int i = 0; i < 60; ++i) ImGui::Text("line %d", i); // taller than the window: it scrolls
     }
     bool busy() const override { return s_->frames < 3; }
 
 private:
     TestLabState own_;
+    float value_ = 0.5f;
     TestLabState* s_;
 };
 } // namespace

@@ -1,6 +1,8 @@
 #pragma once
 // A tiny lab for testing the shell: a red triangle on blue; `g` turns it green;
 // it reports busy() for its first two frames, like a lab tracing in the background.
+// Its panel has a button (counted) and, after the unlisted key `L`, a label far too long
+// for any panel (the clipping check must fail on it) and 60 more lines (the panel scrolls).
 #include "common/lab.h"
 
 namespace wb::test {
@@ -9,6 +11,9 @@ struct TestLabState {
     bool green = false; // toggled by `g`
     int frames = 0;     // draw() calls so far
     int initCalls = 0;  // init() calls so far
+    bool longLabel = false; // `L`: show the too-long label
+    int presses = 0;        // clicks on the panel's button
+    float buttonX = 0, buttonY = 0; // the button's centre in the last frame, window pixels
 };
 
 std::unique_ptr<Lab> makeTestLab(TestLabState* observe = nullptr);
