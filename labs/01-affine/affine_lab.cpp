@@ -1,6 +1,7 @@
 #include "affine_lab.h"
 
 #include "common/gl.h"
+#include "common/panel.h"
 #include "core/homogeneous.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -208,9 +209,9 @@ class AffineLab : public Lab {
         if (!s.view3d) {
             int seed = int(s.seed);
             if (ImGui::InputInt("seed (r)", &seed) && seed >= 0) reseed(s, unsigned(seed));
-            ImGui::Text("K = (%.3f, %.3f)  L = (%.3f, %.3f)", s.k.x, s.k.y, s.l.x, s.l.y);
+            ImGui::TextWrapped("K = (%.3f, %.3f)  L = (%.3f, %.3f)", s.k.x, s.k.y, s.l.x, s.l.y);
             const Line2 line = affineLine(s);
-            ImGui::Text("line: %.4f x + %.4f y + %.4f = 0", line.a, line.b, line.c);
+            ImGui::TextWrapped("line: %.4f x + %.4f y + %.4f = 0", line.a, line.b, line.c);
             float angle = float(s.lightAngle);
             if (ImGui::SliderFloat("angle of l (deg)", &angle, -85.f, 85.f)) s.lightAngle = angle;
             const glm::dvec2 l = affineLightDir(s);
@@ -218,12 +219,12 @@ class AffineLab : public Lab {
             double sxy[2] = {s.light.x, s.light.y};
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
             const glm::dmat3 m = affineMatrix2d(s);
-            ImGui::Text("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
+            ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
             if (s.mode == AffineMode::ShadowPoint)
-                ImGui::TextUnformatted("(homogeneous: any non-zero multiple is the same map)");
-            ImGui::TextUnformatted(matrixText(glm::value_ptr(m), 3).c_str());
-            ImGui::Text("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
-                        lastBehind_);
+                ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
+            matrix(glm::value_ptr(m), 3);
+            ImGui::TextWrapped("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
+                               lastBehind_);
         } else {
             double pl[4] = {s.plane.n.x, s.plane.n.y, s.plane.n.z, s.plane.d};
             if (ImGui::InputScalarN("plane A B C D", ImGuiDataType_Double, pl, 4) &&
@@ -237,16 +238,23 @@ class AffineLab : public Lab {
                 (ld[0] != 0 || ld[1] != 0 || ld[2] != 0))
                 s.lightDir3 = {ld[0], ld[1], ld[2]};
             const glm::dmat4 m = affineMatrix3d(s);
-            ImGui::TextUnformatted("M (4x4), given to glMultMatrixd:");
-            ImGui::TextUnformatted(matrixText(glm::value_ptr(m), 4).c_str());
+            ImGui::TextWrapped("M (4x4), given to glMultMatrixd:");
+            matrix(glm::value_ptr(m), 4);
         }
         ImGui::Separator();
-        ImGui::TextUnformatted("Exercise 1.1: mirror in 3x - 2y + 1 = 0");
-        ImGui::TextUnformatted("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):");
-        ImGui::TextUnformatted(matrixText(glm::value_ptr(exComposite_), 3).c_str());
-        ImGui::TextUnformatted("(2) closed form I - 2 n (n, .)/(n, n):");
-        ImGui::TextUnformatted(matrixText(glm::value_ptr(exClosed_), 3).c_str());
-        ImGui::Text("max |(1) - (2)| = %.3g", exDiff_);
+        ImGui::TextWrapped("Exercise 1.1: mirror in 3x - 2y + 1 = 0");
+        ImGui::TextWrapped("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):");
+        matrix(glm::value_ptr(exComposite_), 3);
+        ImGui::TextWrapped("(2) closed form I - 2 n (n, .)/(n, n):");
+        matrix(glm::value_ptr(exClosed_), 3);
+        ImGui::TextWrapped("max |(1) - (2)| = %.3g", exDiff_);
+    }
+
+    // A matrix in the panel's monospaced font, so its columns line up.
+    static void matrix(const double* m, int n) {
+        ImGui::PushFont(panelMonoFont());
+        ImGui::TextUnformatted(matrixText(m, n).c_str());
+        ImGui::PopFont();
     }
 
   private:

@@ -195,7 +195,10 @@ class StencilLab : public Lab {
         ImGui::Checkbox("elliptical mirror (e)", &s_->ellipseMirror);
         ImGui::Checkbox("raw stencil buffer (m)", &s_->showMask);
         float p[3] = {float(s_->object.x), float(s_->object.y), float(s_->object.z)};
-        if (ImGui::DragFloat3("object (arrows, PgUp/PgDn)", p, 0.02f)) {
+        // The label above its widget: beside a three-field drag it would not fit the panel.
+        ImGui::TextUnformatted("object x, y, z (arrows, PgUp/PgDn)");
+        ImGui::SetNextItemWidth(-1.0f);
+        if (ImGui::DragFloat3("##object", p, 0.02f)) {
             s_->object = glm::dvec3(p[0], p[1], p[2]);
             clampObject();
         }
