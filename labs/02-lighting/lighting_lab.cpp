@@ -23,6 +23,27 @@ const char* comboName(int combo) {
     }
 }
 
+const char* comboLookFor(int combo) {
+    switch (combo) {
+    case 1:
+        return "Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
+               "so elsewhere each cube shows its ambient term alone. The left cube's front "
+               "face turns towards the half-vector as a whole; the right cube's corner "
+               "normals catch it only faintly, near one corner.";
+    case 2:
+        return "Look for faces shaded by their angle to the light, and for the missing "
+               "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
+               "its dark green diffuse part (0.2) shows.";
+    case 3:
+        return "Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
+               "light with only GL_SPECULAR reflects none of it; every face shows the same "
+               "ambient colour.";
+    default:
+        return "Look for bright green faces turned to the light and darker ones turned away: "
+               "matte material, diffuse light, Lambert's cosine and no highlight anywhere.";
+    }
+}
+
 Material comboMaterial(const LightingState& s) {
     Material m;
     m.ambient = {0.2, 0.2, 0.2, 1};
@@ -215,6 +236,7 @@ class LightingLab : public Lab {
                 {"2", "specular material + diffuse light"},
                 {"3", "diffuse material + specular light"},
                 {"4", "diffuse material + diffuse light"},
+                {"5", "all four combinations side by side (2x2)"},
                 {"a", "global ambient on/off"},
                 {"v", "local / infinite viewer"},
                 {"e", "emission on/off"},
@@ -238,6 +260,10 @@ class LightingLab : public Lab {
     void gui() override;
 
   private:
+    // One view of the two cubes with state `s` into the current viewport.
+    void drawScene(const View& view, const LightingState& s);
+    void drawDigit(int digit, int w, int h);
+
     LightingState own_;
     LightingState* s_;
     GLuint program_ = 0;
@@ -246,8 +272,75 @@ class LightingLab : public Lab {
 
 void LightingLab::draw(const View& view) {
     const LightingState& s = *s_;
-    glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+    glClearColor(s.background.r, s.background.g, s.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!s.compareAll) {
+        drawScene(view, s);
+        return;
+    }
+    // 2×2: combination c in quadrant (c-1)%2, (c-1)/2 from the top left, each with the
+    // same state otherwise and the same aspect as the whole view.
+    GLint vp[4];
+    glGetIntegerv(GL_VIEWPORT, vp);
+    View quarter = view;
+    quarter.width = std::max(1, vp[2] / 2);
+    quarter.height = std::max(1, vp[3] / 2);
+    for (int c = 1; c <= 4; ++c) {
+        const int col = (c - 1) % 2, row = (c - 1) / 2;
+        glViewport(vp[0] + col * quarter.width, vp[1] + (1 - row) * quarter.height,
+                   quarter.width, quarter.height);
+        LightingState one = s;
+        one.combo = c;
+        drawScene(quarter, one);
+        drawDigit(c, quarter.width, quarter.height);
+    }
+    glViewport(vp[0], vp[1], vp[2], vp[3]);
+    // The cross between the quadrants.
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, 1, 0, 1, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glColor3f(0.9f, 0.9f, 0.9f);
+    glLineWidth(2.0f);
+    glBegin(GL_LINES);
+    glVertex2f(0.5f, 0.0f);
+    glVertex2f(0.5f, 1.0f);
+    glVertex2f(0.0f, 0.5f);
+    glVertex2f(1.0f, 0.5f);
+    glEnd();
+    glLineWidth(1.0f);
+}
+
+// The combination's number in the top-left corner of a quadrant, drawn with lines so it
+// shows in headless renders (and screenshots) too: seven-segment strokes, 24 px high.
+void LightingLab::drawDigit(int digit, int w, int h) {
+    // Segments a b c d e f g on a 0..1 × 0..2 cell (y up).
+    static const float kSeg[7][4] = {{0, 2, 1, 2}, {1, 2, 1, 1}, {1, 1, 1, 0}, {0, 0, 1, 0},
+                                     {0, 1, 0, 0}, {0, 2, 0, 1}, {0, 1, 1, 1}};
+    static const char* const kOn[5] = {"", "bc", "abged", "abgcd", "fgbc"};
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_LIGHTING);
+    glDisable(GL_DEPTH_TEST);
+    glColor3f(1.0f, 0.9f, 0.2f);
+    glLineWidth(3.0f);
+    const float x0 = 10.0f, y0 = float(h) - 10.0f - 24.0f, size = 12.0f;
+    glBegin(GL_LINES);
+    for (const char* on = kOn[digit]; *on; ++on) {
+        const float* g = kSeg[*on - 'a'];
+        glVertex2f(x0 + g[0] * size, y0 + g[1] * size);
+        glVertex2f(x0 + g[2] * size, y0 + g[3] * size);
+    }
+    glEnd();
+    glLineWidth(1.0f);
+}
+
+void LightingLab::drawScene(const View& view, const LightingState& s) {
+    glClear(GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     setPerspective(view, kLightingFovy, 1.0, 50.0);
     glLoadIdentity();
@@ -301,6 +394,10 @@ bool LightingLab::key(int k) {
     case '3':
     case '4':
         s.combo = k - '0';
+        s.compareAll = false;
+        return true;
+    case '5':
+        s.compareAll = !s.compareAll;
         return true;
     case 'a':
         s.globalAmbientOn = !s.globalAmbientOn;
@@ -371,17 +468,26 @@ bool LightingLab::key(int k) {
 
 void LightingLab::gui() {
     LightingState& s = *s_;
-    ImGui::Text("Left cube: normals perpendicular to the faces.");
-    ImGui::Text("Right cube: normals from the cube centre through the vertex.");
+    ImGui::TextWrapped("Left cube: normals perpendicular to the faces.");
+    ImGui::TextWrapped("Right cube: normals from the cube centre through the vertex.");
     ImGui::Separator();
-    ImGui::Text("Combination %s", comboName(s.combo));
     for (int c = 1; c <= 4; ++c) {
         if (c > 1) ImGui::SameLine();
-        if (ImGui::RadioButton(std::to_string(c).c_str(), s.combo == c)) s.combo = c;
+        if (ImGui::RadioButton(std::to_string(c).c_str(), !s.compareAll && s.combo == c))
+            s.combo = c, s.compareAll = false;
     }
-    ImGui::TextWrapped(
-        "A specular light only feeds GL_SPECULAR reflection and a diffuse light only "
-        "GL_DIFFUSE: with 3 the matte cubes show nothing but ambient light.");
+    ImGui::SameLine();
+    ImGui::Checkbox("2x2 (5)", &s.compareAll);
+    if (s.compareAll) {
+        ImGui::TextWrapped("All four side by side, numbered as the keys: 1 2 on top, 3 4 below.");
+        for (int c = 1; c <= 4; ++c)
+            ImGui::TextWrapped("%s", comboName(c));
+    } else {
+        ImGui::TextWrapped("%s", comboName(s.combo));
+        ImGui::TextWrapped("%s", comboLookFor(s.combo));
+    }
+    ImGui::TextWrapped("A specular light only feeds GL_SPECULAR reflection and a diffuse light "
+                       "only GL_DIFFUSE.");
     ImGui::Separator();
     ImGui::Checkbox("global ambient (a)", &s.globalAmbientOn);
     ImGui::SameLine();

@@ -22,8 +22,15 @@ enum class FaceShading {
 struct LightingState {
     // 1..4: {specular, diffuse} material × {specular, diffuse} light, the lab's table
     int combo = 1;
-    bool globalAmbientOn = true;               // GL_LIGHT_MODEL_AMBIENT = globalAmbient, else black
-    glm::vec3 globalAmbient{0.2f, 0.2f, 0.2f}; // GL_LIGHT_MODEL_AMBIENT (GL's default grey)
+    bool compareAll = false; // key 5: the four combinations side by side (2×2), same state
+    bool globalAmbientOn = true; // GL_LIGHT_MODEL_AMBIENT = globalAmbient, else black
+    // GL_LIGHT_MODEL_AMBIENT: twice GL's default 0.2, so that combinations 1 and 3 (no
+    // diffuse light) show the cubes at 0.2·0.4 = 0.08, 20/255 - dark silhouettes that read
+    // against the background below (at 0.2 they were 10/255 on a 20/255 background).
+    glm::vec3 globalAmbient{0.4f, 0.4f, 0.4f};
+    // glClearColor: a mid grey-blue, far from both the dark ambient-only cubes (20/255)
+    // and the white highlights, so every combination reads on a projector.
+    glm::vec3 background{0.42f, 0.45f, 0.5f};
     bool localViewer = false;                  // GL_LIGHT_MODEL_LOCAL_VIEWER
     bool emissionOn = false;                   // material GL_EMISSION = emission, else black
     glm::vec3 emission{0.0f, 0.0f, 0.35f};     // GL_EMISSION colour when on
@@ -50,6 +57,8 @@ Material comboMaterial(const LightingState& s);
 Light comboLight(const LightingState& s); // position and spot direction in scene coordinates
 LightModel lightModel(const LightingState& s);
 const char* comboName(int combo);
+// What to look for in combination 1..4: one sentence for the panel.
+const char* comboLookFor(int combo);
 
 // Send core lighting state to GL: the light's position and spot direction are
 // transformed by the current modelview, as glLightfv does.

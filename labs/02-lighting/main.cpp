@@ -3,6 +3,7 @@
 // spot, subdivided faces and per-fragment GLSL Phong.
 // Keys:
 //   1 2 3 4   specular/diffuse material x specular/diffuse light
+//   5         all four combinations side by side (2x2)
 //   a         global ambient (GL_LIGHT_MODEL_AMBIENT) on/off
 //   v         local / infinite viewer (GL_LIGHT_MODEL_LOCAL_VIEWER)
 //   e         emission (GL_EMISSION) on/off

@@ -29,6 +29,7 @@ int brightness(const wb::Image& img, glm::ivec2 p) {
 wb::LightingState headOn(int n) {
     wb::LightingState s;
     s.tilt = 0;
+    s.globalAmbient = {0.2f, 0.2f, 0.2f}; // GL's default, so the ambient term is 0.04
     s.lightPos = {0, 0, 1, 0};
     s.showMarker = false;
     s.subdivisions = n;
@@ -154,4 +155,100 @@ TEST_CASE("keys 1-4 set the table's combination and name it", "[gl]") {
     CHECK(std::string(wb::comboName(3)).find("diffuse material + specular light") !=
           std::string::npos);
     CHECK_FALSE(lab->key('Z'));
+}
+
+namespace {
+
+// Mean colour of the cubes' pixels and the distance (Euclidean, 0..255 per channel)
+// from the background. The cubes' pixels are found by rendering the same state with a
+// white emission, which saturates every cube pixel to (255, 255, 255) whatever the light.
+struct Contrast {
+    glm::dvec3 mean{0};
+    double distance = 0;
+    int pixels = 0;
+};
+Contrast cubeContrast(wb::LightingState s) {
+    s.showMarker = false;
+    auto lab = wb::makeLightingLab(&s);
+    const wb::Image img = wb::test::renderLab(*lab, kW, kH);
+    s.emissionOn = true;
+    s.emission = {1, 1, 1};
+    const wb::Image mask = wb::test::renderLab(*lab, kW, kH);
+    Contrast c;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const uint8_t* m = mask.at(x, y);
+            if (m[0] != 255 || m[1] != 255 || m[2] != 255) continue;
+            const uint8_t* p = img.at(x, y);
+            c.mean += glm::dvec3(p[0], p[1], p[2]);
+            ++c.pixels;
+        }
+    c.mean /= std::max(c.pixels, 1);
+    c.distance = glm::length(c.mean - glm::dvec3(s.background) * 255.0);
+    return c;
+}
+
+} // namespace
+
+// Issue 11: in combinations 1 and 3 (no diffuse light) the cubes were their ambient
+// 0.2·0.2 = 10/255 on a 20/255 background and vanished on a projector.
+TEST_CASE("in every combination the cubes' mean colour stands off the background", "[gl]") {
+    // Margin 60/255 (Euclidean over RGB): a quarter of the range, about what a projector's
+    // washed-out contrast still separates; the old defaults gave 12 and 14 in 1 and 3.
+    constexpr double kMargin = 60.0;
+    for (int combo = 1; combo <= 4; ++combo) {
+        wb::LightingState s;
+        s.combo = combo;
+        const Contrast c = cubeContrast(s);
+        INFO("combination " << combo << ": cube mean " << c.mean.r << " " << c.mean.g << " "
+                            << c.mean.b << " over " << c.pixels << " px, distance " << c.distance);
+        REQUIRE(c.pixels > kW * kH / 10); // both cubes are in the picture
+        CHECK(c.distance > kMargin);
+        WARN("combination " << combo << ": distance " << c.distance);
+    }
+    // The check fails on the old defaults (GL's 0.2 ambient, the 0.08 grey background).
+    for (int combo : {1, 3}) {
+        wb::LightingState old;
+        old.combo = combo;
+        old.globalAmbient = {0.2f, 0.2f, 0.2f};
+        old.background = {0.08f, 0.08f, 0.1f};
+        const Contrast c = cubeContrast(old);
+        INFO("old defaults, combination " << combo << ": distance " << c.distance);
+        CHECK(c.distance < kMargin);
+    }
+}
+
+TEST_CASE("key 5 shows the four combinations side by side", "[gl]") {
+    wb::LightingState s;
+    auto lab = wb::makeLightingLab(&s);
+    const int w = 2 * kW, h = 2 * kH;
+    const wb::Image all = wb::test::renderLab(*lab, w, h, "5");
+    CHECK(s.compareAll);
+    // Each quadrant is the whole-view picture of its combination, so the
+    // quadrants differ from each other where the lighting differs: compare the mean
+    // colour of each quadrant's middle (the cubes) pairwise.
+    glm::dvec3 mean[4];
+    for (int q = 0; q < 4; ++q) {
+        mean[q] = glm::dvec3(0);
+        const int x0 = (q % 2) * kW, y0 = (q / 2) * kH;
+        for (int y = y0 + kH / 4; y < y0 + 3 * kH / 4; ++y)
+            for (int x = x0 + kW / 8; x < x0 + 7 * kW / 8; ++x) {
+                const uint8_t* p = all.at(x, y);
+                mean[q] += glm::dvec3(p[0], p[1], p[2]);
+            }
+    }
+    for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+            INFO("quadrants " << a + 1 << " and " << b + 1);
+            CHECK(glm::length(mean[a] - mean[b]) > 0.0);
+        }
+    // Combination 4 (bottom right) is the only one with green diffuse light: its middle
+    // is the greenest.
+    for (int q = 0; q < 3; ++q)
+        CHECK(mean[3].g - mean[3].r > mean[q].g - mean[q].r);
+    // 1-4 go back to a single view.
+    REQUIRE(lab->key('2'));
+    CHECK_FALSE(s.compareAll);
+    CHECK(s.combo == 2);
+    wb::test::checkGolden(all, "lab02-compare-2x2", 4, 0.1); // tolerances as the goldens above
 }
