@@ -115,7 +115,10 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, b
     if (ImGui::Button("Screenshot (PNG)")) p.screenshotRequested = true;
     if (!p.lastScreenshot.empty()) ImGui::TextWrapped("%s", p.lastScreenshot.c_str());
 
-    if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) lab.gui();
+    if (fills)
+        lab.gui(); // the panel is the whole program (the launcher): no header above it
+    else if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen))
+        lab.gui();
     if (ImGui::CollapsingHeader("View")) {
         ImGui::TextUnformatted("UI scale (Ctrl+= / Ctrl+-)");
         ImGui::SetNextItemWidth(-1.0f);

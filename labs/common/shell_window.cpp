@@ -72,7 +72,8 @@ void setUiScale(float scale) { g->panel.requestedScale = scale; }
 
 void labKey(int code) {
     if (code == 27) return quit();
-    if (!shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
+    // A lab whose panel is its whole window (the launcher) has no scene to zoom or panel to hide.
+    if (g->lab->panelFillsWindow() || !shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
     changed();
 }
 

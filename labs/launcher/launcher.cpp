@@ -1,14 +1,17 @@
 #include "launcher.h"
 
 #include "common/gl.h"
+#include "common/panel.h"
+#include "common/paths.h"
+#include "core/image.h"
 #include "lab_list.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <climits>
-#include <cstdlib>
-#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,22 +34,54 @@ int labCount() {
     return n;
 }
 
-// Runs argv to completion; returns its exit status (or -1 when it could not start).
-int runAndWait(const std::vector<std::string>& args) {
+// Modification time of a file, 0 when it does not exist.
+long long mtime(const std::string& path) {
+    struct stat st {};
+    return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) ? (long long)st.st_mtime : 0;
+}
+
+// Starts argv without waiting; -1 when it could not start.
+pid_t spawn(const std::vector<std::string>& args, bool quiet) {
     std::vector<char*> argv;
     for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     pid_t pid = fork();
-    if (pid < 0) return -1;
     if (pid == 0) {
+        if (quiet) {
+            if (std::freopen("/dev/null", "w", stdout) == nullptr) _exit(127);
+        }
         execv(argv[0], argv.data());
         std::perror(argv[0]);
         _exit(127);
     }
+    return pid;
+}
+
+// Runs argv to completion; returns its exit status (or -1 when it could not start).
+int runAndWait(const std::vector<std::string>& args) {
+    pid_t pid = spawn(args, false);
+    if (pid < 0) return -1;
     int status = 0;
     if (waitpid(pid, &status, 0) < 0) return -1;
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
+
+// Where thumbnails rendered on first start are kept when the build did not make them
+// (a lab built on its own): $XDG_CACHE_HOME/workbench, else ~/.cache/workbench.
+std::string cacheDir() {
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    std::string dir = xdg && *xdg ? std::string(xdg) : home && *home ? std::string(home) + "/.cache" : "/tmp";
+    return dir + "/workbench-thumbs";
+}
+
+// One lab's card: its thumbnail as a GL texture once loaded.
+struct Card {
+    GLuint texture = 0;
+    std::string status; // "rendering the picture..." or why there is none
+    pid_t renderer = -1; // a headless render of the thumbnail in progress
+    std::string renderPath;
+};
 
 class Launcher : public Lab {
 public:
@@ -59,11 +94,23 @@ public:
     }
     bool panelFillsWindow() const override { return true; }
     void init() override {
-        signal(SIGCHLD, SIG_IGN); // labs run on their own; no zombies
+        cards_.resize(size_t(labCount()));
+        for (int i = 0; i < labCount(); ++i) loadThumbnail(i);
     }
-    void draw(const View&) override {
+    ~Launcher() override {
+        for (auto& c : cards_) {
+            if (c.texture) glDeleteTextures(1, &c.texture);
+            if (c.renderer > 0) waitpid(c.renderer, nullptr, 0);
+        }
+    }
+    void draw(const View& view) override {
+        if (view.headless) pollRenderers(true); // a headless render shows the finished cards
         glClearColor(0.12f, 0.14f, 0.17f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    }
+    // While a thumbnail renders in the background, the shell keeps drawing (and we poll).
+    bool busy() const override {
+        return std::any_of(cards_.begin(), cards_.end(), [](const Card& c) { return c.renderer > 0; });
     }
     bool key(int code) override {
         int i = code - '1';
@@ -72,29 +119,118 @@ public:
         return true;
     }
     void gui() override {
-        ImGui::TextWrapped("Choose a lab; it opens in its own window.");
-        for (int i = 0; i < labCount(); ++i) {
-            ImGui::PushID(i);
-            if (ImGui::Button(kLabs[i].executable, ImVec2(160, 0))) start(i);
-            ImGui::SameLine();
-            ImGui::TextWrapped("%s", kLabs[i].description);
-            ImGui::PopID();
+        pollRenderers(false);
+        ImGui::TextWrapped("Choose a lab (click its picture or press its number); it opens in its own window.");
+        const float scale = ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
+        const ImVec2 thumb(float(kThumbWidth) * 0.5f * scale, float(kThumbHeight) * 0.5f * scale);
+        const int columns = ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 260.0f * scale) ? 2 : 1;
+        if (ImGui::BeginTable("labs", columns, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_PadOuterX)) {
+            for (int i = 0; i < labCount(); ++i) {
+                ImGui::TableNextColumn();
+                card(i, thumb);
+            }
+            ImGui::EndTable();
         }
         if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
     }
 
 private:
+    void card(int i, ImVec2 thumb) {
+        const LabEntry& lab = kLabs[i];
+        Card& c = cards_[size_t(i)];
+        ImGui::PushID(i);
+        bool clicked = false;
+        if (c.texture) {
+            clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
+        } else {
+            clicked = ImGui::Button(c.status.empty() ? "(no picture)" : c.status.c_str(), thumb);
+        }
+        ImGui::SameLine();
+        ImGui::BeginGroup();
+        if (i < 9)
+            ImGui::Text("%d  %s", i + 1, lab.executable);
+        else
+            ImGui::TextUnformatted(lab.executable);
+        ImGui::TextWrapped("%s", lab.topic);
+        if (*lab.docsPage) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("%s", lab.docsPage);
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", assetPath(lab.docsPage).c_str());
+        }
+        if (ImGui::Button("Start")) clicked = true;
+        ImGui::EndGroup();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.description);
+        ImGui::PopID();
+        if (clicked) start(i);
+    }
+
+    // The build's thumbnail (bin/thumbs/), else one cached from an earlier start if it is not
+    // older than the lab, else render it now in the background.
+    void loadThumbnail(int i) {
+        const LabEntry& lab = kLabs[i];
+        const std::string headless = binDir() + "/" + lab.executable + "-headless";
+        const std::string built = binDir() + "/thumbs/" + lab.thumbnail;
+        const std::string cached = cacheDir() + "/" + lab.thumbnail;
+        Card& c = cards_[size_t(i)];
+        if (mtime(built) >= mtime(headless) && upload(c, built)) return;
+        if (mtime(cached) >= mtime(headless) && upload(c, cached)) return;
+        mkdir(cacheDir().c_str(), 0755);
+        c.renderPath = cached;
+        c.renderer = spawn({headless, "--out", cached, "--size",
+                            std::to_string(kThumbWidth) + "x" + std::to_string(kThumbHeight)},
+                           true);
+        c.status = c.renderer > 0 ? "rendering..." : "(no picture)";
+    }
+
+    void pollRenderers(bool wait) {
+        for (auto& c : cards_) {
+            if (c.renderer <= 0) continue;
+            int status = 0;
+            pid_t r = waitpid(c.renderer, &status, wait ? 0 : WNOHANG);
+            if (r == 0) continue;
+            c.renderer = -1;
+            const bool ok = r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+            if (!ok || !upload(c, c.renderPath)) c.status = "(no picture)";
+        }
+    }
+
+    bool upload(Card& c, const std::string& path) {
+        Image img;
+        if (!readImage(path, img, 4)) return false;
+        if (!c.texture) glGenTextures(1, &c.texture);
+        glBindTexture(GL_TEXTURE_2D, c.texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.data.data());
+        glBindTexture(GL_TEXTURE_2D, 0);
+        c.status.clear();
+        return true;
+    }
+
+    // The lab runs on its own: a double fork, so it is never our zombie and we need no SIGCHLD handler.
     void start(int i) {
         std::string exe = binDir() + "/" + kLabs[i].executable;
+#if defined(WB_HEADLESS)
+        // The headless launcher (workbench-panel-check) has no display to open a lab on.
+        status_ = "would start " + exe;
+        return;
+#endif
         pid_t pid = fork();
         if (pid == 0) {
-            execl(exe.c_str(), exe.c_str(), static_cast<char*>(nullptr));
-            std::perror(exe.c_str());
-            _exit(127);
+            if (fork() == 0) {
+                execl(exe.c_str(), exe.c_str(), static_cast<char*>(nullptr));
+                std::perror(exe.c_str());
+            }
+            _exit(0);
         }
+        if (pid > 0) waitpid(pid, nullptr, 0);
         status_ = pid > 0 ? "started " + exe : "could not start " + exe;
         std::fprintf(stderr, "%s\n", status_.c_str());
     }
+
+    std::vector<Card> cards_;
     std::string status_;
 };
 
