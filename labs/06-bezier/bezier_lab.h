@@ -13,7 +13,7 @@ namespace wb {
 
 // The lab's plain state; the keys and the panel change it.
 struct BezierLabState {
-    int shape = 0;            // 0 = circle from curves (key 1), 1 = sphere from patches (key 2)
+    int shape = 0; // 0 = circle from curves (1), 1 = sphere from patches (2), 2 = Utah teapot (3)
     bool showControl = false; // c: control polygon (circle) / control net (sphere)
     int grid = 16;            // glMapGrid segments per curve or per patch side, 2..256 ([ and ])
     int circleVariant = 0;    // index into bezierCircleVariants(); 0 = the course's two arcs
@@ -23,6 +23,10 @@ struct BezierLabState {
     // n: draw the sphere's grid from core's evalPatch normals (defined at the patch corners,
     // where du ∥ dv) instead of glEvalMesh2 + GL_AUTO_NORMAL (zero normal there).
     bool coreNormals = false;
+    // z: an inset magnifying where GL_AUTO_NORMAL has no normal - a corner of the sphere's
+    // patches (du ∥ dv), the teapot lid's pole (du = 0) - with a marker around that spot.
+    bool zoomInset = true;
+    double shownMs = -1.0; // the GL time per mesh the panel last showed (-1: none; for tests)
 };
 
 // One way of building the circle: its arcs (unit radius) and their radial error.
@@ -51,6 +55,29 @@ constexpr double kBezierViewHalfHeight = 3.6;
 constexpr double kBezierSphereViewHalfHeight = 6.0;
 // The sphere is tilted by this many degrees about x so that both patches show.
 constexpr double kBezierSphereTilt = -60.0;
+// The teapot view: orthographic half height, looked at from this many degrees above
+// and turned this many degrees about the vertical so that spout, handle and lid show.
+constexpr double kBezierTeapotViewHalfHeight = 2.4;
+constexpr double kBezierTeapotTilt = 25.0, kBezierTeapotTurn = -30.0;
+// The inset: half the side of the magnified square in scene units (1/20 of the sphere
+// view's height, so 30× there) and its side as a fraction of the view's smaller side.
+constexpr double kBezierInsetHalfSize = 0.2;
+constexpr double kBezierInsetFraction = 0.42;
+// Where the inset looks, in the shape's own coordinates: the front corner (2, -2, 0) of
+// the sphere's patches, the teapot's knob top (0, 0, 3.15).
+glm::dvec3 bezierInsetFocus(int shape);
+
+// GL's evaluator against core on the teapot's 32 patches at grid n (GL_FEEDBACK: the
+// points, and GL_AUTO_NORMAL's normals read back through lighting).
+struct TeapotGlComparison {
+    double maxPointError = 0.0;  // max |p_GL - p_core| over all grid vertices (float vs double)
+    double maxNormalAngle = 0.0; // degrees, max angle between the normals where GL has one
+    int noNormal = 0;            // grid vertices where GL_AUTO_NORMAL gives none (du × dv = 0)
+    int coreLimit = 0;           // grid vertices where core took the limit (normalKind 1)
+    int vertices = 0;            // all grid vertices compared
+};
+// Needs a current GL context; leaves the GL state as it found it.
+TeapotGlComparison compareTeapotWithGl(int n);
 
 std::unique_ptr<Lab> makeBezierLab();
 // `observe` is the state the lab uses (tests read and set it).

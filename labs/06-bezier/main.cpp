@@ -10,7 +10,9 @@
 //   a         next approximation: more arcs, fitted handles, fitted net
 //   w         sphere wireframe / filled
 //   t         true circle / sphere in grey
-//   n         sphere normals: GL_AUTO_NORMAL / core evalPatch (limit at the tangent corners)
+//   n         sphere / teapot normals: GL_AUTO_NORMAL / core evalPatch (limits at corners, poles)
+//   3         the Utah teapot from Newell's 32 Bezier patches (glMap2f / core de Casteljau)
+//   z         inset magnifying the spot GL_AUTO_NORMAL leaves unlit, on/off
 #include "bezier_lab.h"
 #include "common/shell.h"
 

@@ -9,6 +9,10 @@
 #include "core/bezier_shapes.h"
 #include "render_check.h"
 
+#include "common/options.h"
+
+#include <imgui.h>
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -268,7 +272,8 @@ TEST_CASE("Lab 06 goldens", "[gl][bezier]") {
         {"", "lab06-circle"},           {"c", "lab06-circle-control"},
         {"aa]t", "lab06-circle-4arcs"}, {"2", "lab06-sphere"},
         {"2c", "lab06-sphere-net"},     {"2a", "lab06-sphere-fitted"},
-        {"2w[", "lab06-sphere-wire-8"}, {"2n", "lab06-sphere-core-normals"}};
+        {"2w[", "lab06-sphere-wire-8"}, {"2n", "lab06-sphere-core-normals"},
+        {"3", "lab06-teapot"},          {"3n", "lab06-teapot-core-normals"}};
     for (const auto& [keys, name] : shots) {
         INFO("keys '" << keys << "'");
         wb::test::checkGolden(renderBezier(keys, 160, 120), name, 16, 0.3);
@@ -325,7 +330,7 @@ TEST_CASE("The control polygon shows the course's k = 4/3 handles", "[gl][bezier
 
 TEST_CASE("The sphere's silhouette lies between its smallest and largest radius", "[gl][bezier]") {
     const int size = 240;
-    for (const std::string& keys : {std::string("2"), std::string("2a")}) {
+    for (const std::string& keys : {std::string("2z"), std::string("2az")}) { // z: no inset
         wb::BezierLabState state;
         const wb::Image img = renderBezier(keys, size, size, &state);
         const wb::RadialError err = wb::bezierSphereVariants()[size_t(state.sphereVariant)].error;
@@ -350,4 +355,133 @@ TEST_CASE("The sphere's silhouette lies between its smallest and largest radius"
         CHECK(int(top[0]) > int(top[2]) + 40);
         CHECK(int(bottom[2]) > int(bottom[0]) + 40);
     }
+}
+
+namespace {
+
+// Pixels of the inset (bottom-left square, 8 px margin, side 0.42·min(w, h)) and of the
+// rest of the picture whose channels differ by more than 40/255 between two renders, and
+// the mean difference over the inset (0..255).
+struct InsetDiff {
+    int inset = 0, outside = 0;
+    double insetMean = 0;
+};
+InsetDiff insetDiff(const wb::Image& a, const wb::Image& b) {
+    const int side = int(wb::kBezierInsetFraction * std::min(a.width, a.height));
+    InsetDiff d;
+    long sum = 0, n = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int m = 0;
+            for (int ch = 0; ch < 3; ++ch)
+                m = std::max(m, std::abs(int(a.at(x, y)[ch]) - int(b.at(x, y)[ch])));
+            const bool in = x >= 8 && x < 8 + side && y >= a.height - 8 - side && y < a.height - 8;
+            if (in) sum += m, ++n;
+            (in ? d.inset : d.outside) += m > 40;
+        }
+    d.insetMean = double(sum) / double(std::max(n, 1L));
+    return d;
+}
+
+} // namespace
+
+// Issue 11: the `n` toggle's promised dark spots changed 48 pixels of a 480×360 picture.
+// The inset magnifies the spot GL_AUTO_NORMAL leaves unlit 30×, so `n` must change a
+// visible share of it; the main view alone changes almost nothing (the old complaint).
+TEST_CASE("the n toggle visibly changes the magnified corner and the teapot's pole", "[gl][bezier]") {
+    const int w = 320, h = 240;
+    const int side = int(wb::kBezierInsetFraction * std::min(w, h));
+    for (const char* shape : {"2", "3"}) {
+        const wb::Image gl = renderBezier(shape, w, h), core = renderBezier(std::string(shape) + "n", w, h);
+        const InsetDiff d = insetDiff(gl, core);
+        INFO("shape key " << shape << ": inset " << d.inset << " of " << side * side
+                          << " px changed, mean " << d.insetMean << ", outside " << d.outside);
+        // At least 3% of the inset changes by more than 40/255 (measured: see the WARN),
+        // and the mean over the inset moves by at least 3/255: a spot a class can see.
+        CHECK(d.inset > side * side * 3 / 100);
+        CHECK(d.insetMean > 3.0);
+        WARN("shape key " << shape << ": inset " << d.inset << " of " << side * side
+                          << " px changed by >40/255, mean " << d.insetMean << "; outside " << d.outside);
+        // Without the inset (z) the same toggle changes only a few pixels of the main view.
+        const wb::Image glNo = renderBezier(std::string(shape) + "z", w, h),
+                        coreNo = renderBezier(std::string(shape) + "zn", w, h);
+        const InsetDiff dn = insetDiff(glNo, coreNo);
+        CHECK(dn.inset + dn.outside < d.inset);
+    }
+}
+
+namespace {
+
+// Runs the lab's panel once inside a headless GL context, before the lab has drawn
+// anything (as the window does after a key: the panel comes first in a frame).
+class PanelFirstLab : public wb::Lab {
+  public:
+    explicit PanelFirstLab(wb::Lab& inner) : inner_(inner) {}
+    std::string title() const override { return "panel first"; }
+    std::vector<wb::KeyHelp> keys() const override { return {}; }
+    bool key(int) override { return false; }
+    void init() override { inner_.init(); }
+    void draw(const wb::View&) override {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = ImVec2(400, 2000);
+        io.DeltaTime = 1.0f / 60.0f;
+        unsigned char* pixels = nullptr;
+        int tw = 0, th = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &tw, &th);
+        ImGui::NewFrame();
+        ImGui::Begin("panel");
+        inner_.gui();
+        ImGui::End();
+        ImGui::Render();
+        ImGui::DestroyContext();
+    }
+
+  private:
+    wb::Lab& inner_;
+};
+
+} // namespace
+
+// Issue 11: "GL time per mesh, grid 64: (not drawn yet)" while the mesh was on screen:
+// the panel is laid out before the frame that draws the new grid.
+TEST_CASE("the panel shows a GL time for the grid on screen, even before its frame", "[gl][bezier]") {
+    for (const char* keys : {"", "]]", "2]", "3["}) {
+        wb::BezierLabState s;
+        auto lab = wb::makeBezierLab(&s);
+        std::vector<int> codes;
+        std::string err;
+        REQUIRE(wb::parseKeys(keys, codes, err));
+        for (int k : codes)
+            lab->key(k);
+        PanelFirstLab panel(*lab);
+        wb::test::renderLab(panel, 64, 64);
+        INFO("keys '" << keys << "' grid " << s.grid);
+        CHECK(s.shownMs > 0.0);
+    }
+}
+
+// The teapot's GL-against-core table: points agree to float rounding, normals agree
+// where GL has one, and GL has none exactly on the two poles' grid rows.
+TEST_CASE("teapot: GL evaluator against core, point by point", "[gl][bezier]") {
+    struct Cmp : wb::Lab {
+        std::string title() const override { return "cmp"; }
+        std::vector<wb::KeyHelp> keys() const override { return {}; }
+        bool key(int) override { return false; }
+        void draw(const wb::View&) override { result = wb::compareTeapotWithGl(8); }
+        wb::TeapotGlComparison result;
+    } lab;
+    wb::test::renderLab(lab, 64, 64);
+    const wb::TeapotGlComparison& c = lab.result;
+    REQUIRE(c.vertices == 32 * 81);
+    // kFloatEvalTol (above): float evaluation and float window coordinates, here with
+    // coordinates up to 3.5 in a ±4 box on 512 px.
+    CHECK(c.maxPointError <= kFloatEvalTol);
+    // 8 pole patches × 9 vertices on the collapsed row, where du = 0 in float as well.
+    CHECK(c.noNormal == 8 * 9);
+    CHECK(c.coreLimit >= c.noNormal);
+    // Float normals through float lighting: 1e-4 in length (as the sphere's test) is
+    // about 0.006°; 0.05° leaves room for the rims' sharp curvature in float.
+    CHECK(c.maxNormalAngle < 0.05);
 }
