@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <random>
 #include <string>
@@ -528,7 +529,9 @@ void TransformsLab::gui() {
         ImGui::SliderFloat("fovy", &s.fovy, 5.0f, 150.0f);
         break;
     case Projection::Frustum:
-        ImGui::DragFloat4("left right bottom top", s.frustum, 0.01f);
+        ImGui::TextUnformatted("glFrustum left, right, bottom, top:");
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        ImGui::DragFloat4("##frustum", s.frustum, 0.01f);
         break;
     }
     ImGui::DragFloat("near (n N)", &s.zNear, 0.05f, 0.01f, s.zFar - 0.01f);
@@ -536,8 +539,12 @@ void TransformsLab::gui() {
     ImGui::TextWrapped("Anything nearer than `near` or farther than `far` is clipped: raise near "
                        "until the front tables are cut open, lower far until the board vanishes.");
     ImGui::Separator();
-    ImGui::SliderFloat("camera distance (z x)", &s.distance, 1.0f, 60.0f);
-    ImGui::SliderFloat("camera elevation", &s.elevation, -89.0f, 89.0f);
+    // Long labels sit above full-width sliders, so a narrow or scaled panel never cuts them.
+    ImGui::TextUnformatted("camera distance (z x), elevation:");
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    ImGui::SliderFloat("##distance", &s.distance, 1.0f, 60.0f, "distance %.1f");
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    ImGui::SliderFloat("##elevation", &s.elevation, -89.0f, 89.0f, "elevation %.0f deg");
     ImGui::Checkbox("top view (t)", &s.topView);
     ImGui::Separator();
     ImGui::Checkbox("classroom (c)", &s.classroom);
