@@ -6,9 +6,11 @@
 #include "core/raytrace/plane.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
+#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/scene_file.h"
 #include "core/raytrace/spd.h"
 #include "core/raytrace/sphere.h"
+#include "core/teapot.h"
 
 #include <algorithm>
 #include <cctype>
@@ -172,6 +174,34 @@ void buildTable(LabScene& s) {
     s.about = "seed 001: table and glass (cut paraboloid, ellipsoid, cylinders, plane)";
 }
 
+// The Utah teapot (core/teapot: Newell's 32 Bezier patches) as 12×12-cell grids per patch,
+// 9,120 smooth triangles with core's normals (the poles' limit normals included), on a
+// floor. z is up. The pot is open (spout, lid gap), so its triangles bound no body.
+void buildTeapot(LabScene& s) {
+    rt::Scene& sc = *s.scene;
+    sc.lights.push_back(Light::point({4, -3, 8}));
+    sc.add(rt::Rectangle({-6, -6, 0}, {6, -6, 0}, {-6, 6, 0}),
+           sc.addMaterial(phongMaterial({0.6, 0.6, 0.55})));
+    Material china = phongMaterial({0.85, 0.85, 0.8}, 0.1);
+    china.ks = 0.6;
+    china.phongExp = 60;
+    const int pot = sc.addMaterial(china);
+    const Mesh m = teapotMesh(12);
+    for (size_t i = 0; i + 2 < m.indices.size(); i += 3) {
+        const uint32_t a = m.indices[i], b = m.indices[i + 1], c = m.indices[i + 2];
+        sc.add(rt::SmoothTriangle(m.positions[a], m.positions[b], m.positions[c], m.normals[a],
+                                  m.normals[b], m.normals[c]),
+               pot);
+    }
+    s.camera.eye = {5.5, -7.5, 5.0};
+    s.camera.target = {0.25, 0, 1.3};
+    s.camera.up = {0, 0, 1};
+    s.camera.fovY = 38;
+    s.model = ModelKind::Phong;
+    s.about = "the Utah teapot: Newell's 32 Bezier patches as " +
+              std::to_string(m.indices.size() / 3) + " smooth triangles (core/teapot)";
+}
+
 // A scene of issue 6's readers and generators (phong model, the file's view).
 void fromSceneFile(LabScene& s, rt::SceneFile&& f, const std::string& about) {
     s.scene = std::move(f.scene);
@@ -205,7 +235,8 @@ bool hasExtension(const std::string& name, const std::string& ext) {
 std::vector<std::string> builtinSceneNames() {
     return {"one-sphere",    "two-spheres", "diffuse-spheres", "seed000-part1", "seed000-part1-lit",
             "seed000-part2", "glass-cube",  "seed001-table",   "balls:1",       "balls:2",
-            "balls:3",       "balls:4",     "jacks:1",         "jacks:2",       "jacks:3"};
+            "balls:3",       "balls:4",     "jacks:1",         "jacks:2",       "jacks:3",
+            "teapot"};
 }
 
 bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
@@ -230,6 +261,8 @@ bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
             buildGlassCube(s);
         else if (name == "seed001-table")
             buildTable(s);
+        else if (name == "teapot")
+            buildTeapot(s);
         else if (int n = 0; sizeFactor(name, "balls:", n))
             fromSceneFile(s, rt::toScene(rt::spdBalls(n)),
                           "SPD balls (sphereflake) size " + std::to_string(n) + ": " +
