@@ -79,7 +79,7 @@ TEST_CASE("a value that starts with a dash is still the value of its flag", "[op
     CHECK(o.keys == "ab");
 }
 
-TEST_CASE("--ui-scale takes 0.5 to 4", "[options]") {
+TEST_CASE("the UI scale flag takes 0.5 to 4", "[options]") {
     ShellOptions o;
     std::string err;
     REQUIRE(parse({"--ui-scale", "2"}, o, err));
