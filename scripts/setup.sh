@@ -10,7 +10,8 @@ pkgs=(
   libcli11-dev fonts-dejavu-core
   xvfb xauth
 )
-# Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers).
+# Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers; the bench
+# plots' scripts/plot/plot.sh asks for gnuplot-nox - the tests do not need it).
 pkgs+=("$@")
 
 missing=()

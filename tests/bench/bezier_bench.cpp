@@ -3,7 +3,9 @@
 // approximations (more arcs, fitted handles, a fitted net), and for grid sizes
 // 4..256 the error of what is drawn against the time per mesh, both Mesa's
 // evaluator (glEvalMesh under OSMesa, as the lab draws) and core's CPU tessellation.
-// Writes docs/bench/bezier.md and docs/bench/bezier.png (or into --out-dir DIR).
+// Writes docs/bench/bezier.md (the report, with its tables) and docs/bench/bezier.csv (the
+// grid sweep's numbers), or into --out-dir DIR; scripts/plot/bezier.gp draws bezier.png
+// from the CSV with gnuplot (docs/bench/README.md: `cmake --build B --target plot_bezier`).
 //
 // Usage: bezier_bench [--out-dir DIR] [--quick]
 #include "common/gl.h"
@@ -133,98 +135,6 @@ class TimingLab : public wb::Lab {
     std::vector<Row>& rows_;
 };
 
-// A log-log plot drawn pixel by pixel (no plotting dependency): x = log2 n, y = log10 value.
-struct Plot {
-    wb::Image img;
-    int x0, y0, w, h;          // plot area in pixels
-    double lx0, lx1, ly0, ly1; // log axis ranges
-    Plot(int width, int height, double xmin, double xmax, double ymin, double ymax)
-        : img(width, height), x0(48), y0(10), w(width - 58), h(height - 50), lx0(std::log2(xmin)),
-          lx1(std::log2(xmax)), ly0(std::log10(ymin)), ly1(std::log10(ymax)) {
-        std::fill(img.data.begin(), img.data.end(), uint8_t(255));
-        for (double d = std::ceil(ly0); d <= ly1; d += 1.0)
-            hline(d, {220, 220, 220}, false);             // decades
-        for (double e = lx0; e <= lx1 + 1e-9; e += 1.0) { // powers of two
-            const int px = x0 + int(std::lround((e - lx0) / (lx1 - lx0) * (w - 1)));
-            for (int py = y0; py < y0 + h; ++py)
-                set(px, py, {220, 220, 220});
-        }
-        for (int px = x0; px < x0 + w; ++px)
-            set(px, y0 + h - 1, {0, 0, 0});
-        for (int py = y0; py < y0 + h; ++py)
-            set(x0, py, {0, 0, 0});
-    }
-    void set(int x, int y, std::array<uint8_t, 3> c) {
-        if (x < 0 || y < 0 || x >= img.width || y >= img.height) return;
-        std::memcpy(img.at(x, y), c.data(), 3);
-    }
-    int px(double n) const {
-        return x0 + int(std::lround((std::log2(n) - lx0) / (lx1 - lx0) * (w - 1)));
-    }
-    int py(double v) const {
-        const double t = (std::log10(std::max(v, 1e-30)) - ly0) / (ly1 - ly0);
-        return y0 + h - 1 - int(std::lround(std::clamp(t, 0.0, 1.0) * (h - 1)));
-    }
-    void hline(double logv, std::array<uint8_t, 3> c, bool dashed) {
-        const int y = py(std::pow(10.0, logv));
-        for (int x = x0; x < x0 + w; ++x)
-            if (!dashed || (x / 6) % 2 == 0) set(x, y, c);
-    }
-    void line(int ax, int ay, int bx, int by, std::array<uint8_t, 3> c) {
-        const int steps = std::max(std::abs(bx - ax), std::abs(by - ay)) + 1;
-        for (int i = 0; i <= steps; ++i)
-            for (int t = -1; t <= 1; ++t) { // 2-3 px thick
-                const int x = ax + (bx - ax) * i / steps, y = ay + (by - ay) * i / steps;
-                set(x, y + t, c);
-            }
-    }
-    // Tick labels in a 3×5 pixel font (digits, e, -, n), drawn at twice the size.
-    void text(int x, int y, const std::string& str) {
-        static const char* const glyphs = "0111101101101111"
-                                          "1010110010010111"
-                                          "2111001111100111"
-                                          "3111001111001111"
-                                          "4101101111001001"
-                                          "5111100111001111"
-                                          "6111100111101111"
-                                          "7111001001001001"
-                                          "8111101111101111"
-                                          "9111101111001111"
-                                          "e000110111100011"
-                                          "-000000111000000"
-                                          "n000110101101101";
-        for (char ch : str) {
-            for (const char* g = glyphs; *g; g += 16)
-                if (*g == ch)
-                    for (int r = 0; r < 5; ++r)
-                        for (int c = 0; c < 3; ++c)
-                            if (g[1 + r * 3 + c] == '1')
-                                for (int d = 0; d < 4; ++d)
-                                    set(x + 2 * c + d % 2, y + 2 * r + d / 2, {0, 0, 0});
-            x += 8;
-        }
-    }
-    void labels() {
-        for (double e = lx0; e <= lx1 + 1e-9; e += 1.0) {
-            const std::string t = std::to_string(int(std::lround(std::exp2(e))));
-            text(px(std::exp2(e)) - int(t.size()) * 4, y0 + h + 6, t);
-        }
-        text(x0 + w - 8, y0 + h + 20, "n");
-        for (double d = std::ceil(ly0); d <= ly1; d += 1.0) {
-            const std::string t = d == 0.0 ? "1" : "1e" + std::to_string(int(d));
-            text(x0 - 4 - 8 * int(t.size()), py(std::pow(10.0, d)) - 5, t);
-        }
-    }
-    void series(const std::vector<Row>& rows, double Row::*field, std::array<uint8_t, 3> c) {
-        for (size_t i = 0; i + 1 < rows.size(); ++i)
-            line(px(rows[i].n), py(rows[i].*field), px(rows[i + 1].n), py(rows[i + 1].*field), c);
-        for (const Row& r : rows)
-            for (int dx = -3; dx <= 3; ++dx)
-                for (int dy = -3; dy <= 3; ++dy)
-                    set(px(r.n) + dx, py(r.*field) + dy, c);
-    }
-};
-
 } // namespace
 
 int main(int argc, char** argv) {
@@ -311,6 +221,14 @@ int main(int argc, char** argv) {
     md += "Written by `bin/bezier_bench` (tests/bench/bezier_bench.cpp); do not edit by hand.\n";
     add("Machine: %u cores (the bench runs on one thread); GL: %s (OSMesa), 512×512 viewport.\n",
         cores, lab.renderer.c_str());
+    // The machine is shared: say how busy it was when this run started.
+    std::string load = "unknown";
+    if (std::FILE* la = std::fopen("/proc/loadavg", "r")) {
+        char l[64] = {0};
+        if (std::fgets(l, sizeof l, la)) load = std::string(l, std::strcspn(l, " ")); // 1-min
+        std::fclose(la);
+    }
+    add("Load average (1 min) when the run started: %s on %u cores.\n", load.c_str(), cores);
     add("Times are medians of %d samples, each repeating the work for at least %.0f ms; they are "
         "noisy on a "
         "shared machine, compare within a column and use the ratios.\n\n",
@@ -387,38 +305,38 @@ int main(int argc, char** argv) {
         enough(&Row::circle8Err, circles[5].e.maxError).c_str(),
         enough(&Row::sphereErr, courseErr.relative()).c_str(),
         enough(&Row::sphereFitErr, fittedErr.relative()).c_str());
-    md += "![error (log) against grid n (log): red course circle, orange 8 fitted arcs, blue "
-          "course sphere, "
-          "cyan fitted sphere; dashed: the exact shapes' errors](bezier.png)\n\n";
-    md += "Plot: x = grid n from 4 to 256 (log₂, one grid line per doubling), y = error from 1e-7 "
-          "to 1 "
-          "(log₁₀, one grid line per decade). Red: course circle; orange: 8 fitted arcs; blue: "
-          "course "
-          "sphere; cyan: fitted sphere; dashed lines: the exact Bezier shapes' errors in the same "
-          "colours.\n";
+    md += "![Two log-log panels against the grid n: the drawn shapes' error (course circle, 8 "
+          "fitted arcs, course sphere, fitted sphere, each with its exact Bezier shape's error "
+          "dashed) and the time per mesh (GL fill and line, CPU)](bezier.png)\n\n";
+    md += "The plot is drawn by gnuplot (scripts/plot/bezier.gp) from bezier.csv, the numbers of "
+          "the table above; see docs/bench/README.md.\n";
 
-    Plot plot(640, 400, 4, 256, 1e-7, 1.0);
-    plot.hline(std::log10(circles[0].e.maxError), {220, 40, 40}, true);
-    plot.hline(std::log10(circles[5].e.maxError), {240, 150, 0}, true);
-    plot.hline(std::log10(courseErr.relative()), {40, 80, 220}, true);
-    plot.hline(std::log10(fittedErr.relative()), {0, 190, 210}, true);
-    plot.series(rows, &Row::circleErr, {220, 40, 40});
-    plot.series(rows, &Row::circle8Err, {240, 150, 0});
-    plot.series(rows, &Row::sphereErr, {40, 80, 220});
-    plot.series(rows, &Row::sphereFitErr, {0, 190, 210});
-    plot.labels();
-
-    const std::string mdPath = o.outDir + "/bezier.md", pngPath = o.outDir + "/bezier.png";
-    std::FILE* f = std::fopen(mdPath.c_str(), "w");
-    if (!f || std::fputs(md.c_str(), f) < 0 || std::fclose(f) != 0) {
-        std::fprintf(stderr, "%s: %s: cannot write\n", argv[0], mdPath.c_str());
-        return 1;
+    // The grid sweep as CSV for the plot: one row per n; the exact shapes' errors repeat in
+    // every row so the script draws them as lines without a second file.
+    std::string csv = "n,circle_course_err,circle_8fit_err,sphere_course_rel,sphere_fit_rel,"
+                      "circle_course_exact,circle_8fit_exact,sphere_course_exact,sphere_fit_exact,"
+                      "circle_gl_ms,circle_cpu_ms,sphere_gl_fill_ms,sphere_gl_line_ms,"
+                      "sphere_cpu_ms\n";
+    for (const Row& r : rows) {
+        std::snprintf(buf, sizeof buf,
+                      "%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6g,%.6g,%.6g,%.6g,%.6g\n", r.n,
+                      r.circleErr, r.circle8Err, r.sphereErr, r.sphereFitErr,
+                      circles[0].e.maxError, circles[5].e.maxError, courseErr.relative(),
+                      fittedErr.relative(), r.circleGl, r.circleCpu, r.sphereGl, r.sphereGlLine,
+                      r.sphereCpu);
+        csv += buf;
     }
-    if (!wb::writePng(pngPath, plot.img, &err)) {
-        std::fprintf(stderr, "%s: %s\n", argv[0], err.c_str());
-        return 1;
+
+    const std::string mdPath = o.outDir + "/bezier.md", csvPath = o.outDir + "/bezier.csv";
+    for (const auto& [path, text] : {std::pair{mdPath, &md}, std::pair{csvPath, &csv}}) {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        if (!f || std::fputs(text->c_str(), f) < 0 || std::fclose(f) != 0) {
+            std::fprintf(stderr, "%s: %s: cannot write\n", argv[0], path.c_str());
+            return 1;
+        }
     }
     std::fputs(md.c_str(), stdout);
-    std::fprintf(stderr, "wrote %s and %s\n", mdPath.c_str(), pngPath.c_str());
+    std::fprintf(stderr, "wrote %s and %s; plot: scripts/plot/plot.sh bezier %s\n", mdPath.c_str(),
+                 csvPath.c_str(), o.outDir.c_str());
     return 0;
 }
