@@ -19,7 +19,7 @@ struct PanelState {
     float requestedScale = 1.0f;    // set by the slider / Ctrl+= Ctrl+-; the shell rebuilds between frames
     bool scaleSliderActive = false; // the UI scale slider is being dragged (rebuilding fonts would jump)
     bool measureFps = false;        // redraw continuously so the frame time means frames per second
-    double frameMs = 0.0;           // CPU time of the last frame, smoothed, milliseconds
+    double frameMs = 0.0;           // CPU time of the last frame (smoothed while measuring fps), milliseconds
     std::string lastScreenshot;     // path or error of the last screenshot
     bool screenshotRequested = false;
     bool keysLikeShell = true;      // false for the launcher: no drag / zoom / h lines

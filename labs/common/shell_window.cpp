@@ -162,6 +162,13 @@ void display() {
 
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
     layout();
+    // The whole window starts black: a lab may clear only its own part (lab 07 draws its
+    // traced image), and the panel's background is translucent, so earlier frames would show through it.
+    glPushAttrib(GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT);
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glPopAttrib();
     glViewport(0, 0, g->view.width, g->view.height);
     g->lab->draw(g->view);
     // --frames counts on until every --smoke key has been pressed.
@@ -182,7 +189,9 @@ void display() {
     }
     glutSwapBuffers();
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    g->panel.frameMs = g->frame == 0 ? ms : 0.9 * g->panel.frameMs + 0.1 * ms;
+    // Smoothed while measuring (continuous frames); else the last frame alone, since frames
+    // drawn on change are few and the first ones (shaders, meshes) are slow.
+    g->panel.frameMs = g->panel.measureFps && g->frame > 0 ? 0.9 * g->panel.frameMs + 0.1 * ms : ms;
     ++g->frame;
     if (lastFrame) return quit();
     scheduleNextFrame();
