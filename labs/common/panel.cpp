@@ -126,7 +126,8 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, b
         p.scaleSliderActive = ImGui::IsItemActive(); // the shell applies the scale when it is let go
         if (!fills) ImGui::TextWrapped("Drag the panel's left edge to make it wider (now %.0f px).", p.width);
     }
-    if (ImGui::CollapsingHeader("Keys", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // The launcher's keys are the numbers on its cards: its list starts closed.
+    if (ImGui::CollapsingHeader("Keys", fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         std::vector<KeyHelp> keys = lab.keys();
         if (p.keysLikeShell && !fills) {
             keys.push_back({"h", "hide/show this panel"});
