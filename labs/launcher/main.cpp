@@ -1,10 +1,10 @@
 // Graphics lab workbench - the launcher.
-// Lists every lab with a one-line description; choosing one starts its executable.
+// Shows every lab with its picture, course topic and docs page; choosing one starts its executable.
 // With no display (or with --headless) it renders every lab headless to PNG files instead.
 //
 // Keys:
-//   1..9   start lab N of the list
-//   h      hide/show the panel
+//   1..9   start lab N of the list (or click its picture)
+//   Ctrl+= Ctrl+-  larger / smaller text
 //   Esc    quit
 #include "common/shell.h"
 #include "launcher.h"
@@ -26,8 +26,9 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) {
             size = argv[++i];
         } else if (headless || !std::strcmp(argv[i], "--help")) {
-            std::printf("usage: %s [--headless] [--out-dir DIR] [--size WxH]\n"
-                        "  with a display: opens the launcher window (also takes the lab shell's flags)\n"
+            std::printf("usage: %s [--headless] [--out-dir DIR] [--size WxH] [--ui-scale X]\n"
+                        "  with a display: opens the launcher window, 800x600 unless --size says otherwise\n"
+                        "  (also takes the lab shell's flags, e.g. --ui-scale 2 for a projector)\n"
                         "  without one (or with --headless): renders every lab to DIR (default out/)\n",
                         argv[0]);
             return std::strcmp(argv[i], "--help") ? 2 : 0;
