@@ -29,7 +29,7 @@ struct View {
     float pitch = 0.0f;    // degrees about the horizontal axis, from mouse drag
     float zoom = 1.0f;     // > 0; 1 is the lab's default framing, wheel and +/- scale by 1.1
     bool headless = false; // true when drawing into OSMesa for a PNG
-    double time = 0.0;     // seconds since start (0 in headless renders, for reproducible images)
+    double time = 0.0;     // seconds since start (0 in headless renders); frames come on change only, see busy()
 };
 
 // One line of the "Keys:" list shown in the panel and in --help.
@@ -68,7 +68,9 @@ public:
     virtual void gui() {}                 // ImGui widgets for the lab's parameters
     // True when the panel is the whole user interface (the launcher): it fills the window.
     virtual bool panelFillsWindow() const { return false; }
-    // Headless renders call draw() until this is false (for labs that work in the background).
+    // True while the picture changes without input (work in the background, an animation):
+    // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
+    // true and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
 };
 
