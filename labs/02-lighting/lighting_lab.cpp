@@ -287,8 +287,8 @@ void LightingLab::draw(const View& view) {
     quarter.height = std::max(1, vp[3] / 2);
     for (int c = 1; c <= 4; ++c) {
         const int col = (c - 1) % 2, row = (c - 1) / 2;
-        glViewport(vp[0] + col * quarter.width, vp[1] + (1 - row) * quarter.height,
-                   quarter.width, quarter.height);
+        glViewport(vp[0] + col * quarter.width, vp[1] + (1 - row) * quarter.height, quarter.width,
+                   quarter.height);
         LightingState one = s;
         one.combo = c;
         drawScene(quarter, one);

@@ -22,7 +22,7 @@ enum class FaceShading {
 struct LightingState {
     // 1..4: {specular, diffuse} material × {specular, diffuse} light, the lab's table
     int combo = 1;
-    bool compareAll = false; // key 5: the four combinations side by side (2×2), same state
+    bool compareAll = false;     // key 5: the four combinations side by side (2×2), same state
     bool globalAmbientOn = true; // GL_LIGHT_MODEL_AMBIENT = globalAmbient, else black
     // GL_LIGHT_MODEL_AMBIENT: twice GL's default 0.2, so that combinations 1 and 3 (no
     // diffuse light) show the cubes at 0.2·0.4 = 0.08, 20/255 - dark silhouettes that read
@@ -31,10 +31,10 @@ struct LightingState {
     // glClearColor: a mid grey-blue, far from both the dark ambient-only cubes (20/255)
     // and the white highlights, so every combination reads on a projector.
     glm::vec3 background{0.42f, 0.45f, 0.5f};
-    bool localViewer = false;                  // GL_LIGHT_MODEL_LOCAL_VIEWER
-    bool emissionOn = false;                   // material GL_EMISSION = emission, else black
-    glm::vec3 emission{0.0f, 0.0f, 0.35f};     // GL_EMISSION colour when on
-    bool smooth = true;                        // glShadeModel GL_SMOOTH (true) or GL_FLAT
+    bool localViewer = false;              // GL_LIGHT_MODEL_LOCAL_VIEWER
+    bool emissionOn = false;               // material GL_EMISSION = emission, else black
+    glm::vec3 emission{0.0f, 0.0f, 0.35f}; // GL_EMISSION colour when on
+    bool smooth = true;                    // glShadeModel GL_SMOOTH (true) or GL_FLAT
     FaceShading shading = FaceShading::Gouraud;
     int subdivisions = 1; // N of the N×N grid per face, 1..64 (1 = the plain 4-vertex face)
     // GL_POSITION in scene coordinates; w = 0 makes it directional

@@ -23,7 +23,7 @@ constexpr double kBumpRepeatS = 10, kBumpRepeatT = 3; // height-map tiles around
 constexpr double kBumpLights[4][3] = {{4, 3, -1}, {-4, 3, -1}, {0, -3, -1}, {0, 4, -9}};
 
 struct TexturesLabState {
-    TextureScene scene = TextureScene::Overview; // keys 0-5
+    TextureScene scene = TextureScene::Overview;  // keys 0-5
     bool repeat = true;                           // w: GL_REPEAT, else GL_CLAMP
     TextureFilter filter = TextureFilter::Mipmap; // f cycles nearest / linear / mipmaps
     int texture = 0;          // t: 0 = bricks.png, 1 = uvgrid.png (1-3 pick the natural one)

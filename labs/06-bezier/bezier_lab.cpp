@@ -95,7 +95,7 @@ class BezierLab : public Lab {
     // Core tessellation of (variant, patch, grid): points then normals.
     std::map<std::tuple<int, int, size_t, int>,
              std::pair<std::vector<glm::dvec3>, std::vector<glm::dvec3>>>
-        meshes_; // (shape, variant, patch, grid)
+        meshes_;                                 // (shape, variant, patch, grid)
     std::map<int, TeapotGlComparison> teapotGl_; // grid -> GL against core (teapot)
 };
 
@@ -587,7 +587,8 @@ void BezierLab::gui() {
         ImGui::TextWrapped("GL's evaluator (float) against core's de Casteljau (double) on "
                            "the same grid, read back with GL_FEEDBACK; normals through "
                            "lighting:");
-        if (ImGui::BeginTable("teapot", 4, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+        if (ImGui::BeginTable("teapot", 4,
+                              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
             ImGui::TableSetupColumn("grid");
             ImGui::TableSetupColumn("max |dp|");
             ImGui::TableSetupColumn("max angle");
@@ -646,9 +647,11 @@ void BezierLab::gui() {
     // The error falls by 4x per doubling of the grid (second order) until the shape's own
     // error is reached: a straight line of slope -log10(4) in log-log, then flat.
     ImGui::TextWrapped("log10 of the error against grid 4, 8, ... 256 (one step per doubling):");
-    const float lo = *std::min_element(logErr, logErr + row), hi = *std::max_element(logErr, logErr + row);
+    const float lo = *std::min_element(logErr, logErr + row),
+                hi = *std::max_element(logErr, logErr + row);
     ImGui::PlotLines("##err", logErr, row, 0, fmt("%.1f .. %.1f", double(lo), double(hi)).c_str(),
-                     std::floor(lo), std::ceil(hi), ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
+                     std::floor(lo), std::ceil(hi),
+                     ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
     ImGui::TextWrapped("GL ms per mesh at the same grids (0: not visited yet):");
     ImGui::PlotHistogram("##ms", msBars, row, 0, nullptr, 0.0f, FLT_MAX,
                          ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
@@ -701,7 +704,6 @@ std::unique_ptr<Lab> makeBezierLab(BezierLabState* observe) {
 }
 
 } // namespace wb
-
 
 namespace wb {
 

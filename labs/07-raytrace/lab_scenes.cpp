@@ -6,8 +6,8 @@
 #include "core/raytrace/plane.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/rectangle.h"
-#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/scene_file.h"
+#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/spd.h"
 #include "core/raytrace/sphere.h"
 #include "core/teapot.h"
@@ -233,10 +233,10 @@ bool hasExtension(const std::string& name, const std::string& ext) {
 } // namespace
 
 std::vector<std::string> builtinSceneNames() {
-    return {"one-sphere",    "two-spheres", "diffuse-spheres", "seed000-part1", "seed000-part1-lit",
-            "seed000-part2", "glass-cube",  "seed001-table",   "balls:1",       "balls:2",
-            "balls:3",       "balls:4",     "jacks:1",         "jacks:2",       "jacks:3",
-            "teapot"};
+    return {"one-sphere",        "two-spheres",   "diffuse-spheres", "seed000-part1",
+            "seed000-part1-lit", "seed000-part2", "glass-cube",      "seed001-table",
+            "balls:1",           "balls:2",       "balls:3",         "balls:4",
+            "jacks:1",           "jacks:2",       "jacks:3",         "teapot"};
 }
 
 bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {

@@ -320,10 +320,9 @@ int main(int argc, char** argv) {
     for (const Row& r : rows) {
         std::snprintf(buf, sizeof buf,
                       "%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e,%.6g,%.6g,%.6g,%.6g,%.6g\n", r.n,
-                      r.circleErr, r.circle8Err, r.sphereErr, r.sphereFitErr,
-                      circles[0].e.maxError, circles[5].e.maxError, courseErr.relative(),
-                      fittedErr.relative(), r.circleGl, r.circleCpu, r.sphereGl, r.sphereGlLine,
-                      r.sphereCpu);
+                      r.circleErr, r.circle8Err, r.sphereErr, r.sphereFitErr, circles[0].e.maxError,
+                      circles[5].e.maxError, courseErr.relative(), fittedErr.relative(), r.circleGl,
+                      r.circleCpu, r.sphereGl, r.sphereGlLine, r.sphereCpu);
         csv += buf;
     }
 

@@ -388,11 +388,13 @@ InsetDiff insetDiff(const wb::Image& a, const wb::Image& b) {
 // Issue 11: the `n` toggle's promised dark spots changed 48 pixels of a 480×360 picture.
 // The inset magnifies the spot GL_AUTO_NORMAL leaves unlit 30×, so `n` must change a
 // visible share of it; the main view alone changes almost nothing (the old complaint).
-TEST_CASE("the n toggle visibly changes the magnified corner and the teapot's pole", "[gl][bezier]") {
+TEST_CASE("the n toggle visibly changes the magnified corner and the teapot's pole",
+          "[gl][bezier]") {
     const int w = 320, h = 240;
     const int side = int(wb::kBezierInsetFraction * std::min(w, h));
     for (const char* shape : {"2", "3"}) {
-        const wb::Image gl = renderBezier(shape, w, h), core = renderBezier(std::string(shape) + "n", w, h);
+        const wb::Image gl = renderBezier(shape, w, h),
+                        core = renderBezier(std::string(shape) + "n", w, h);
         const InsetDiff d = insetDiff(gl, core);
         INFO("shape key " << shape << ": inset " << d.inset << " of " << side * side
                           << " px changed, mean " << d.insetMean << ", outside " << d.outside);
@@ -401,7 +403,8 @@ TEST_CASE("the n toggle visibly changes the magnified corner and the teapot's po
         CHECK(d.inset > side * side * 3 / 100);
         CHECK(d.insetMean > 3.0);
         WARN("shape key " << shape << ": inset " << d.inset << " of " << side * side
-                          << " px changed by >40/255, mean " << d.insetMean << "; outside " << d.outside);
+                          << " px changed by >40/255, mean " << d.insetMean << "; outside "
+                          << d.outside);
         // Without the inset (z) the same toggle changes only a few pixels of the main view.
         const wb::Image glNo = renderBezier(std::string(shape) + "z", w, h),
                         coreNo = renderBezier(std::string(shape) + "zn", w, h);
@@ -446,7 +449,8 @@ class PanelFirstLab : public wb::Lab {
 
 // Issue 11: "GL time per mesh, grid 64: (not drawn yet)" while the mesh was on screen:
 // the panel is laid out before the frame that draws the new grid.
-TEST_CASE("the panel shows a GL time for the grid on screen, even before its frame", "[gl][bezier]") {
+TEST_CASE("the panel shows a GL time for the grid on screen, even before its frame",
+          "[gl][bezier]") {
     for (const char* keys : {"", "]]", "2]", "3["}) {
         wb::BezierLabState s;
         auto lab = wb::makeBezierLab(&s);

@@ -239,7 +239,8 @@ TEST_CASE("a near-plane step stops inside the back row of tables", "[gl]") {
             n += v > dMin && v < dMax;
         return n;
     };
-    CHECK(inside(wb::nearSteps()) >= 1);       // the grid stops with the table cut open
+    CHECK(inside(wb::nearSteps()) >= 1); // the grid stops with the table cut open
     // The old doubling (from 1, or from 0.1 as in the 6.4, 12.8, 25.6) jumped over it.
-    CHECK(inside({1, 2, 4, 8, 16, 32, 0.1f, 0.2f, 0.4f, 0.8f, 1.6f, 3.2f, 6.4f, 12.8f, 25.6f}) == 0);
+    CHECK(inside({1, 2, 4, 8, 16, 32, 0.1f, 0.2f, 0.4f, 0.8f, 1.6f, 3.2f, 6.4f, 12.8f, 25.6f}) ==
+          0);
 }
