@@ -91,6 +91,9 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
             p.tilesDone = ++tilesDone;
             p.tilesTotal = tilesTotal;
             p.image = opt.cornerRays ? nullptr : &img;
+            p.primaryRays = primary.load();
+            p.secondaryRays = secondary.load();
+            p.shadowRays = shadow.load();
             opt.progress(p);
         }
     };
