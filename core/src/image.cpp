@@ -1,8 +1,11 @@
 #include "core/image.h"
 
+#include "core/file_read.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <fcntl.h>
@@ -137,8 +140,29 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
 }
 
 bool readImage(const std::string& path, Image& img, int channels, std::string* error) {
+    // Through readRegularFile (issue 12): a FIFO, device or directory is refused and the
+    // file is capped, and so is the decoded size a small header may claim.
+    constexpr std::size_t kMaxFileBytes = std::size_t(256) << 20; // 16384² RGBA is 1 GiB raw; PNGs compress
+    constexpr long long kMaxPixels = 16384LL * 16384;              // the largest GL texture we use
+    std::string bytes, err;
+    if (!readRegularFile(path, kMaxFileBytes, bytes, err)) {
+        if (error) *error = err;
+        return false;
+    }
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) { // stb takes an int length
+        if (error) *error = path + ": file too large for the image reader";
+        return false;
+    }
+    const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+    const int len = int(bytes.size());
     int w = 0, h = 0, c = 0;
-    unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &c, channels);
+    if (stbi_info_from_memory(data, len, &w, &h, &c) && (long long)w * h > kMaxPixels) {
+        if (error)
+            *error = path + ": image " + std::to_string(w) + "x" + std::to_string(h) +
+                     " larger than 16384x16384 pixels";
+        return false;
+    }
+    unsigned char* pixels = stbi_load_from_memory(data, len, &w, &h, &c, channels);
     if (!pixels) {
         if (error) *error = path + ": cannot read image (" + stbi_failure_reason() + ")";
         return false;
