@@ -1,6 +1,7 @@
 #include "core/raytrace/nff.h"
 
 #include "core/raytrace/cylinder.h"
+#include "core/raytrace/polygon.h"
 #include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 
@@ -363,16 +364,20 @@ SceneFile toScene(const NffDocument& doc) {
                 s.add(Cone(o.base, std::abs(o.baseRadius), o.apex, std::abs(o.apexRadius)), m);
                 break;
             case NffObject::Kind::Polygon:
-                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i)
-                    s.add(Triangle(o.vertices[0], o.vertices[i], o.vertices[i + 1]), m);
+                // Concave polygons (SPD gears) are ear-clipped; convex ones stay fans.
+                for (const auto& t : triangulatePolygon(o.vertices))
+                    s.add(Triangle(o.vertices[size_t(t[0])], o.vertices[size_t(t[1])],
+                                   o.vertices[size_t(t[2])]),
+                          m);
                 break;
             case NffObject::Kind::PatchPolygon:
-                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i) {
+                for (const auto& t : triangulatePolygon(o.vertices)) {
                     const bool hasN = o.normals.size() == o.vertices.size();
                     const glm::dvec3 z(0.0); // a zero normal falls back to the geometric one
-                    s.add(SmoothTriangle(o.vertices[0], o.vertices[i], o.vertices[i + 1],
-                                         hasN ? o.normals[0] : z, hasN ? o.normals[i] : z,
-                                         hasN ? o.normals[i + 1] : z),
+                    const auto a = size_t(t[0]), b = size_t(t[1]), c = size_t(t[2]);
+                    s.add(SmoothTriangle(o.vertices[a], o.vertices[b], o.vertices[c],
+                                         hasN ? o.normals[a] : z, hasN ? o.normals[b] : z,
+                                         hasN ? o.normals[c] : z),
                           m);
                 }
                 break;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace wb::rt {
 
@@ -113,6 +115,54 @@ void recJack(NffDocument& doc, const Similarity& m, int depth, int maxDepth, int
             }
 }
 
+
+// One gear of SPD gears: a top face of 4 points per tooth (two on the outer radius at
+// ±0.19 of the tooth angle, two on the inner radius at 0.3 and 0.7), a rectangle
+// along each of its edges down to the bottom face, and the bottom face, walked the
+// other way round. The faces are concave 144-gons.
+void gear(NffDocument& doc, const glm::dvec3& centre, double offsetAngle, double outerR,
+          double innerR, double thickness, int surface) {
+    constexpr int kTeeth = 36;
+    const double toothAngle = 2.0 * kPi / kTeeth;
+    const auto face = [&](double z, double sign) {
+        std::vector<glm::dvec3> pts;
+        pts.reserve(4 * kTeeth);
+        for (int n = 0; n < kTeeth; ++n) {
+            const double a = offsetAngle + sign * 2.0 * kPi * n / kTeeth;
+            const double ta = sign * toothAngle;
+            const auto at = [&](double angle, double r) {
+                return centre + glm::dvec3(r * std::cos(angle), r * std::sin(angle), z);
+            };
+            pts.push_back(at(a - 0.19 * ta, outerR));
+            pts.push_back(at(a + 0.19 * ta, outerR));
+            pts.push_back(at(a + 0.3 * ta, innerR));
+            pts.push_back(at(a + 0.7 * ta, innerR));
+        }
+        return pts;
+    };
+    NffObject top;
+    top.kind = NffObject::Kind::Polygon;
+    top.surface = surface;
+    top.vertices = face(0.0, 1.0);
+    const std::vector<glm::dvec3>& g = top.vertices;
+    doc.objects.push_back(top);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+        const glm::dvec3& a = g[i];
+        const glm::dvec3& b = g[(i + 1) % g.size()];
+        NffObject side;
+        side.kind = NffObject::Kind::Polygon;
+        side.surface = surface;
+        const glm::dvec3 down(0, 0, thickness);
+        side.vertices = {a, a - down, b - down, b};
+        doc.objects.push_back(side);
+    }
+    NffObject bottom;
+    bottom.kind = NffObject::Kind::Polygon;
+    bottom.surface = surface;
+    bottom.vertices = face(-thickness, -1.0);
+    doc.objects.push_back(bottom);
+}
+
 } // namespace
 
 long long spdBallsSpheres(int sf) {
@@ -194,6 +244,76 @@ NffDocument spdJacks(int sf) {
     m.r = rotation({1, 0, 0}, -30 * kPi / 180) * rotation({0, 1, 0}, -20 * kPi / 180);
     recJack(doc, m, 1, sf, 0);
     return doc;
+}
+
+NffDocument spdGears(int sf) {
+    checkSize(sf, "spdGears");
+    NffDocument doc;
+    doc.hasView = true;
+    doc.view.from = {-1.1, -2.1, 2.6};
+    doc.view.at = {0, 0, 0};
+    doc.view.up = {0, 0, 1};
+    doc.view.angle = 45;
+    doc.view.hither = 1.0;
+    doc.view.width = doc.view.height = 512;
+    doc.hasBackground = true;
+    doc.background = {0.078, 0.361, 0.753};
+    for (const glm::dvec3& p : {glm::dvec3(2, 4, 4), glm::dvec3(-2, 4, 3), glm::dvec3(2, -2.5, 2.5),
+                                glm::dvec3(-1, -4, 2), glm::dvec3(-1.111, -2.121, 2.626)}) {
+        NffLight l;
+        l.position = p;
+        doc.lights.push_back(l);
+    }
+    // Ground: off-white, diffuse 0.3 and mirror 0.6, highlight half-angle 37 degrees.
+    doc.surfaces.push_back(NffSurface{{1.0, 0.85, 0.7}, 0.3, 0.6, phongPow(37.0), 0.0, 1.0});
+    NffObject ground;
+    ground.kind = NffObject::Kind::Polygon;
+    ground.surface = 0;
+    ground.vertices = {{2, 2, 0}, {-2, 2, 0}, {-2, -2, 0}, {2, -2, 0}};
+    doc.objects.push_back(ground);
+
+    // sf³ gears in a cube of side 2 standing on the ground; neighbours mesh: the
+    // outer radius is 0.995 of the pitch so that teeth never touch.
+    constexpr double kEdgeDiff = 0.1; // 1 − inner/outer radius ratio (tooth depth)
+    const double outerR = 1.0 / (sf - (sf - 1) * kEdgeDiff / 2.0);
+    const glm::dvec3 zero(-1.0 + outerR, -1.0 + outerR, 1.0);
+    const glm::dvec3 step(outerR * (2.0 - kEdgeDiff), outerR * (2.0 - kEdgeDiff), -1.0 / sf);
+    const double thickness = std::min(0.1, 1.0 / (2.0 * sf));
+    const auto frac = [](double x) { return x - std::floor(x); };
+    for (int iz = 0; iz < sf; ++iz)
+        for (int iy = 0; iy < sf; ++iy)
+            for (int ix = 0; ix < sf; ++ix) {
+                const glm::dvec3 centre = zero + glm::dvec3(ix, iy, iz) * step;
+                // Pseudo-random colour, brightest channel scaled to 1.
+                glm::dvec3 c(0.01 + frac((ix * 3 + iy * 2 + iz + 1) * 5.0 / 7.0),
+                             0.01 + frac((iy * 3 + iz * 2 + ix + 1) * 3.0 / 7.0),
+                             0.01 + frac((iz * 3 + ix * 2 + iy + 1) * 2.0 / 7.0));
+                c /= std::max({c.x, c.y, c.z});
+                // Every fifth gear is glass-like: kd 0.2, kt 0.8, ior 1.1; the others
+                // are matte. (The SPD writes "no highlight" as exponent 100000.)
+                if ((ix * 4 + iy * 2 + iz) % 5 == 0)
+                    doc.surfaces.push_back(NffSurface{c, 0.2, 0.0, 100000.0, 0.8, 1.1});
+                else
+                    doc.surfaces.push_back(NffSurface{c, 1.0, 0.0, 100000.0, 0.0, 0.0});
+                const double angle = kPi * ((ix + iy + iz) % 2) / 36.0;
+                gear(doc, centre, angle, 0.995 * outerR, (1.0 - kEdgeDiff) * outerR, thickness,
+                     int(doc.surfaces.size()) - 1);
+            }
+    return doc;
+}
+
+std::vector<std::string> spdSceneNames() {
+    return {"balls", "jacks", "gears"};
+}
+
+NffDocument spdScene(const std::string& name, int sf) {
+    if (name == "balls") return spdBalls(sf);
+    if (name == "jacks") return spdJacks(sf);
+    if (name == "gears") return spdGears(sf);
+    std::string known;
+    for (const std::string& n : spdSceneNames())
+        known += (known.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown SPD scene '" + name + "' (one of " + known + ")");
 }
 
 NffDocument oneSphereScene() {
