@@ -21,7 +21,11 @@ SceneFile loadSceneFile(const std::string& path) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (ext == "nff") {
         try {
-            return toScene(readNffFile(path));
+            SceneFile sf = toScene(readNffFile(path));
+            if (sf.scene->primitives.empty())
+                throw SceneFileError(path +
+                                     ":0: nothing to draw: no objects (s, c, p, pp) in the file");
+            return sf;
         } catch (const SceneFileError& e) {
             // toScene names the document "NFF"; give the file name instead.
             std::string msg = e.what();
