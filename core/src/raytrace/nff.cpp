@@ -203,7 +203,7 @@ void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
     if (!(glm::length(glm::cross(f, u)) > 1e-12 * glm::length(f) * glm::length(u)))
         tk.fail(vLine, "bad view: up is parallel to the view direction (at - from)");
     try {
-        LookAtCamera(v.from, v.at, v.up, v.angle);
+        LookAtCamera(v.from, v.at, scaledUp(v.up), v.angle); // as SceneFile::camera() builds it
     } catch (const std::invalid_argument&) {
         tk.fail(vLine, "bad view: from == at, up along the view, or angle not in (0, 180)");
     }

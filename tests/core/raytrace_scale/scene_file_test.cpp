@@ -220,7 +220,10 @@ TEST_CASE("rt_nff: view messages say what is wrong", "[raytrace][nff]") {
     CHECK_THAT(nffError(view("0 0 1", "0 0 0", "0 1 0", "180")),
                StartsWith("t.nff:5: bad view: angle 180 not in (0, 180)"));
     // Far but within the limit: accepted, and a huge up vector is only a direction.
-    CHECK_NOTHROW(nff(view("0 0 1e150", "0 0 -1e150", "0 1e150 0", "30")));
+    const NffDocument far = nff(view("0 0 1e150", "0 0 -1e150", "0 1e150 0", "30"));
+    const LookAtCamera cam = toScene(far).camera();
+    CHECK(cam.right == glm::dvec3(1, 0, 0)); // cross(at - from, up) overflowed: right was 0
+    CHECK(cam.up == glm::dvec3(0, 1, 0));
 }
 
 TEST_CASE("rt_nff: geometry up to 1e150 renders, beyond it the limit is reported",

@@ -42,6 +42,10 @@ struct SceneFile {
     LookAtCamera camera() const;
 };
 
+// `up` scaled by a power of two so its largest component is in [1, 2) (exact; the
+// direction is all a camera needs and cross products with it cannot overflow).
+glm::dvec3 scaledUp(const glm::dvec3& up);
+
 // Loads .nff or .obj by extension (case-insensitive). Throws SceneFileError naming the
 // file, the line and the problem; never crashes on malformed input. Only regular files
 // are read (a directory, FIFO or device is refused); a file with nothing to draw is an
