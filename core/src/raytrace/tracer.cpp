@@ -86,7 +86,8 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
 }
 
 template <bool kObserve>
-Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const {
+Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
+                       long& budget) const {
     if (ray.depth == 0)
         ++primaryRays;
     else
@@ -121,14 +122,18 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
 
     if (ray.depth < settings_.maxDepth) {
         // Reflected ray: same side, same medium.
-        if (m.kr > 0 && ray.weight * m.kr >= settings_.minWeight) {
+        const bool reflect = m.kr > 0 && ray.weight * m.kr >= settings_.minWeight;
+        if (reflect && budget <= 0) {
+            if constexpr (kObserve) observer->childSkipped(RayKind::Reflected, SkipReason::RayBudget);
+        } else if (reflect) {
+            --budget;
             Ray r;
             r.origin = offsetRayOrigin(hit.point, hit.normal);
             r.direction = reflectDir(ray.direction, hit.normal);
             r.weight = ray.weight * m.kr;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
-            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer);
+            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget);
             if constexpr (kObserve) observer->childResult(RayKind::Reflected, rc, m.kr);
             c = model_.addScaled(c, rc, m.kr);
         } else if (kObserve && m.kr > 0) {
@@ -136,7 +141,10 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
         }
         // Transmitted ray: through a thin (open) surface unchanged, into or out of a
         // body by formula (7) with the ratio of the indices on both sides.
-        if (m.kt > 0 && ray.weight * m.kt >= settings_.minWeight) {
+        const bool transmit = m.kt > 0 && ray.weight * m.kt >= settings_.minWeight;
+        if (transmit && budget <= 0) {
+            if constexpr (kObserve) observer->childSkipped(RayKind::Refracted, SkipReason::RayBudget);
+        } else if (transmit) {
             std::optional<glm::dvec3> dir = ray.direction;
             Medium medium = ray.medium;
             if (hit.solid) {
@@ -151,13 +159,14 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
                 dir = refractDir(ray.direction, hit.normal, eta);
             }
             if (dir) {
+                --budget;
                 Ray t;
                 t.origin = offsetRayOrigin(hit.point, -hit.normal);
                 t.direction = *dir;
                 t.weight = ray.weight * m.kt;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer);
+                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget);
                 if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
                 c = model_.addScaled(c, tc, m.kt);
             } else if (kObserve) {
@@ -181,12 +190,14 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
 }
 
 Color Tracer::trace(const Ray& ray) const {
-    return traceRay<false>(ray, RayKind::Primary, nullptr);
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {
     if (!observer) return trace(ray);
-    return traceRay<true>(ray, RayKind::Primary, observer);
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<true>(ray, RayKind::Primary, observer, budget);
 }
 
 } // namespace wb::rt

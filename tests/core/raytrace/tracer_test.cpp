@@ -241,3 +241,53 @@ TEST_CASE("textures: a plane bound by three points, a box face, an ellipsoid",
     lat30.direction = {0, -1, 0};
     CHECK(tracer2.trace(lat30) == glm::dvec3(1, 1, 1));
 }
+
+TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
+          "[raytrace][tracer]") {
+    // Issue 12 point 3: 30 stacked quads with kr = kt = 1 took 2^depth rays (depth 16
+    // over 60 s at 160x120). Each hit spawns a reflected and a transmitted ray of weight
+    // 1, so only the depth and the budget stop the tree.
+    Scene s;
+    Material both;
+    both.kr = 1;
+    both.kt = 1;
+    const int m = s.addMaterial(both);
+    for (int i = 0; i < 30; ++i) {
+        const double z = -1.0 - i;
+        s.add(Rectangle({-50, -50, z}, {50, -50, z}, {-50, 50, z}), m);
+    }
+    s.add(Rectangle({-50, -50, 1}, {-50, 50, 1}, {50, -50, 1}), m); // a lid: reflections come back
+    const PhongModel model;
+    auto rays = [&](int depth, long budget) {
+        TraceSettings ts;
+        ts.maxDepth = depth;
+        ts.maxRaysPerSample = budget;
+        const Tracer tracer(s, model, ts);
+        const Color c = tracer.trace(down({0.1, 0.2, 0}));
+        CHECK(std::isfinite(c.x + c.y + c.z));
+        return tracer.secondaryRays.load();
+    };
+    // Without a budget the tree grows by about 2x per level (rays that leave the stack
+    // miss and end their branch): exponential, as reported.
+    const long long unbounded12 = rays(12, 1L << 40), unbounded16 = rays(16, 1L << 40);
+    CHECK(unbounded16 > 8 * unbounded12);
+    CHECK(unbounded16 > 30000);
+    // Below the budget nothing changes; above it the tree stops exactly at the budget.
+    CHECK(rays(8, 4096) == rays(8, 1L << 40));
+    CHECK(rays(16, 4096) == 4096);
+    CHECK(rays(16, TraceSettings{}.maxRaysPerSample) == 4096);
+    CHECK(rays(16, 10) == 10);
+    CHECK(rays(16, 0) == 0);
+
+    // The observer is told why a child was skipped.
+    struct Count : TraceObserver {
+        int budget = 0;
+        void childSkipped(RayKind, SkipReason why) override { budget += why == SkipReason::RayBudget; }
+    } obs;
+    TraceSettings ts;
+    ts.maxDepth = 16;
+    ts.maxRaysPerSample = 10;
+    const Tracer tracer(s, model, ts);
+    tracer.trace(down({0.1, 0.2, 0}), &obs);
+    CHECK(obs.budget > 0);
+}

@@ -19,6 +19,13 @@ struct TraceSettings {
     int maxDepth = 5;        // rays of depth >= maxDepth spawn no reflected/refracted rays
     double minWeight = 0.01; // a child ray is traced only when its weight >= minWeight (seed 000)
     double opaqueKt = 0.01; // a shadow blocker with kt below this blocks the light fully (seed 000)
+    // Reflected + transmitted rays one trace() may spawn in all (issue 12 point 3): the
+    // weight cut-off bounds the tree only while kr + kt < 1; with kr = kt = 1 a tree is
+    // 2^depth rays. When kr + kt <= 1 at most 1/minWeight = 100 rays per level pass the
+    // cut-off, so lab 07's deepest tree (depth 20) has at most 2000 < 4096 and this only
+    // binds on trees the weights do not bound. Children past it are skipped (RayBudget),
+    // depth first, reflected before transmitted, so the image stays deterministic.
+    long maxRaysPerSample = 4096;
 };
 
 // Direction of the reflected ray: e − 2(e·n)n, renormalised.
@@ -37,7 +44,7 @@ double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d
 // Which ray of the recursion an observer event is about.
 enum class RayKind { Primary, Reflected, Refracted };
 // Why a reflected or transmitted child ray was not traced.
-enum class SkipReason { DepthLimit, BelowWeight, TotalInternalReflection };
+enum class SkipReason { DepthLimit, BelowWeight, TotalInternalReflection, RayBudget };
 
 // Sees the recursion of Tracer::trace(ray, observer) as it happens, so a tool (lab 07's
 // ray inspector) can build the ray tree without a second copy of the rules. Events of
@@ -92,8 +99,9 @@ class Tracer {
   private:
     // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
+    // `budget`: child rays this trace() may still spawn (TraceSettings::maxRaysPerSample).
     template <bool kObserve>
-    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const;
+    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget) const;
 
     const Scene& scene_;
     const ShadingModel& model_;
