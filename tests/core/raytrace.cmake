@@ -40,3 +40,9 @@ if(WORKBENCH_FUZZ)
     target_link_options(fuzz_${reader} PRIVATE -fsanitize=fuzzer,address,undefined)
   endforeach()
 endif()
+# Issue 12 point 11: rt_render and lab 07's headless front end give the same picture of
+# the same file (runs both executables; lab 07 needs OSMesa, hence the gl label).
+wb_test(raytrace_same_picture_test
+  SOURCES raytrace_scale/same_picture_test.cpp
+  LIBS core)
+add_dependencies(raytrace_same_picture_test rt_render lab07-raytrace lab07-raytrace-headless)
