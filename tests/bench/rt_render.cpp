@@ -101,6 +101,15 @@ int main(int argc, char** argv) {
         wb::rt::SceneFile sf = wb::rt::loadSceneFile(scenePath);
         const double loadS =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        // The reader's repairs (faces dropped, a missing .mtl, ...): counted, the first lines.
+        if (sf.warningCount > 0) {
+            std::fprintf(stderr, "%s: %zu warning%s:\n", scenePath.c_str(), sf.warningCount,
+                         sf.warningCount == 1 ? "" : "s");
+            for (const std::string& w : sf.warnings)
+                std::fprintf(stderr, "  %s\n", w.c_str());
+            if (sf.warningCount > sf.warnings.size())
+                std::fprintf(stderr, "  ... and %zu more\n", sf.warningCount - sf.warnings.size());
+        }
         std::unique_ptr<wb::rt::Bvh> bvh;
         if (useBvh) bvh = wb::rt::makeAggregate(*sf.scene);
         sf.scene->setAggregate(bvh.get());

@@ -158,11 +158,13 @@ TEST_CASE("lab 07: while a restarted trace runs, every pixel shown is the new ca
     req.scene = &s;
     req.model = s.model;
     req.threads = 1;
-    req.camera = wb::ViewCamera::make(s.camera, 0, 0, 1, 200, 150);
+    // 400×300 on one thread takes long enough (tens of ms) to be seen growing even on a
+    // busy machine; at 200×150 it sometimes finished between two 2-ms snapshots.
+    req.camera = wb::ViewCamera::make(s.camera, 0, 0, 1, 400, 300);
     wb::TraceJob job;
     job.start(req);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    req.camera = wb::ViewCamera::make(s.camera, 25, 10, 1, 200, 150);
+    req.camera = wb::ViewCamera::make(s.camera, 25, 10, 1, 400, 300);
     job.start(req); // cancels and joins the first frame
     std::vector<wb::Image> snapshots;
     uint64_t version = 0;
