@@ -121,8 +121,13 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
     }
 
     if (ray.depth < settings_.maxDepth) {
+        // A child's weight is its share of this ray's, k / max(1, kr + kt) (issue 12): the
+        // weights of one level then sum to <= 1 for any kr, kt, so at most 1/minWeight
+        // rays a level pass the cut-off (kr = kt = 1 made 2^depth rays of weight 1).
+        // For kr + kt <= 1 the divisor is exactly 1: seed 000's weight × k, same bits.
+        const double share = std::max(1.0, m.kr + m.kt);
         // Reflected ray: same side, same medium.
-        const bool reflect = m.kr > 0 && ray.weight * m.kr >= settings_.minWeight;
+        const bool reflect = m.kr > 0 && ray.weight * m.kr / share >= settings_.minWeight;
         if (reflect && budget <= 0) {
             if constexpr (kObserve) observer->childSkipped(RayKind::Reflected, SkipReason::RayBudget);
         } else if (reflect) {
@@ -130,7 +135,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
             Ray r;
             r.origin = offsetRayOrigin(hit.point, hit.normal);
             r.direction = reflectDir(ray.direction, hit.normal);
-            r.weight = ray.weight * m.kr;
+            r.weight = ray.weight * m.kr / share;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
             const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget);
@@ -141,7 +146,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
         }
         // Transmitted ray: through a thin (open) surface unchanged, into or out of a
         // body by formula (7) with the ratio of the indices on both sides.
-        const bool transmit = m.kt > 0 && ray.weight * m.kt >= settings_.minWeight;
+        const bool transmit = m.kt > 0 && ray.weight * m.kt / share >= settings_.minWeight;
         if (transmit && budget <= 0) {
             if constexpr (kObserve) observer->childSkipped(RayKind::Refracted, SkipReason::RayBudget);
         } else if (transmit) {
@@ -163,7 +168,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
                 Ray t;
                 t.origin = offsetRayOrigin(hit.point, -hit.normal);
                 t.direction = *dir;
-                t.weight = ray.weight * m.kt;
+                t.weight = ray.weight * m.kt / share;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
                 const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget);

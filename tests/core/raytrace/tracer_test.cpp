@@ -258,26 +258,35 @@ TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
     }
     s.add(Rectangle({-50, -50, 1}, {-50, 50, 1}, {50, -50, 1}), m); // a lid: reflections come back
     const PhongModel model;
-    auto rays = [&](int depth, long budget) {
+    auto rays = [&](int depth, long budget, double minWeight) {
         TraceSettings ts;
         ts.maxDepth = depth;
         ts.maxRaysPerSample = budget;
+        ts.minWeight = minWeight;
         const Tracer tracer(s, model, ts);
         const Color c = tracer.trace(down({0.1, 0.2, 0}));
         CHECK(std::isfinite(c.x + c.y + c.z));
         return tracer.secondaryRays.load();
     };
-    // Without a budget the tree grows by about 2x per level (rays that leave the stack
-    // miss and end their branch): exponential, as reported.
-    const long long unbounded12 = rays(12, 1L << 40), unbounded16 = rays(16, 1L << 40);
+    const long kNoBudget = 1L << 40;
+    // Without the weight cut-off and the budget the tree grows by about 2x per level
+    // (rays that leave the stack miss and end their branch): exponential, as reported.
+    const long long unbounded12 = rays(12, kNoBudget, 0), unbounded16 = rays(16, kNoBudget, 0);
     CHECK(unbounded16 > 8 * unbounded12);
     CHECK(unbounded16 > 30000);
-    // Below the budget nothing changes; above it the tree stops exactly at the budget.
-    CHECK(rays(8, 4096) == rays(8, 1L << 40));
-    CHECK(rays(16, 4096) == 4096);
-    CHECK(rays(16, TraceSettings{}.maxRaysPerSample) == 4096);
-    CHECK(rays(16, 10) == 10);
-    CHECK(rays(16, 0) == 0);
+    // The weight cut-off holds: children get k / (kr + kt) = 1/2 of the weight, so a ray
+    // of depth d has weight 2^-d and depth 7 (1/128 < 0.01) is never traced: at most
+    // 2 + 4 + ... + 64 = 126 rays at any depth limit.
+    CHECK(rays(16, kNoBudget, 0.01) <= 126);
+    CHECK(rays(16, kNoBudget, 0.01) == rays(64, kNoBudget, 0.01));
+    CHECK(rays(16, kNoBudget, 0.01) == rays(6, kNoBudget, 0.01));
+    // The budget is the backstop when minWeight is 0: below it nothing changes, above it
+    // the tree stops exactly at the budget.
+    CHECK(rays(8, 4096, 0) == rays(8, kNoBudget, 0));
+    CHECK(rays(16, 4096, 0) == 4096);
+    CHECK(rays(16, TraceSettings{}.maxRaysPerSample, 0) == 4096);
+    CHECK(rays(16, 10, 0) == 10);
+    CHECK(rays(16, 0, 0) == 0);
 
     // The observer is told why a child was skipped.
     struct Count : TraceObserver {
@@ -287,6 +296,7 @@ TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
     TraceSettings ts;
     ts.maxDepth = 16;
     ts.maxRaysPerSample = 10;
+    ts.minWeight = 0;
     const Tracer tracer(s, model, ts);
     tracer.trace(down({0.1, 0.2, 0}), &obs);
     CHECK(obs.budget > 0);

@@ -7,6 +7,9 @@
 // with total internal reflection when the root's argument is <= 0; the ray's medium
 // decides η (entering: n_ray/n_body, leaving: n_body/n_air); colour *= exp(−atten·t)
 // in an attenuating medium; recursion stops at maxDepth or when the weight < minWeight.
+// A child's weight is parent weight × k / max(1, kr + kt) (seed 000's weight × k when
+// kr + kt <= 1), so the cut-off bounds the tree for any kr, kt (issue 12), and
+// TraceSettings::maxRaysPerSample bounds it when minWeight is 0.
 #include "core/raytrace/scene.h"
 #include "core/raytrace/shading.h"
 
@@ -19,12 +22,12 @@ struct TraceSettings {
     int maxDepth = 5;        // rays of depth >= maxDepth spawn no reflected/refracted rays
     double minWeight = 0.01; // a child ray is traced only when its weight >= minWeight (seed 000)
     double opaqueKt = 0.01; // a shadow blocker with kt below this blocks the light fully (seed 000)
-    // Reflected + transmitted rays one trace() may spawn in all (issue 12 point 3): the
-    // weight cut-off bounds the tree only while kr + kt < 1; with kr = kt = 1 a tree is
-    // 2^depth rays. When kr + kt <= 1 at most 1/minWeight = 100 rays per level pass the
-    // cut-off, so lab 07's deepest tree (depth 20) has at most 2000 < 4096 and this only
-    // binds on trees the weights do not bound. Children past it are skipped (RayBudget),
-    // depth first, reflected before transmitted, so the image stays deterministic.
+    // Reflected + transmitted rays one trace() may spawn in all (issue 12 point 3), the
+    // backstop when minWeight is 0 (lab 07's slider allows it; kr = kt = 1 then makes
+    // 2^depth rays). With minWeight 0.01 at most 100 rays a level pass the cut-off (see
+    // above), so lab 07's deepest tree (depth 20) has at most 2000 < 4096 and the budget
+    // never binds. Children past it are skipped (RayBudget), depth first, reflected
+    // before transmitted, so the image stays deterministic.
     long maxRaysPerSample = 4096;
 };
 
