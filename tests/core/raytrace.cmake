@@ -41,8 +41,16 @@ if(WORKBENCH_FUZZ)
   endforeach()
 endif()
 # Issue 12 point 11: rt_render and lab 07's headless front end give the same picture of
-# the same file (runs both executables; lab 07 needs OSMesa, hence the gl label).
+# the same file (runs both executables as a user would).
 wb_test(raytrace_same_picture_test
   SOURCES raytrace_scale/same_picture_test.cpp
   LIBS core)
 add_dependencies(raytrace_same_picture_test rt_render lab07-raytrace lab07-raytrace-headless)
+# Issue 12 point 12: every SPD generator in the suite (counts, round trip, render smoke)
+# and a speckle census (isolated outliers that one exact ray alone carries).
+wb_test(raytrace_pictures_test
+  SOURCES raytrace_scale/spd_scenes_test.cpp raytrace_scale/speckle_test.cpp
+  LIBS core)
+if(WORKBENCH_SANITIZE)
+  target_compile_definitions(raytrace_pictures_test PRIVATE WB_SANITIZED=1)
+endif()
