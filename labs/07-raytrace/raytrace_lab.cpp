@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -59,7 +60,7 @@ class RaytraceLab : public Lab {
                 {"d", "difference heat map raster vs trace"},
                 {"m", "tracer model course / phong"},
                 {"b", "BVH on/off"},
-                {"x", "cancel the trace"},
+                {"x", "cancel the trace / the timing experiment"},
                 {"n", "next scene"},
                 {"N", "previous scene"},
                 {"[", "depth limit down"},
@@ -359,6 +360,7 @@ class RaytraceLab : public Lab {
     void drawRaster(const View& view, const ViewCamera& cam);
     void drawRayPath();
     void drawImage(const Image& rgba, int w, int h, bool blend);
+    void drawHeatStrip(const View& view);
     void rebuildMesh(const ViewCamera& cam);
     void startExperiment();
     void stepExperiment(const View& view);
@@ -639,6 +641,46 @@ void RaytraceLab::drawRayPath() {
     glEnable(GL_DEPTH_TEST);
 }
 
+// The heat map's colour bar in the picture itself (so a headless PNG carries its scale):
+// bottom left, the 0..64 levels of heat() with a tick every 16; the panel labels them.
+void RaytraceLab::drawHeatStrip(const View& view) {
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    glOrtho(0, view.width, 0, view.height, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+    const float x0 = 8, y0 = 8, w = std::min(256.0f, float(view.width) - 16), h = 10;
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 64; ++i) {
+        uint8_t c[3];
+        heat(i, c);
+        glColor3ub(c[0], c[1], c[2]);
+        const float a = x0 + w * float(i) / 64, b = x0 + w * float(i + 1) / 64;
+        glVertex2f(a, y0);
+        glVertex2f(b, y0);
+        glVertex2f(b, y0 + h);
+        glVertex2f(a, y0 + h);
+    }
+    glEnd();
+    glColor3f(0.8f, 0.8f, 0.8f);
+    glBegin(GL_LINES);
+    for (int i = 0; i <= 4; ++i) {
+        const float x = x0 + w * float(i) / 4;
+        glVertex2f(x, y0 - 4);
+        glVertex2f(x, y0 + h);
+    }
+    glEnd();
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPopMatrix();
+}
+
 void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
     glBindTexture(GL_TEXTURE_2D, texture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -785,6 +827,7 @@ void RaytraceLab::draw(const View& view) {
                 diffVersion_ = traceVersion_;
             }
             drawImage(diffImage_, diffImage_.width, diffImage_.height, false);
+            drawHeatStrip(view);
         } else if (!traceImage_.empty()) {
             drawImage(traceImage_, traceImage_.width, traceImage_.height, true);
         }
@@ -917,7 +960,12 @@ void RaytraceLab::stepExperiment(const View& view) {
     }
     if (view.headless) expJob_.wait();
     const TraceStatus st = expJob_.status();
-    if (st.running) return;
+    if (st.running) {
+        // In a window: at most ~20 redraws a second while a timed trace runs, so the
+        // software GL of the panel takes little from the cores being measured.
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        return;
+    }
     if (!st.finished) { // cancelled (x, or the lab is going away)
         e.tracing = false;
         e.active = false;
@@ -960,15 +1008,19 @@ void wrapText(const std::string& line) {
     size_t indentLen = line.find_first_not_of(' ');
     if (indentLen == std::string::npos) indentLen = 0;
     const std::string indent(indentLen + 2, ' ');
-    // Words: split at spaces at parenthesis depth 0.
+    // Words: split at spaces, except inside a parenthesised list of numbers ("(0.447,
+    // 0.000, -0.894)", "(168, 233, 86)"), which stays whole.
     std::vector<std::string> words;
     std::string word;
-    int depth = 0;
+    bool inNumbers = false;
     for (size_t i = indentLen; i < line.size(); ++i) {
         const char c = line[i];
-        if (c == '(') ++depth;
-        if (c == ')' && depth > 0) --depth;
-        if (c == ' ' && depth == 0) {
+        if (c == '(' && i + 1 < line.size() &&
+            (std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-' ||
+             line[i + 1] == '+' || line[i + 1] == '.'))
+            inNumbers = true;
+        if (c == ')') inNumbers = false;
+        if (c == ' ' && !inNumbers) {
             if (!word.empty()) words.push_back(word);
             word.clear();
         } else {
@@ -1058,14 +1110,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     ImGui::TextColored(ImColor(cyan), "-- no BVH (brute force)");
     const float w = ImGui::GetContentRegionAvail().x, h = 120.0f;
     const ImVec2 pos = ImGui::GetCursorScreenPos();
-    // Both series share the frame and the scale: the second is drawn over the first.
-    const int n = int(rows.size());
-    ImGui::PushStyleColor(ImGuiCol_PlotLines, yellow);
-    std::vector<float> padded = bvh;
-    padded.resize(size_t(n), bvh.back());
-    ImGui::PlotLines("##bvh", padded.data(), int(bvh.size()) == n ? n : int(bvh.size()), 0,
-                     nullptr, lo, hi, ImVec2(w, h));
-    ImGui::PopStyleColor();
+    // Both series on one log scale, drawn on an ImGui frame (PlotLines has no log axis
+    // and would show log10 values in its tooltip); the speed-up below is a PlotHistogram.
+    ImGui::GetWindowDrawList()->AddRectFilled(pos, ImVec2(pos.x + w, pos.y + h),
+                                              ImGui::GetColorU32(ImGuiCol_FrameBg),
+                                              ImGui::GetStyle().FrameRounding);
+    ImGui::Dummy(ImVec2(w, h));
     const ImVec2 after = ImGui::GetCursorScreenPos();
     const ImGuiStyle& style = ImGui::GetStyle();
     const float x0 = pos.x + style.FramePadding.x, x1 = pos.x + w - style.FramePadding.x;
@@ -1075,7 +1125,9 @@ void plotTimings(const std::vector<TimingRow>& rows) {
         return count > 1 ? x0 + (x1 - x0) * float(i) / float(count - 1) : x0;
     };
     auto yOf = [&](float v) { return y1 - (y1 - y0) * (v - lo) / (hi - lo); };
-    // The no-BVH line by hand, on the same x positions as the BVH one.
+    for (size_t i = 0; i + 1 < bvh.size(); ++i)
+        dl->AddLine(ImVec2(xOf(i, bvh.size()), yOf(bvh[i])),
+                    ImVec2(xOf(i + 1, bvh.size()), yOf(bvh[i + 1])), yellow, 1.5f);
     for (size_t i = 0; i + 1 < brute.size(); ++i)
         dl->AddLine(ImVec2(xOf(i, bvh.size()), yOf(brute[i])),
                     ImVec2(xOf(i + 1, bvh.size()), yOf(brute[i + 1])), cyan, 1.5f);
@@ -1093,14 +1145,29 @@ void plotTimings(const std::vector<TimingRow>& rows) {
             std::snprintf(label, sizeof label, "%g s", ms / 1000);
         else
             std::snprintf(label, sizeof label, "%g ms", ms);
-        dl->AddText(ImVec2(x0 + 2, std::clamp(y - ImGui::GetTextLineHeight(), y0, y1 - 12)),
-                    IM_COL32(230, 230, 230, 200), label);
+        // Below its line, except the lowest one (above it): labels never overlap.
+        const float th = ImGui::GetTextLineHeight();
+        const float ty = d == int(lo) ? y - th : y + 1;
+        dl->AddText(ImVec2(x0 + 2, ty), IM_COL32(230, 230, 230, 200), label);
     }
     ImGui::SetCursorScreenPos(after);
     std::string xs = "x: ";
     for (size_t i = 0; i < bvh.size(); ++i)
         xs += rows[i].scene + (i + 1 < bvh.size() ? ", " : "");
     wrapText(xs + " (objects grow left to right)");
+    // What the BVH buys: no-BVH time / BVH time per scene (hover a bar for its value).
+    std::vector<float> speedup;
+    float top = 1.0f;
+    for (size_t i = 0; i < brute.size() && i < bvh.size(); ++i) {
+        speedup.push_back(float(rows[i].bruteSeconds / rows[i].traceSeconds));
+        top = std::max(top, speedup.back());
+    }
+    if (speedup.empty()) return;
+    wrapText("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):");
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "up to x%.0f", double(top));
+    ImGui::PlotHistogram("##speedup", speedup.data(), int(speedup.size()), 0, overlay, 0.0f,
+                         top * 1.15f, ImVec2(w, 70.0f));
 }
 
 } // namespace
@@ -1151,9 +1218,16 @@ void RaytraceLab::gui() {
 
     ImGui::Separator();
     const TraceStatus st = job_.status();
+    const ExperimentStatus es = experimentStatus();
+    if (es.active) {
+        // Up here, where it is seen without scrolling: the table and plot are at the end.
+        wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
+        ImGui::ProgressBar(float(es.fraction));
+        if (ImGui::Button("x: cancel experiment")) cancelExperiment();
+        if (s.traced) wrapText("The view's own trace waits while the experiment runs.");
+        ImGui::Separator();
+    }
     wrapf("raster %.2f ms / frame", rasterMsSmooth_);
-    if (experiment_.active && s.traced)
-        wrapText("(the view's trace waits while the timing experiment runs)");
     if (traceStarted_) {
         ImGui::ProgressBar(st.tilesTotal ? float(st.tilesDone) / float(st.tilesTotal) : 0.0f);
         if (st.running)
@@ -1247,7 +1321,6 @@ void RaytraceLab::gui() {
         wrapText("(too few objects for a BVH: brute force)");
 
     ImGui::Separator();
-    const ExperimentStatus es = experimentStatus();
     if (!es.active) {
         if (ImGui::Button("t: run timing experiment")) startExperiment();
         if (es.cancelled) {
@@ -1255,9 +1328,7 @@ void RaytraceLab::gui() {
             ImGui::TextUnformatted("(cancelled)");
         }
     } else {
-        if (ImGui::Button("x: cancel experiment")) cancelExperiment();
-        ImGui::ProgressBar(float(es.fraction));
-        wrapf("%s; %.1f s", es.current.c_str(), es.seconds);
+        wrapText("timing experiment running (progress at the top; x cancels)");
     }
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
