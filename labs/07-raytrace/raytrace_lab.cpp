@@ -332,7 +332,9 @@ class RaytraceLab : public Lab {
         tree_ = inspectRay(scene_, s.model, traceSettings(), tc.pixelRay(x, y));
         treeLines_ = describe(*tree_, *scene_.scene);
         inspectedPixel_ = {x, y};
-        const glm::dvec2 sp = tc.screenOfPixel(x, y);
+        // In world units on the screen plane (seed 000: its xs, ys; part 1 is framed at
+        // 4 pixels per unit, so pixel offsets alone would not be the seed's numbers).
+        const glm::dvec2 sp = tc.screenOfPixel(x, y) * tc.screen.pixelSize;
         inspectedScreen_ = sp;
     }
     void resolvePendingInspect(const View& view) {
@@ -1080,8 +1082,8 @@ void heatBar() {
         dl->AddText(ImVec2(x, q.y + 2), ImGui::GetColorU32(ImGuiCol_Text), labels[i]);
     }
     ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
-    wrapText("max channel difference |raster - trace| of 255 (black 0, blue, red, yellow, "
-             "white from 64 up)");
+    wrapText("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
+             "yellow at 64 and above (also under the picture)");
 }
 
 // The timing experiment as a plot: trace time per scene on a log scale, BVH and no BVH.
@@ -1293,7 +1295,8 @@ void RaytraceLab::gui() {
             const double sh = sc.distScale / std::max(glm::length(l.position - c), 1e-9);
             if (sh > 1.5) {
                 wrapf("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
-                      "here (seed 000's scene is ~20x larger), so lit surfaces clamp at 255.",
+                      "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
+                      "clamp at 255.",
                       sc.distScale, glm::length(l.position - c), sh);
                 break;
             }
@@ -1316,7 +1319,7 @@ void RaytraceLab::gui() {
     if (!bvhAvailable_ && s.bvh)
         wrapText("(no BVH: brute force over all objects)");
     else if (scene_.accel)
-        wrapf("BVH built in %.4f s", scene_.accelSeconds);
+        wrapf("BVH built in %.3f ms", scene_.accelSeconds * 1e3);
     else if (s.bvh)
         wrapText("(too few objects for a BVH: brute force)");
 
