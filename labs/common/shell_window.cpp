@@ -34,6 +34,7 @@ struct WindowState {
     double smoothMs = 0.0;        // the same, exponentially smoothed for reading
     std::string lastScreenshot;   // path or error of the last screenshot, shown in the panel
     bool screenshotRequested = false;
+    bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;        // left button down outside the panel
     bool moved = false;           // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
@@ -71,11 +72,13 @@ std::string timestampedName() {
     return name + "-" + buf + ".png";
 }
 
-void saveScreenshot(const std::string& path) {
+bool saveScreenshot(const std::string& path) {
     Image img = readFramebuffer(g->windowWidth, g->windowHeight);
     std::string error;
-    g->lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
+    const bool ok = writePng(path, img, &error);
+    g->lastScreenshot = ok ? "saved " + path : error;
     std::fprintf(stderr, "%s\n", g->lastScreenshot.c_str());
+    return ok;
 }
 
 void drawPanel() {
@@ -122,7 +125,8 @@ void display() {
         glPopAttrib();
     }
     // --screenshot and the button save what the user sees, panel included (`h` hides it).
-    if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot);
+    if (lastFrame && !g->opts.screenshot.empty() && !saveScreenshot(g->opts.screenshot))
+        g->screenshotFailed = true;
     if (g->screenshotRequested) {
         g->screenshotRequested = false;
         saveScreenshot(timestampedName());
@@ -282,7 +286,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     state.lab.reset(); // GL objects go while the context still exists
     glutExit();        // destroys the window and its GL context (Mesa's buffers with them)
     g = nullptr;
-    return 0;
+    return state.screenshotFailed ? 1 : 0;
 }
 
 } // namespace wb
