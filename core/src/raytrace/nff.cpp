@@ -136,10 +136,11 @@ class Tokens {
     const std::string& name() const { return name_; }
     int lastLine() const { return lastLine_; }
 
+    // Shortest text that reads back to v: 1.0000001e150 is not shown as "1e+150".
     static std::string fmt(double v) {
-        std::ostringstream o;
-        o << std::setprecision(6) << v;
-        return o.str();
+        char buf[32];
+        const auto r = std::to_chars(buf, buf + sizeof buf, v);
+        return std::string(buf, r.ptr);
     }
 
   private:

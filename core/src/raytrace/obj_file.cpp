@@ -6,11 +6,11 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
-#include <iomanip>
 #include <istream>
 #include <map>
 #include <sstream>
@@ -25,10 +25,11 @@ bool finite3(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// Shortest text that reads back to v (1.0000001e38 is not shown as "1e+38").
 std::string fmt(double v) {
-    std::ostringstream o;
-    o << std::setprecision(6) << v;
-    return o.str();
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
 }
 
 // An istream over text already in memory (tinyobjloader reads from a stream), without

@@ -243,7 +243,7 @@ TEST_CASE("rt_nff: geometry up to 1e150 renders, beyond it the limit is reported
         CHECK(drawn > 32 * 32 / 10); // the framing camera sees the object large
     }
     CHECK_THAT(nffError("s 0 0 0 1.0000001e150\n"),
-               StartsWith("t.nff:1: sphere radius: 1e+150 is beyond the coordinate limit ±1e150"));
+               StartsWith("t.nff:1: sphere radius: 1.0000001e+150 is beyond the coordinate limit ±1e150"));
     CHECK_THAT(nffError("s 0 -1e160 0 1\n"), StartsWith("t.nff:1: sphere centre: -1e+160 is beyond"));
     CHECK_THAT(nffError("p 3\n0 0 0\n1 0 0\n0 1e308 0\n"),
                StartsWith("t.nff:4: polygon vertex: 1e+308 is beyond"));
@@ -258,6 +258,8 @@ TEST_CASE("rt_obj: numbers, indices and .mtl values are checked with their line"
     const std::string p = tempPath("rt_bad.obj");
     const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     // Point 8: `v 1e300` was called non-finite; it is beyond float range.
+    CHECK_THAT(objError("v 0 0 1.0000001e38\n"),
+               StartsWith(p + ":1: vertex coordinate 1.0000001e+38 is beyond the limit ±1e38"));
     CHECK_THAT(objError("v 0 0 1e300\n"),
                StartsWith(p + ":1: vertex coordinate 1e+300 is beyond the limit ±1e38"));
     CHECK_THAT(objError("v 0 nan 0\n"), StartsWith(p + ":1: non-finite vertex coordinate 'nan'"));
