@@ -20,7 +20,8 @@ ViewCamera ViewCamera::make(const CameraSpec& spec, double yawDeg, double pitchD
                              ? spec.screenPixel
                              : 2.0 * dist * std::tan(glm::radians(spec.fovY) / 2) / height;
     ViewCamera v;
-    v.screen = rt::orbitScreenCamera(spec.eye, spec.target, spec.up, yawDeg, pitchDeg, pixel / zoom);
+    v.screen =
+        rt::orbitScreenCamera(spec.eye, spec.target, spec.up, yawDeg, pitchDeg, pixel / zoom);
     v.target = spec.target;
     v.dist = dist;
     v.width = width;

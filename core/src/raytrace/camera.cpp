@@ -17,8 +17,7 @@ ScreenCamera orbitScreenCamera(const glm::dvec3& eye, const glm::dvec3& target,
     const glm::dvec3 up0 = glm::normalize(upHint);
     glm::dvec3 offset = eye - target;
     const double dist = glm::length(offset);
-    if (!(dist > 0) || !std::isfinite(dist))
-        throw std::invalid_argument("camera: eye == target");
+    if (!(dist > 0) || !std::isfinite(dist)) throw std::invalid_argument("camera: eye == target");
     // Exact when both angles are 0: no rotation, so seed 000's rays stay bit-exact.
     if (yawDeg != 0.0)
         offset = glm::dvec3(glm::rotate(glm::dmat4(1.0), glm::radians(yawDeg), up0) *

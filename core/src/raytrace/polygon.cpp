@@ -93,7 +93,8 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
     while (left > 3) {
         ++work;
         const int a = prev[size_t(cur)], c = next[size_t(cur)];
-        if (turn(cur) == 0 && glm::dot(p[size_t(a)] - p[size_t(cur)], p[size_t(c)] - p[size_t(cur)]) <= 0) {
+        if (turn(cur) == 0 &&
+            glm::dot(p[size_t(a)] - p[size_t(cur)], p[size_t(c)] - p[size_t(cur)]) <= 0) {
             // A straight corner (b between a and c): dropping it loses no area.
         } else if (isEar(cur)) {
             out.push_back({a, cur, c});

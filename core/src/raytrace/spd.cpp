@@ -116,7 +116,6 @@ void recJack(NffDocument& doc, const Similarity& m, int depth, int maxDepth, int
             }
 }
 
-
 // One gear of SPD gears: a top face of 4 points per tooth (two on the outer radius at
 // ±0.19 of the tooth angle, two on the inner radius at 0.3 and 0.7), a rectangle
 // along each of its edges down to the bottom face, and the bottom face, walked the
@@ -206,8 +205,8 @@ void polygon(NffDocument& doc, std::vector<glm::dvec3> v, int surface) {
     doc.objects.push_back(std::move(o));
 }
 
-void cylcone(NffDocument& doc, const glm::dvec3& base, double rb, const glm::dvec3& apex,
-             double ra, int surface) {
+void cylcone(NffDocument& doc, const glm::dvec3& base, double rb, const glm::dvec3& apex, double ra,
+             int surface) {
     NffObject c;
     c.kind = NffObject::Kind::Cone;
     c.base = base;
@@ -246,7 +245,8 @@ std::vector<glm::dvec3> dodecRing(double minorRadius) {
     const double scale = 1.0 / (1.0 + minorRadius); // fits in the unit sphere
     std::vector<glm::dvec3> v(30);
     for (int i = 0; i < 5; ++i)
-        v[size_t(i)] = scale * glm::dvec3(std::cos(i * 2.0 * kPi / 5.0), std::sin(i * 2.0 * kPi / 5.0), 0);
+        v[size_t(i)] =
+            scale * glm::dvec3(std::cos(i * 2.0 * kPi / 5.0), std::sin(i * 2.0 * kPi / 5.0), 0);
     const glm::dmat3 rx =
         rotation({1, 0, 0}, 2.0 * std::acos(std::cos(kPi / 3.0) / std::sin(kPi / 5.0)));
     for (int p = 1; p < 6; ++p) {
@@ -467,8 +467,9 @@ NffDocument spdGears(int sf) {
 
 NffDocument spdTetra(int sf) {
     checkSize(sf, "spdTetra");
-    NffDocument doc = spdDocument({1.022846, -3.177154, -2.174512}, {-0.004103, -0.004103, 0.216539},
-                                  {-0.816497, -0.816497, 0.816497}, 45, 1.0);
+    NffDocument doc =
+        spdDocument({1.022846, -3.177154, -2.174512}, {-0.004103, -0.004103, 0.216539},
+                    {-0.816497, -0.816497, 0.816497}, 45, 1.0);
     addLight(doc, {1.876066, -18.123936, -5.000422});
     const int red = addSurface(doc, spdSurface({1.0, 0.2, 0.2}, 1.0, 0.0, 0.0, 0.0, 0.0));
     tetra(doc, sf, {0, 0, 0}, 1.0, red);
@@ -481,18 +482,21 @@ NffDocument spdRings(int sf) {
     const double spread = 1.0 / std::sin(kPi / 8.0);
     const glm::dvec3 from(-1.0, -spread, 0.5);
     NffDocument doc = spdDocument(from, from + glm::dvec3(0, 1, 0), {0, 0, 1}, 45, 1.0);
-    for (const glm::dvec3& p : {glm::dvec3(3, -spread, 3), glm::dvec3(-4, -spread, 1),
-                                glm::dvec3(2, -spread, -4)})
+    for (const glm::dvec3& p :
+         {glm::dvec3(3, -spread, 3), glm::dvec3(-4, -spread, 1), glm::dvec3(2, -spread, -4)})
         addLight(doc, p);
     // A white wall behind the pyramid that just fills the 45° view (+1%).
     const int white = addSurface(doc, spdSurface({1, 1, 1}, 1.0, 0.0, 0.0, 0.0, 0.0));
     const double wy = spread * (sf + 1);
     const double wxz = 1.01 * (wy - from.y) * std::tan(kPi / 8.0);
     polygon(doc,
-            {{wxz + from.x, wy, wxz + from.z}, {-wxz + from.x, wy, wxz + from.z},
-             {-wxz + from.x, wy, -wxz + from.z}, {wxz + from.x, wy, -wxz + from.z}},
+            {{wxz + from.x, wy, wxz + from.z},
+             {-wxz + from.x, wy, wxz + from.z},
+             {-wxz + from.x, wy, -wxz + from.z},
+             {wxz + from.x, wy, -wxz + from.z}},
             white);
-    const glm::dvec3 colours[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 1, 1}, {1, 0, 1}, {1, 1, 0}};
+    const glm::dvec3 colours[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                   {0, 1, 1}, {1, 0, 1}, {1, 1, 0}};
     const std::vector<glm::dvec3> ring = dodecRing(radius);
     // A pyramid of objects, depth d holding (d+1)² of them, its point towards the eye.
     for (int d = 0; d < sf; ++d)
@@ -515,12 +519,14 @@ NffDocument spdRings(int sf) {
 NffDocument spdLattice(int sf) {
     checkSize(sf, "spdLattice");
     const double inv = 1.0 / sf, r1 = 0.25 / sf, r2 = 0.0625 / sf;
-    const double delta = r1 * (1.0 - std::sqrt(0.0625 / 0.25)) * 0.99; // cylinder ends inside the spheres
+    const double delta =
+        r1 * (1.0 - std::sqrt(0.0625 / 0.25)) * 0.99; // cylinder ends inside the spheres
     const double cx = ((sf >> 1) + 0.5) * inv;
-    NffDocument doc = spdDocument({cx, 1.0, 1.0 - 1.0 / (sf << 1)}, {cx, -1.0, -1.0 - 1.0 / (sf << 1)},
-                                  {0.2, 1.0, 0.0}, 60, 0.0);
-    for (const glm::dvec3& p : {glm::dvec3(2, .5, .5), glm::dvec3(-1, .5, .5), glm::dvec3(.5, 2, .5),
-                                glm::dvec3(.5, -1, .5), glm::dvec3(.5, .5, 2), glm::dvec3(.5, .5, -1)})
+    NffDocument doc = spdDocument({cx, 1.0, 1.0 - 1.0 / (sf << 1)},
+                                  {cx, -1.0, -1.0 - 1.0 / (sf << 1)}, {0.2, 1.0, 0.0}, 60, 0.0);
+    for (const glm::dvec3& p :
+         {glm::dvec3(2, .5, .5), glm::dvec3(-1, .5, .5), glm::dvec3(.5, 2, .5),
+          glm::dvec3(.5, -1, .5), glm::dvec3(.5, .5, 2), glm::dvec3(.5, .5, -1)})
         addLight(doc, p);
     const glm::dvec3 axisColour[3] = {{0.9, 0.1, 0.1}, {0.1, 0.9, 0.1}, {0.1, 0.1, 0.9}};
     for (int x = 0; x <= sf; ++x)
@@ -571,9 +577,11 @@ NffDocument spdTree(int sf) {
     // Child frames: turn about x by the branching angle and about z by the divergence,
     // shrink by the contraction and move to the parent's tip (0, 0, 1).
     Similarity child[2];
-    const double branch[2] = {40.0, 25.0}, diverge[2] = {90.0, 140.0 + 90.0}, contract[2] = {0.65, 0.70};
+    const double branch[2] = {40.0, 25.0}, diverge[2] = {90.0, 140.0 + 90.0},
+                 contract[2] = {0.65, 0.70};
     for (int i = 0; i < 2; ++i) {
-        child[i].r = rotation({0, 0, 1}, diverge[i] * kPi / 180) * rotation({1, 0, 0}, branch[i] * kPi / 180);
+        child[i].r = rotation({0, 0, 1}, diverge[i] * kPi / 180) *
+                     rotation({1, 0, 0}, branch[i] * kPi / 180);
         child[i].s = contract[i];
         child[i].t = {0, 0, 1};
     }

@@ -87,7 +87,8 @@ void checkCoverage(const std::vector<glm::dvec3>& v, int samples) {
             nearEdge = distToSegment(p[j], p[k], q) < 1e-9;
         for (const auto& t : tris) // and near the triangles' own (inner) edges
             for (int e = 0; e < 3 && !nearEdge; ++e)
-                nearEdge = distToSegment(p[size_t(t[size_t(e)])], p[size_t(t[size_t((e + 1) % 3)])], q) < 1e-9;
+                nearEdge = distToSegment(p[size_t(t[size_t(e)])], p[size_t(t[size_t((e + 1) % 3)])],
+                                         q) < 1e-9;
         if (nearEdge) continue;
         int cover = 0;
         for (const auto& t : tris)
@@ -155,7 +156,8 @@ TEST_CASE("self-intersecting polygons still give n - 2 triangles", "[raytrace][p
     CHECK(triangulatePolygon({{0, 0, 0}, {1, 1, 0}, {1, 0, 0}, {0, 1, 0}}).size() == 2);
     std::vector<glm::dvec3> star;
     for (int i = 0; i < 5; ++i)
-        star.push_back({std::cos(i * 4 * 3.14159265358979 / 5), std::sin(i * 4 * 3.14159265358979 / 5), 0});
+        star.push_back(
+            {std::cos(i * 4 * 3.14159265358979 / 5), std::sin(i * 4 * 3.14159265358979 / 5), 0});
     CHECK(triangulatePolygon(star).size() == 3);
 }
 

@@ -58,10 +58,10 @@ void samePicture(const std::string& name, const std::string& scene, int w, int h
     const Run ra = run(kBin + "/rt_render '" + scene + "' --size " + size + " --threads 2 " +
                            extra + " --out '" + a + "'",
                        a + ".log");
-    const Run rb = run(kBin + "/lab07-raytrace --headless --scene '" + scene +
-                           "' --keys G --size " + size + " --threads 2 " + extra + " --out '" +
-                           b + "'",
-                       b + ".log");
+    const Run rb =
+        run(kBin + "/lab07-raytrace --headless --scene '" + scene + "' --keys G --size " + size +
+                " --threads 2 " + extra + " --out '" + b + "'",
+            b + ".log");
     INFO("rt_render: " << ra.log);
     INFO("lab07: " << rb.log);
     REQUIRE(ra.status == 0);
@@ -117,10 +117,11 @@ TEST_CASE("rt_render and lab 07 draw coplanar overlapping polygons alike",
     // ray, so only bit-identical rays give the same picture (the old fan triangulation
     // made such overlaps in gears, which is how one-ULP-different rays became 288 pixels).
     const std::string path = kOut + "/same-coplanar.nff";
-    std::ofstream(path) << "v\nfrom 0.3 -3 2\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0.01\n"
-                           "resolution 64 64\nb 0 0 0\nl 1 -2 3\n"
-                           "f 1 0.2 0.2 1 0 0 0 1\np 4\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n"
-                           "f 0.2 0.2 1 1 0 0 0 1\np 4\n-1.2 -0.7 0\n0.9 -1.1 0\n1.1 0.8 0\n-0.8 1.2 0\n";
+    std::ofstream(path)
+        << "v\nfrom 0.3 -3 2\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0.01\n"
+           "resolution 64 64\nb 0 0 0\nl 1 -2 3\n"
+           "f 1 0.2 0.2 1 0 0 0 1\np 4\n-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n"
+           "f 0.2 0.2 1 1 0 0 0 1\np 4\n-1.2 -0.7 0\n0.9 -1.1 0\n1.1 0.8 0\n-0.8 1.2 0\n";
     samePicture("coplanar", path, 64, 64);
 }
 

@@ -74,12 +74,12 @@ Census census(const Scene& scene, const LookAtCamera& cam, int w, int h,
     for (const wb::test::Outlier& o : wb::test::isolatedOutliers(img, kThreshold)) {
         ++c.outliers;
         int back = 0; // jittered rays that fall back into the neighbourhood
-        for (const auto& d : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(-1, 1),
-                              glm::dvec2(1, 1)}) {
+        for (const auto& d :
+             {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(-1, 1), glm::dvec2(1, 1)}) {
             uint8_t rgb[3];
-            model.toRgb8(tracer.trace(cam.rayAt(o.x + 0.5 + kJitter * d.x,
-                                                o.y + 0.5 + kJitter * d.y, w, h)),
-                         rgb);
+            model.toRgb8(
+                tracer.trace(cam.rayAt(o.x + 0.5 + kJitter * d.x, o.y + 0.5 + kJitter * d.y, w, h)),
+                rgb);
             back += withNeighbours(img, o.x, o.y, rgb);
         }
         if (back == 4) {
@@ -167,9 +167,9 @@ TEST_CASE("speckles: none in SPD gears 2 and balls 2, with and without the BVH",
              {std::tuple{"gears", bvh ? 2 : 1, bvh ? 128 : 64, bvh ? 128 : 64},
               std::tuple{"balls", 2, 160, 120}}) {
             const Census c = sceneCensus(spdScene(name, size), w / kShrink, h / kShrink, bvh);
-            INFO(name << " " << size << " " << w << "x" << h << (bvh ? " BVH" : " plain loop") << ": "
-                      << c.outliers << " isolated outliers (sub-pixel detail), speckles:"
-                      << c.where);
+            INFO(name << " " << size << " " << w << "x" << h << (bvh ? " BVH" : " plain loop")
+                      << ": " << c.outliers
+                      << " isolated outliers (sub-pixel detail), speckles:" << c.where);
             CHECK(c.speckles == 0);
         }
     }
