@@ -241,6 +241,9 @@ class RaytraceLab : public Lab {
 
     bool busy() const override {
         if (experiment_.active) return true;
+        // One more frame after the mesh was rebuilt: the panel (drawn before the scene)
+        // then shows the new triangle count and budget note, not the old ones.
+        if (meshJustBuilt_) return true;
         return s.traced && !userCancelled_ && (!traceStarted_ || job_.status().running);
     }
 
@@ -380,6 +383,7 @@ class RaytraceLab : public Lab {
     uint64_t meshGeneration_ = ~uint64_t(0);
     int meshW_ = 0, meshH_ = 0;
     float meshZoom_ = 0;
+    bool meshJustBuilt_ = false; // the last draw() rebuilt the mesh (see busy())
     GLuint program_ = 0;
     std::string programError_;
     double rasterMs_ = 0, rasterMsSmooth_ = 0;
@@ -733,8 +737,10 @@ void RaytraceLab::draw(const View& view) {
         if (experiment_.active && view.headless) return;
     }
     const ViewCamera cam = rasterCamera(view);
+    meshJustBuilt_ = false;
     if (meshGeneration_ != sceneGeneration_ || meshW_ != view.width || meshH_ != view.height ||
         meshZoom_ != view.zoom) {
+        meshJustBuilt_ = true;
         rebuildMesh(cam);
         meshGeneration_ = sceneGeneration_;
         meshW_ = view.width;

@@ -83,8 +83,11 @@ TEST_CASE("lab 07: a camera change during a trace cancels it and the result is t
         CHECK(wb::raytraceLastTraceFinished(*lab));
     }
     // A 320×240 trace of this scene takes far longer than a draw() call, so every change
-    // arrived mid-trace.
-    CHECK(cancels == 3);
+    // normally arrives mid-trace (3). On a loaded machine one llvmpipe draw() can outlast
+    // a trace (seen with a parallel sanitizer build: 2), so at least one is required.
+    CHECK(cancels >= 1);
+    CHECK(cancels <= 3);
+    if (cancels != 3) WARN("only " << cancels << " of 3 camera changes arrived mid-trace");
     // The frame shown equals a fresh headless render of the final camera, pixel for pixel.
     auto fresh = wb::makeRaytraceLab();
     std::string err;
