@@ -22,7 +22,7 @@ std::optional<glm::dvec3> refractDir(const glm::dvec3& v, const glm::dvec3& n, d
 }
 
 double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                             double dist) const {
+                             double dist, const Primitive* self) const {
     ++shadowRays;
     Ray feeler;
     feeler.origin = origin;
@@ -30,6 +30,7 @@ double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, do
     double k = 1.0;
     // Only the blockers' materials matter: no hit records (Primitive::occluded).
     scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&](const Primitive& p) {
+        if (&p == self) return true; // a flat primitive cannot shadow its own point
         const double kt = scene_.materials[size_t(p.material)].kt;
         if (kt < settings_.opaqueKt) {
             k = 0.0; // an opaque blocker: no need to look further
@@ -76,8 +77,11 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
             // the surface as the normal offset of reflected rays: a feeler that grazes a
             // blocker's border (seed 000's does, exactly) is judged on the true line.
             const double t0 = feelerStart(hit.point, hit.normal, s.toLight);
-            s.transmittance = t0 < s.distance ? transmittance(hit.point, s.toLight, t0, s.distance)
-                                              : 1.0; // the light is closer than the offset
+            const Primitive* self =
+                hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
+            s.transmittance = t0 < s.distance
+                                  ? transmittance(hit.point, s.toLight, t0, s.distance, self)
+                                  : 1.0; // the light is closer than the offset
         } else {
             s.transmittance = 0.0; // the surface faces away from the light
         }

@@ -50,10 +50,14 @@ bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) con
     const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
     double t = (u * az + v * bz + w * cz) / det;
     if (!std::isfinite(t)) {
-        // u·az is a product of three coordinate differences: it overflows beyond ~1e102
-        // (issue 12 point 5). The barycentric form divides first; it is used only here,
-        // so every hit that was finite keeps its bits.
-        t = (u / det) * az + (v / det) * bz + (w / det) * cz;
+        // u·az is a product of three coordinate differences: it overflows beyond ~1e100
+        // (issue 12 point 5). The same formula with u, v, w, det scaled by one power of
+        // two (exact) rounds exactly as the unscaled one would without the overflow;
+        // dividing first instead lost enough accuracy to shadow the triangle by itself.
+        // Taken only here, so every hit that was finite keeps its bits.
+        const double m = std::max({std::abs(u), std::abs(v), std::abs(w)});
+        const double k = std::ldexp(1.0, -std::ilogb(m));
+        t = ((u * k) * az + (v * k) * bz + (w * k) * cz) / (det * k);
     }
     if (!(t > tMin && t <= tMax)) return false;
     const double b0 = u / det, b1 = v / det, b2 = w / det;
