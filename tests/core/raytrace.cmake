@@ -46,6 +46,9 @@ wb_test(raytrace_same_picture_test
   SOURCES raytrace_scale/same_picture_test.cpp
   LIBS core)
 add_dependencies(raytrace_same_picture_test rt_render lab07-raytrace lab07-raytrace-headless)
+if(WORKBENCH_SANITIZE)
+  target_compile_definitions(raytrace_same_picture_test PRIVATE WB_SANITIZED=1)
+endif()
 # Issue 12 point 12: every SPD generator in the suite (counts, round trip, render smoke)
 # and a speckle census (isolated outliers that one exact ray alone carries).
 wb_test(raytrace_pictures_test
