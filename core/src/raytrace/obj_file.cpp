@@ -259,19 +259,21 @@ class SafeMaterialReader : public tinyobj::MaterialReader {
                     std::map<std::string, int>* matMap, std::string* warn,
                     std::string* err) override {
         const std::string path = (!matId.empty() && matId[0] == '/') ? matId : dir_ + matId;
+        // The name comes from the file: escaped wherever it is shown (fuzz_obj found a
+        // control byte of a mtllib name in the "not found" warning).
+        const std::string shown = escapeForMessage(path, 200);
         std::string text, why;
-        errno = 0;
         if (!readRegularFile(path, kMtlMaxBytes, text, why)) {
             if (why.find("No such file") != std::string::npos) {
-                missing_.push_back(path + ": material file not found; default material used");
+                missing_.push_back(shown + ": material file not found; default material used");
             } else if (error_.empty()) {
-                error_ = path + ":0: " +
+                error_ = shown + ":0: " +
                          (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why);
             }
             return false;
         }
         try {
-            checkMtl(skipBom(text), path);
+            checkMtl(skipBom(text), shown);
         } catch (const SceneFileError& e) {
             if (error_.empty()) error_ = e.what();
             return false;

@@ -351,6 +351,11 @@ TEST_CASE("rt_obj: vn nan is repaired as documented; warnings are counted and ke
     CHECK_THAT(w.warnings[0], Contains("rt_nowhere.mtl: material file not found"));
     CHECK(w.warnings[1] == q + ":6: face with fewer than 3 vertices dropped");
     CHECK(w.warnings[2] == q + ":7: face with fewer than 3 vertices dropped");
+    // The mtllib name comes from the file: escaped (found by fuzz_obj).
+    const SceneFile e = loadSceneFile(writeFile("rt_warn2.obj", "mtllib a\x1b[2Jb.mtl\n"
+                                                                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    REQUIRE(e.warningCount == 1);
+    CHECK_THAT(e.warnings[0], Contains("a\\x1b[2Jb.mtl: material file not found"));
 }
 
 TEST_CASE("rt_obj: the triangle cap is reported at the face that crosses it", "[raytrace][obj]") {
