@@ -6,6 +6,7 @@ target_sources(core PRIVATE
   src/raytrace/cylinder.cpp
   src/raytrace/phong_model.cpp
   src/raytrace/plane.cpp
+  src/raytrace/polygon.cpp # issue 12: concave NFF polygons
   src/raytrace/polyhedron.cpp
   src/raytrace/primitive.cpp
   src/raytrace/quadric.cpp

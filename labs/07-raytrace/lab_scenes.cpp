@@ -104,8 +104,15 @@ void buildSeedPart1(LabScene& s, bool withRect1) {
     if (withRect1) sc.add(rt::Rectangle({0, 0, 40}, {20, 0, 40}, {0, 20, 40}), red);
     sc.add(rt::Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), green);
     seedCamera(s);
-    s.about = withRect1 ? "seed 000 part 1: P(50,0) in the red rectangle's shadow (10,117,10)"
-                        : "seed 000 part 1, red rectangle removed: P(50,0) lit (50,197,50)";
+    // Framed: at the seed's 1 unit per pixel the 62-pixel rectangles were a dot in the
+    // upper right of the window. A quarter unit per pixel (exact in binary) makes them
+    // 250 pixels, and the seed's screen points stay pixel corners: P(xs, ys) is pixel
+    // (W/2 + 4·xs, H/2 − 4·ys), so P(50, 0) is traced with the seed's very ray.
+    s.camera.screenPixel = 0.25;
+    s.about = withRect1 ? "seed 000 part 1: P(50,0) (pixel W/2+200, H/2) in the red "
+                          "rectangle's shadow: (10,117,10)"
+                        : "seed 000 part 1, red rectangle removed: P(50,0) (pixel W/2+200, "
+                          "H/2) lit: (50,197,50)";
 }
 
 // Seed 000 part 2: the green rectangle (kr 0.5) reflects the red one standing in x = 50.
@@ -211,6 +218,8 @@ void fromSceneFile(LabScene& s, rt::SceneFile&& f, const std::string& about) {
     s.camera.fovY = f.view.angle;
     s.model = ModelKind::Phong;
     s.about = about;
+    s.warnings = std::move(f.warnings);
+    s.warningCount = f.warningCount;
 }
 
 // "balls:3" -> 3 when the prefix matches and N is 1..5.
@@ -237,6 +246,19 @@ std::vector<std::string> builtinSceneNames() {
             "seed000-part1-lit", "seed000-part2", "glass-cube",      "seed001-table",
             "balls:1",           "balls:2",       "balls:3",         "balls:4",
             "jacks:1",           "jacks:2",       "jacks:3",         "teapot"};
+}
+
+std::vector<std::string> warningLines(const LabScene& s) {
+    std::vector<std::string> out;
+    if (s.warningCount == 0) return out;
+    out.push_back(std::to_string(s.warningCount) +
+                  (s.warningCount == 1 ? " warning:" : " warnings:"));
+    for (const std::string& w : s.warnings)
+        out.push_back("  " + w);
+    if (s.warningCount > s.warnings.size())
+        out.push_back("  ... and " + std::to_string(s.warningCount - s.warnings.size()) +
+                      " more");
+    return out;
 }
 
 bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {

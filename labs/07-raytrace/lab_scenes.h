@@ -40,7 +40,13 @@ struct LabScene {
     ModelKind model = ModelKind::Phong;   // the model the scene is meant for
     double loadSeconds = 0.0;             // building or reading the scene
     double accelSeconds = 0.0;            // building the BVH (0 when none)
+    std::vector<std::string> warnings;    // the reader's first warnings, "file:line: text"
+    size_t warningCount = 0;              // all of them (kept or not)
 };
+
+// "N warning(s):", the kept lines, "... and M more" (empty when there are none): what
+// the panel and the headless run show.
+std::vector<std::string> warningLines(const LabScene& s);
 
 // Names the panel offers (in-code and generated scenes; files come by path).
 std::vector<std::string> builtinSceneNames();

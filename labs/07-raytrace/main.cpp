@@ -9,16 +9,18 @@
 //   d         difference heat map |raster - trace| with mean and max
 //   m         tracer shading model course / phong
 //   b         BVH on/off
-//   x         cancel the trace
+//   x         cancel the trace (or the timing experiment)
 //   n N       next / previous scene
 //   [ ]       tracer depth limit down / up
 //   r         trace resolution 1, 1/2, 1/4
 //   c         clear the ray inspector
-//   t         run the timing experiment
+//   t         run the timing experiment (every scene with and without the BVH)
 //   click     inspect the ray tree of a pixel
 #include "common/shell.h"
 #include "raytrace_lab.h"
 
 int main(int argc, char** argv) {
-    return wb::runLab(argc, argv, wb::makeRaytraceLab);
+    const int rc = wb::runLab(argc, argv, wb::makeRaytraceLab);
+    // Non-finite pixels or an --inspect outside the image were reported on stderr.
+    return rc == 0 && wb::raytraceHeadlessFailed() ? 1 : rc;
 }

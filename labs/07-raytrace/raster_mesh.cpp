@@ -38,14 +38,22 @@ void sceneBounds(const rt::Scene& scene, dvec3& centre, double& radius) {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr int kCoarsestSegments = 4; // around a circle once the budget forces coarsening
 
 struct Builder {
     std::map<int, MeshBatch> batches;
     long long triangles = 0;
+    bool countOnly = false;             // count the triangles a primitive makes, store nothing
+    std::map<int, long long> perMaterial; // count mode: triangles per material
 
     // Adds a triangle wound counter-clockwise as seen from the side its normals point to
     // (GL decides front/back faces by winding; two-sided lighting flips by that).
     void tri(int mat, dvec3 a, dvec3 b, dvec3 c, dvec3 na, dvec3 nb, dvec3 nc) {
+        if (countOnly) {
+            ++triangles;
+            ++perMaterial[mat];
+            return;
+        }
         const dvec3 face = glm::cross(b - a, c - a);
         if (!(glm::dot(face, face) > 0)) return; // degenerate
         if (glm::dot(face, na + nb + nc) < 0) {
@@ -70,6 +78,11 @@ struct Builder {
     // A parallelogram o + s·e1 + t·e2 split into nu × nv cells, constant normal n.
     void grid(int mat, const dvec3& o, const dvec3& e1, const dvec3& e2, const dvec3& n, int nu,
               int nv) {
+        if (countOnly) {
+            triangles += 2LL * nu * nv;
+            perMaterial[mat] += 2LL * nu * nv;
+            return;
+        }
         for (int i = 0; i < nu; ++i)
             for (int j = 0; j < nv; ++j) {
                 const double s0 = double(i) / nu, s1 = double(i + 1) / nu;
@@ -83,6 +96,11 @@ struct Builder {
     // A parametric surface f(u, v) with normal g(u, v) on [u0,u1] × [v0,v1], nu × nv cells.
     template <class F, class G>
     void surface(int mat, F f, G g, double u0, double u1, double v0, double v1, int nu, int nv) {
+        if (countOnly) {
+            triangles += 2LL * nu * nv;
+            perMaterial[mat] += 2LL * nu * nv;
+            return;
+        }
         for (int i = 0; i < nu; ++i)
             for (int j = 0; j < nv; ++j) {
                 const double ua = u0 + (u1 - u0) * i / nu, ub = u0 + (u1 - u0) * (i + 1) / nu;
@@ -117,7 +135,6 @@ std::vector<dvec3> clip(const std::vector<dvec3>& poly, const dvec3& n, double d
 
 std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
                                   const TessellationOptions& opt, TessellationStats* stats) {
-    Builder b;
     int skipped = 0;
     dvec3 sceneCentre;
     double sceneRadius;
@@ -130,19 +147,28 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
         const double d = std::max(cam.dist - glm::length(c - cam.target) - r, 0.05 * cam.dist);
         return length / d / pixelAngle;
     };
+    // `level` < 1 coarsens everything when the scene would need more than the budget:
+    // triangles grow as segments², so segments scale by sqrt(level).
+    double level = 1.0;
     auto segments = [&](double radiusPixels) {
-        const double n = kPi * std::sqrt(std::max(radiusPixels, 0.0) / opt.maxErrorPixels);
-        return std::clamp(int(std::ceil(n)), opt.minSegments, opt.maxSegments);
+        const double n =
+            kPi * std::sqrt(std::max(radiusPixels, 0.0) / opt.maxErrorPixels) * std::sqrt(level);
+        // The floor coarsens with the level too (smoothly: a jump from 8 to 4 segments
+        // would halve a scene of small spheres at the first step below 1).
+        const int lo = std::min(
+            opt.minSegments,
+            std::max(kCoarsestSegments, int(std::ceil(opt.minSegments * std::sqrt(level)))));
+        return std::clamp(int(std::ceil(n)), lo, opt.maxSegments);
     };
     auto cells = [&](double lengthPixels) {
-        return std::clamp(int(std::ceil(lengthPixels / opt.gridPixels)), 1, 64);
+        return std::clamp(int(std::ceil(lengthPixels / opt.gridPixels * std::sqrt(level))), 1, 64);
     };
 
-    for (const auto& up : scene.primitives) {
-        const rt::Primitive* p = up.get();
+    // One primitive into `b` (or counted, in count mode).
+    auto emitOne = [&](const rt::Primitive* p, Builder& b) {
         const int mat = p->material;
         if (auto* s = dynamic_cast<const rt::Sphere*>(p)) {
-            if (!(s->radius > 0)) continue;
+            if (!(s->radius > 0)) return;
             const int n = segments(pixels(s->radius, s->centre, s->radius));
             const dvec3 c = s->centre;
             const double r = s->radius;
@@ -168,6 +194,11 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             const double edge = std::max({glm::length(t->v1 - t->v0), glm::length(t->v2 - t->v0),
                                           glm::length(t->v2 - t->v1)});
             const int n = cells(pixels(edge, c, edge));
+            if (b.countOnly) { // n² triangles (n(n+1)/2 up, n(n−1)/2 down), some degenerate
+                b.triangles += (long long)n * n;
+                b.perMaterial[mat] += (long long)n * n;
+                return;
+            }
             auto at = [&](int i, int j) {
                 const double a = double(i) / n, bb = double(j) / n;
                 return std::pair<dvec3, dvec3>{t->v0 + a * (t->v1 - t->v0) + bb * (t->v2 - t->v0),
@@ -200,7 +231,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
         } else if (auto* cn = dynamic_cast<const rt::Cone*>(p)) {
             const dvec3 axis = cn->c1 - cn->c0;
             const double h = glm::length(axis);
-            if (!(h > 0)) continue;
+            if (!(h > 0)) return;
             const dvec3 a = axis / h;
             dvec3 ex, ey;
             frame(a, ex, ey);
@@ -218,7 +249,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
                       cells(pixels(h, mid, std::max(rmax, h / 2))));
             for (int cap = 0; cap < 2; ++cap) {
                 const double r = cap ? cn->r1 : cn->r0;
-                if (!(r > 0)) continue;
+                if (!(r > 0)) return;
                 const dvec3 c = cap ? cn->c1 : cn->c0;
                 const dvec3 nrm = cap ? a : -a;
                 for (int i = 0; i < n; ++i) {
@@ -232,14 +263,14 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             // Cuts beyond the scene are clamped to it: an uncut paraboloid is infinite.
             const double zl = std::max(q->zLow, c.z - extent),
                          zh = std::min(q->zHigh, c.z + extent);
-            if (!(zl < zh)) continue;
+            if (!(zl < zh)) return;
             const double rpx = pixels(std::max({ax.x, ax.y}), c, glm::length(ax));
             const int n = segments(rpx);
             const int nz = std::max(n / 2, 4);
             if (q->kind == rt::Quadric::Kind::Ellipsoid) {
                 const double s0 = std::asin(std::clamp((zl - c.z) / ax.z, -1.0, 1.0));
                 const double s1 = std::asin(std::clamp((zh - c.z) / ax.z, -1.0, 1.0));
-                if (!(s0 < s1)) continue;
+                if (!(s0 < s1)) return;
                 auto f = [&](double u, double v) {
                     return c + dvec3(ax.x * std::cos(v) * std::cos(u),
                                      ax.y * std::cos(v) * std::sin(u), ax.z * std::sin(v));
@@ -253,7 +284,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
                 // (x/A)² + (y/B)² = (z − z0)/C: s = sqrt((z − z0)/C) is the ring's scale.
                 auto sOf = [&](double z) { return std::sqrt(std::max((z - c.z) / ax.z, 0.0)); };
                 const double s0 = ax.z > 0 ? sOf(zl) : sOf(zh), s1 = ax.z > 0 ? sOf(zh) : sOf(zl);
-                if (!(s0 < s1)) continue;
+                if (!(s0 < s1)) return;
                 auto f = [&](double u, double k) {
                     return c + dvec3(ax.x * k * std::cos(u), ax.y * k * std::sin(u), ax.z * k * k);
                 };
@@ -297,15 +328,96 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
                     b.flatTri(mat, poly[0], poly[j], poly[j + 1], n);
             }
         } else {
-            ++skipped;
+            ++skipped; // counted once, in the build pass below
         }
+    };
+
+    // 1. Count at full level; 2. coarsen until the whole scene fits the budget or the
+    //    coarsest level is reached; 3. walk the primitives in order until the budget is
+    //    spent: the rest becomes one bounding-box stand-in (12 triangles); 4. reserve the
+    //    arrays exactly (no doubling growth: memory stays at the budget) and build.
+    const long long budget = std::max<long long>(opt.maxTriangles, 1000);
+    Builder counter;
+    counter.countOnly = true;
+    auto countAll = [&] {
+        counter.triangles = 0;
+        for (const auto& up : scene.primitives)
+            emitOne(up.get(), counter);
+        return counter.triangles;
+    };
+    long long need = countAll();
+    if (need > budget) {
+        // The largest level that fits, by bisection on a log scale (counting is O(objects)):
+        // 12 steps between 1e-6 and 1 pin it to within a factor 1.004.
+        double lo = 1e-6, hi = 1.0;
+        for (int step = 0; step < 12; ++step) {
+            level = std::sqrt(lo * hi);
+            if (countAll() <= budget)
+                lo = level;
+            else
+                hi = level;
+        }
+        level = lo;
+        need = countAll();
+    }
+    counter.perMaterial.clear();
+    counter.triangles = 0;
+    size_t cut = scene.primitives.size(); // primitives [cut, end) go into the stand-in
+    Builder one; // one primitive's count
+    one.countOnly = true;
+    for (size_t i = 0; i < scene.primitives.size(); ++i) {
+        one.triangles = 0;
+        one.perMaterial.clear();
+        emitOne(scene.primitives[i].get(), one);
+        if (counter.triangles + one.triangles > budget - 12) {
+            cut = i;
+            break;
+        }
+        counter.triangles += one.triangles;
+        for (const auto& [mat, n] : one.perMaterial)
+            counter.perMaterial[mat] += n;
+    }
+    long long standIns = 0;
+    rt::Aabb rest;
+    int restMaterial = -1;
+    for (size_t i = cut; i < scene.primitives.size(); ++i) {
+        const rt::Primitive* p = scene.primitives[i].get();
+        ++standIns;
+        const rt::Aabb box = p->bounds();
+        if (box.empty() || !box.bounded()) continue;
+        rest.extend(box.lo);
+        rest.extend(box.hi);
+        if (restMaterial < 0) restMaterial = p->material;
+    }
+    Builder b;
+    for (const auto& [mat, n] : counter.perMaterial) {
+        MeshBatch& m = b.batches[mat];
+        m.material = mat;
+        m.pos.reserve(size_t(n + (mat == restMaterial ? 12 : 0)) * 9);
+        m.normal.reserve(size_t(n + (mat == restMaterial ? 12 : 0)) * 9);
+    }
+    skipped = 0;
+    for (size_t i = 0; i < cut; ++i)
+        emitOne(scene.primitives[i].get(), b);
+    if (!rest.empty()) {
+        const dvec3 lo = rest.lo, e = rest.hi - rest.lo;
+        const dvec3 ex(e.x, 0, 0), ey(0, e.y, 0), ez(0, 0, e.z);
+        b.grid(restMaterial, lo, ey, ez, {-1, 0, 0}, 1, 1);
+        b.grid(restMaterial, lo + ex, ey, ez, {1, 0, 0}, 1, 1);
+        b.grid(restMaterial, lo, ex, ez, {0, -1, 0}, 1, 1);
+        b.grid(restMaterial, lo + ey, ex, ez, {0, 1, 0}, 1, 1);
+        b.grid(restMaterial, lo, ex, ey, {0, 0, -1}, 1, 1);
+        b.grid(restMaterial, lo + ez, ex, ey, {0, 0, 1}, 1, 1);
     }
     std::vector<MeshBatch> out;
     for (auto& [mat, batch] : b.batches)
-        out.push_back(std::move(batch));
+        if (!batch.pos.empty()) out.push_back(std::move(batch));
     if (stats) {
         stats->triangles = b.triangles;
         stats->skipped = skipped;
+        stats->level = level;
+        stats->standIns = standIns;
+        stats->budget = budget;
     }
     return out;
 }

@@ -181,6 +181,9 @@ struct Inspector : rt::TraceObserver {
         case rt::SkipReason::TotalInternalReflection:
             note += "total internal reflection (no transmitted ray); ";
             break;
+        case rt::SkipReason::RayBudget:
+            note += "ray budget per pixel used up; ";
+            break;
         }
     }
 

@@ -11,10 +11,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cctype>
+#include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
 #include <thread>
+
+#include <unistd.h>
 
 namespace wb {
 
@@ -56,7 +60,7 @@ class RaytraceLab : public Lab {
                 {"d", "difference heat map raster vs trace"},
                 {"m", "tracer model course / phong"},
                 {"b", "BVH on/off"},
-                {"x", "cancel the trace"},
+                {"x", "cancel the trace / the timing experiment"},
                 {"n", "next scene"},
                 {"N", "previous scene"},
                 {"[", "depth limit down"},
@@ -68,14 +72,17 @@ class RaytraceLab : public Lab {
     }
 
     std::vector<OptionHelp> options() const override {
-        return {{"scene", "FILE|NAME",
-                 "one-sphere two-spheres seed000-part1 seed000-part2 glass-cube seed001-table "
-                 "balls:N jacks:N or .nff/.obj"},
+        // The names come from builtinSceneNames(), so --help cannot miss one.
+        std::string names;
+        for (const std::string& n : builtinSceneNames())
+            if (n.find(':') == std::string::npos) names += n + " ";
+        return {{"scene", "FILE|NAME", names + "balls:N jacks:N (N = 1..5) or .nff/.obj"},
                 {"threads", "N", "trace threads (0 = all cores)"},
                 {"depth", "D", "tracer depth limit (0..20)"},
                 {"model", "course|phong", "tracer shading model (default: the scene's)"},
                 {"inspect", "X,Y", "inspect image pixel (X, Y) of the traced view"},
                 {"experiment", "", "run the timing experiment and print its table"}};
+        // (--inspect prints the ray tree the panel shows on stdout.)
     }
 
     bool setOption(const std::string& name, const std::string& value, std::string& error) override {
@@ -185,6 +192,10 @@ class RaytraceLab : public Lab {
             applyAccel();
             return true;
         case 'x':
+            if (experiment_.active) {
+                cancelExperiment();
+                return true;
+            }
             if (job_.status().running) ++cancels_;
             job_.cancel();
             userCancelled_ = true;
@@ -230,6 +241,9 @@ class RaytraceLab : public Lab {
 
     bool busy() const override {
         if (experiment_.active) return true;
+        // One more frame after the mesh was rebuilt: the panel (drawn before the scene)
+        // then shows the new triangle count and budget note, not the old ones.
+        if (meshJustBuilt_) return true;
         return s.traced && !userCancelled_ && (!traceStarted_ || job_.status().running);
     }
 
@@ -245,6 +259,30 @@ class RaytraceLab : public Lab {
     }
     const RayTree* inspected() const { return tree_ ? &*tree_ : nullptr; }
     const std::vector<TimingRow>& timings() const { return timings_; }
+    ExperimentStatus experimentStatus() const {
+        ExperimentStatus st;
+        const Experiment& e = experiment_;
+        st.active = e.active;
+        st.cancelled = e.cancelled;
+        if (!e.active) return st;
+        const double cells = 2.0 * double(std::max<size_t>(e.scenes.size(), 1));
+        double done = 2.0 * double(e.next) + e.column;
+        if (e.tracing) {
+            const TraceStatus t = expJob_.status();
+            if (t.tilesTotal > 0)
+                done += (double(e.run) + double(t.tilesDone) / t.tilesTotal) / kExperimentRuns;
+        }
+        st.fraction = std::min(done / cells, 1.0);
+        if (e.next < e.scenes.size())
+            st.current = e.scenes[e.next] + (e.column ? ", no BVH" : ", BVH") + ", run " +
+                         std::to_string(e.run + 1);
+        st.seconds = secondsSince(e.start);
+        return st;
+    }
+    void setExperiment(const std::vector<std::string>& scenes, double bruteLimit) {
+        experimentScenes_ = scenes;
+        bruteLimitSeconds_ = bruteLimit;
+    }
     int cancels() const { return cancels_; }
     bool lastFinished() const { return job_.status().finished; }
 
@@ -256,6 +294,10 @@ class RaytraceLab : public Lab {
         if (!loadLabScene(name, next, err)) return false;
         scene_ = std::move(next);
         s.sceneName = name;
+        const std::vector<std::string> warns = warningLines(scene_); // also in the panel
+        for (size_t i = 0; i < warns.size(); ++i)
+            std::fprintf(stderr, "%s%s\n", i == 0 ? ("lab07: " + name + ": ").c_str() : "",
+                         warns[i].c_str());
         s.model = scene_.model;
         ++sceneGeneration_;
         applyAccel();
@@ -293,19 +335,37 @@ class RaytraceLab : public Lab {
         tree_ = inspectRay(scene_, s.model, traceSettings(), tc.pixelRay(x, y));
         treeLines_ = describe(*tree_, *scene_.scene);
         inspectedPixel_ = {x, y};
-        const glm::dvec2 sp = tc.screenOfPixel(x, y);
+        // In world units on the screen plane (seed 000: its xs, ys; part 1 is framed at
+        // 4 pixels per unit, so pixel offsets alone would not be the seed's numbers).
+        const glm::dvec2 sp = tc.screenOfPixel(x, y) * tc.screen.pixelSize;
         inspectedScreen_ = sp;
     }
     void resolvePendingInspect(const View& view) {
         if (!pendingInspect_) return;
         pendingInspect_ = false;
-        inspect(inspectX_, inspectY_, traceCamera(view));
+        const ViewCamera tc = traceCamera(view);
+        inspect(inspectX_, inspectY_, tc);
+        if (!view.headless) return;
+        // --inspect X,Y: the tree the panel shows, on stdout.
+        if (!tree_) {
+            std::fprintf(stderr, "lab07: --inspect %d,%d is outside the %dx%d traced image\n",
+                         inspectX_, inspectY_, tc.width, tc.height);
+            raytraceHeadlessFailed() = true;
+            return;
+        }
+        std::printf("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n", inspectedPixel_.x,
+                    inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y,
+                    s.model == ModelKind::Course ? "course" : "phong");
+        for (const std::string& l : treeLines_)
+            std::printf("%s\n", l.c_str());
+        std::fflush(stdout);
     }
 
     void setupRasterView(const ViewCamera& cam, double zNear, double zFar);
     void drawRaster(const View& view, const ViewCamera& cam);
     void drawRayPath();
     void drawImage(const Image& rgba, int w, int h, bool blend);
+    void drawHeatStrip(const View& view);
     void rebuildMesh(const ViewCamera& cam);
     void startExperiment();
     void stepExperiment(const View& view);
@@ -323,6 +383,7 @@ class RaytraceLab : public Lab {
     uint64_t meshGeneration_ = ~uint64_t(0);
     int meshW_ = 0, meshH_ = 0;
     float meshZoom_ = 0;
+    bool meshJustBuilt_ = false; // the last draw() rebuilt the mesh (see busy())
     GLuint program_ = 0;
     std::string programError_;
     double rasterMs_ = 0, rasterMsSmooth_ = 0;
@@ -348,11 +409,13 @@ class RaytraceLab : public Lab {
     // Headless (the command-line front end): waits for the trace with a progress bar on
     // stderr, then prints the scene, time and ray counts on stdout.
     void waitWithProgressBar() {
+        // Redrawn in place on a terminal only; piped into a log, one line at the end.
+        const bool terminal = ::isatty(STDERR_FILENO) != 0;
         int lastPercent = -1; // redraw only when the percentage changes
         for (;;) {
             const TraceStatus st = job_.status();
             const int percent = st.tilesTotal ? 100 * st.tilesDone / st.tilesTotal : 0;
-            if (percent != lastPercent) {
+            if (terminal && percent != lastPercent) {
                 const int bar = 40, done = bar * percent / 100;
                 std::fprintf(stderr, "\r[%.*s%*s] %3d%%", done,
                              "########################################", bar - done, "", percent);
@@ -365,16 +428,26 @@ class RaytraceLab : public Lab {
         job_.wait();
         const TraceStatus st = job_.status();
         const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
-        std::fprintf(stderr, "\n");
+        if (terminal)
+            std::fprintf(stderr, "\n");
+        else if (st.finished)
+            std::fprintf(stderr, "[########################################] 100%%\n");
         std::printf("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n", scene_.name.c_str(),
                     scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
                     scene_.accelSeconds * 1e3);
         std::printf(
             "%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
-            "%lld rays; %.2f M rays/s%s\n",
+            "%lld rays; %.2f M rays/s\n",
             job_.camera().width, job_.camera().height, st.threads, st.seconds * 1e3, st.primaryRays,
-            st.shadowRays, st.secondaryRays, st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0,
-            st.nonFinitePixels ? " (warning: non-finite pixels)" : "");
+            st.shadowRays, st.secondaryRays, st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
+        if (st.nonFinitePixels) {
+            // Written black, the picture would pass for fine: main() exits non-zero.
+            std::fprintf(stderr,
+                         "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour), written "
+                         "black\n",
+                         scene_.name.c_str(), st.nonFinitePixels);
+            raytraceHeadlessFailed() = true;
+        }
     }
 
     // Difference.
@@ -392,18 +465,39 @@ class RaytraceLab : public Lab {
     int inspectX_ = 0, inspectY_ = 0;
     View lastView_{0, 0};
 
-    // Timing experiment.
+    // Timing experiment: every scene of the list traced twice, with the BVH and without
+    // (two columns), in the background; `x` cancels it, the panel shows its progress.
     struct Experiment {
         bool active = false;
-        size_t next = 0;
+        bool cancelled = false;
+        size_t next = 0;  // row being measured
+        int column = 0;   // 0: with the BVH, 1: without
         std::vector<std::string> scenes;
         LabScene scene;
         bool tracing = false;
         TimingRow row;
-        TraceRequest request; // the trace being timed
-        int run = 0;          // traces of this row so far
+        TraceRequest request;    // the trace being timed
+        int run = 0;             // traces of this cell so far
+        double cellSeconds = 0;  // their total wall time
+        std::chrono::steady_clock::time_point start;
     } experiment_;
+    std::vector<std::string> experimentScenes_ = {"one-sphere", "two-spheres", "balls:1",
+                                                  "balls:2",    "balls:3",     "balls:4"};
+    // A cell is the best of up to 3 traces, repeated only while they total under 1 s (on a
+    // shared machine the minimum is the least disturbed run).
     static constexpr int kExperimentRuns = 3;
+    static constexpr double kRepeatBelowSeconds = 1.0;
+    // A no-BVH trace estimated (from the previous row's, scaled by the object count:
+    // brute force is linear in it) to take longer than this is not run; the estimate is shown.
+    double bruteLimitSeconds_ = 20.0;
+    void cancelExperiment() {
+        if (!experiment_.active) return;
+        expJob_.cancel();
+        experiment_.active = false;
+        experiment_.cancelled = true;
+        experiment_.tracing = false;
+        if (experiment_.row.traceSeconds >= 0) timings_.push_back(experiment_.row); // half a row
+    }
     TraceJob expJob_;
     std::vector<TimingRow> timings_;
     bool experimentRequested_ = false;
@@ -553,6 +647,46 @@ void RaytraceLab::drawRayPath() {
     glEnable(GL_DEPTH_TEST);
 }
 
+// The heat map's colour bar in the picture itself (so a headless PNG carries its scale):
+// bottom left, the 0..64 levels of heat() with a tick every 16; the panel labels them.
+void RaytraceLab::drawHeatStrip(const View& view) {
+    glMatrixMode(GL_PROJECTION);
+    glPushMatrix();
+    glLoadIdentity();
+    glOrtho(0, view.width, 0, view.height, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glLoadIdentity();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_LIGHTING);
+    const float x0 = 8, y0 = 8, w = std::min(256.0f, float(view.width) - 16), h = 10;
+    glBegin(GL_QUADS);
+    for (int i = 0; i < 64; ++i) {
+        uint8_t c[3];
+        heat(i, c);
+        glColor3ub(c[0], c[1], c[2]);
+        const float a = x0 + w * float(i) / 64, b = x0 + w * float(i + 1) / 64;
+        glVertex2f(a, y0);
+        glVertex2f(b, y0);
+        glVertex2f(b, y0 + h);
+        glVertex2f(a, y0 + h);
+    }
+    glEnd();
+    glColor3f(0.8f, 0.8f, 0.8f);
+    glBegin(GL_LINES);
+    for (int i = 0; i <= 4; ++i) {
+        const float x = x0 + w * float(i) / 4;
+        glVertex2f(x, y0 - 4);
+        glVertex2f(x, y0 + h);
+    }
+    glEnd();
+    glEnable(GL_DEPTH_TEST);
+    glMatrixMode(GL_PROJECTION);
+    glPopMatrix();
+    glMatrixMode(GL_MODELVIEW);
+    glPopMatrix();
+}
+
 void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
     glBindTexture(GL_TEXTURE_2D, texture_);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -603,8 +737,10 @@ void RaytraceLab::draw(const View& view) {
         if (experiment_.active && view.headless) return;
     }
     const ViewCamera cam = rasterCamera(view);
+    meshJustBuilt_ = false;
     if (meshGeneration_ != sceneGeneration_ || meshW_ != view.width || meshH_ != view.height ||
         meshZoom_ != view.zoom) {
+        meshJustBuilt_ = true;
         rebuildMesh(cam);
         meshGeneration_ = sceneGeneration_;
         meshW_ = view.width;
@@ -639,7 +775,13 @@ void RaytraceLab::draw(const View& view) {
         }
     }
 
-    if (s.traced && !experiment_.active) {
+    if (s.traced && experiment_.active) {
+        // The experiment has the cores: the view keeps the trace it has (G stays G).
+        job_.fetch(traceImage_, traceVersion_);
+        if (!traceImage_.empty() && traceImage_.width == traceCamera(view).width &&
+            traceImage_.height == traceCamera(view).height)
+            drawImage(traceImage_, traceImage_.width, traceImage_.height, true);
+    } else if (s.traced) {
         const ViewCamera tc = traceCamera(view);
         const rt::TraceSettings ts = traceSettings();
         const bool same =
@@ -693,6 +835,7 @@ void RaytraceLab::draw(const View& view) {
                 diffVersion_ = traceVersion_;
             }
             drawImage(diffImage_, diffImage_.width, diffImage_.height, false);
+            drawHeatStrip(view);
         } else if (!traceImage_.empty()) {
             drawImage(traceImage_, traceImage_.width, traceImage_.height, true);
         }
@@ -706,15 +849,19 @@ void RaytraceLab::draw(const View& view) {
 }
 
 void RaytraceLab::startExperiment() {
-    job_.cancel(); // the experiment gets the cores to itself
-    traceStarted_ = false;
+    // The experiment gets the cores to itself: a running trace of the view is stopped (and
+    // restarted afterwards); a finished one stays on screen.
+    if (job_.status().running) {
+        job_.cancel();
+        traceStarted_ = false;
+    }
     expJob_.cancel();
     experiment_ = Experiment{};
     experiment_.active = true;
-    // The lab's experiment (one sphere, then two; brute force as in the course), then the
-    // SPD balls with the BVH, and balls 1-2 without it to show what the BVH buys.
-    experiment_.scenes = {"one-sphere", "two-spheres", "balls:1",          "balls:2",
-                          "balls:3",    "balls:4",     "balls:1 (no BVH)", "balls:2 (no BVH)"};
+    experiment_.start = std::chrono::steady_clock::now();
+    // The lab's experiment (one sphere, then two), then the SPD balls; each with the BVH
+    // and without it (brute force, as in the course) to show what the BVH buys.
+    experiment_.scenes = experimentScenes_;
     timings_.clear();
 }
 
@@ -724,97 +871,317 @@ void RaytraceLab::stepExperiment(const View& view) {
         if (e.next >= e.scenes.size()) {
             e.active = false;
             if (printTimings_) {
-                std::printf("%dx%d, %d threads (0 = all), best of %d traces\n",
+                std::printf("%dx%d, %d threads (0 = all), best of up to %d traces\n",
                             view.width / s.divisor, view.height / s.divisor, s.threads,
                             kExperimentRuns);
-                std::printf("%-18s %6s %8s %10s %10s %8s %7s %8s %6s\n", "scene", "prims", "tris",
-                            "raster ms", "trace s", "bvh ms", "Mrays", "Mrays/s", "ratio");
-                for (const TimingRow& r : timings_)
-                    std::printf("%-18s %6lld %8lld %10.3f %10.3f %8.3f %7.2f %8.2f %6.0f\n",
+                std::printf("%-12s %6s %8s %9s %9s %10s %8s %8s %7s\n", "scene", "prims", "tris",
+                            "raster ms", "BVH s", "no BVH s", "build ms", "Mrays/s", "ratio");
+                for (const TimingRow& r : timings_) {
+                    char brute[32];
+                    if (r.bruteSeconds < 0)
+                        std::snprintf(brute, sizeof brute, "%10s", "-");
+                    else
+                        std::snprintf(brute, sizeof brute, r.bruteEstimated ? "~%9.1f" : "%10.3f",
+                                      r.bruteSeconds);
+                    std::printf("%-12s %6lld %8lld %9.3f %9.3f %s %8.3f %8.2f %7.0f\n",
                                 r.scene.c_str(), r.primitives, r.triangles, r.rasterMs,
-                                r.traceSeconds, r.accelSeconds * 1000.0,
-                                r.raysPerSecond * r.traceSeconds / 1e6, r.raysPerSecond / 1e6,
+                                r.traceSeconds, brute, r.accelSeconds * 1000.0,
+                                r.raysPerSecond / 1e6,
                                 r.traceSeconds * 1000.0 / std::max(r.rasterMs, 1e-9));
+                }
+                std::printf("(~: estimated from the row above x objects, not run; ratio = BVH "
+                            "trace / raster)\n");
                 std::fflush(stdout);
             }
             return;
         }
-        std::string name = e.scenes[e.next], err;
-        const std::string noBvh = " (no BVH)";
-        const bool brute = name.size() > noBvh.size() &&
-                           name.compare(name.size() - noBvh.size(), noBvh.size(), noBvh) == 0;
-        if (brute) name.resize(name.size() - noBvh.size());
-        e.scene = LabScene{};
-        if (!loadLabScene(name, e.scene, err)) {
-            std::fprintf(stderr, "lab07 experiment: %s\n", err.c_str());
-            ++e.next;
-            return;
-        }
-        setAccel(e.scene, !brute && s.bvh);
-        e.row = TimingRow{};
-        e.row.scene = e.scenes[e.next];
-        e.row.primitives = (long long)e.scene.scene->primitives.size();
-        e.row.accelSeconds = e.scene.accelSeconds;
-        e.row.width = view.width / s.divisor;
-        e.row.height = view.height / s.divisor;
-        e.row.traceSeconds = 1e300;
-        e.run = 0;
-        // Raster time: the scene drawn by this lab's raster path, mean of 10 frames after
-        // one warm-up frame. The lab's own scene is swapped out meanwhile (no trace of it
-        // is running: startExperiment cancelled it and draw() starts none while we run).
-        std::swap(scene_, e.scene);
-        const ModelKind keep = s.model;
-        s.model = scene_.model;
-        const ViewCamera cam = rasterCamera(view);
-        TessellationStats ts;
-        std::vector<MeshBatch> keepMesh = std::move(mesh_);
-        mesh_ = tessellate(*scene_.scene, cam, {}, &ts);
-        e.row.triangles = ts.triangles;
-        drawRaster(view, cam);
-        glFinish();
-        const auto t0 = std::chrono::steady_clock::now();
-        const int frames = 10;
-        for (int i = 0; i < frames; ++i)
+        const bool brute = e.column == 1;
+        if (!brute) {
+            // A new row: load the scene, time its raster.
+            std::string err;
+            e.scene = LabScene{};
+            if (!loadLabScene(e.scenes[e.next], e.scene, err)) {
+                std::fprintf(stderr, "lab07 experiment: %s\n", err.c_str());
+                ++e.next;
+                return;
+            }
+            e.row = TimingRow{};
+            e.row.scene = e.scenes[e.next];
+            e.row.primitives = (long long)e.scene.scene->primitives.size();
+            e.row.width = view.width / s.divisor;
+            e.row.height = view.height / s.divisor;
+            // Raster time: the scene drawn by this lab's raster path, mean of 10 frames
+            // after one warm-up frame. The lab's own scene is swapped out meanwhile (its
+            // trace is not running: startExperiment stopped it, draw() starts none).
+            std::swap(scene_, e.scene);
+            const ModelKind keep = s.model;
+            s.model = scene_.model;
+            const ViewCamera cam = rasterCamera(view);
+            TessellationStats ts;
+            std::vector<MeshBatch> keepMesh = std::move(mesh_);
+            mesh_ = tessellate(*scene_.scene, cam, {}, &ts);
+            e.row.triangles = ts.triangles;
             drawRaster(view, cam);
-        glFinish();
-        e.row.rasterMs = secondsSince(t0) * 1000.0 / frames;
-        e.request = TraceRequest{};
-        e.request.camera = traceCamera(view);
-        e.request.model = scene_.model;
-        e.request.settings = traceSettings();
-        e.request.threads = s.threads;
-        mesh_ = std::move(keepMesh);
-        s.model = keep;
-        std::swap(scene_, e.scene);
-        e.request.scene = &e.scene;
+            glFinish();
+            const auto t0 = std::chrono::steady_clock::now();
+            const int frames = 10;
+            for (int i = 0; i < frames; ++i)
+                drawRaster(view, cam);
+            glFinish();
+            e.row.rasterMs = secondsSince(t0) * 1000.0 / frames;
+            e.request = TraceRequest{};
+            e.request.camera = traceCamera(view);
+            e.request.model = scene_.model;
+            e.request.settings = traceSettings();
+            e.request.threads = s.threads;
+            mesh_ = std::move(keepMesh);
+            s.model = keep;
+            std::swap(scene_, e.scene);
+            e.request.scene = &e.scene;
+            setAccel(e.scene, true);
+            e.row.bvhBuilt = e.scene.accel != nullptr;
+            e.row.accelSeconds = e.scene.accelSeconds;
+        } else {
+            setAccel(e.scene, false);
+            // Brute force is linear in the object count: estimate from the row above.
+            const TimingRow* prev = timings_.empty() ? nullptr : &timings_.back();
+            if (prev && prev->bruteSeconds > 0 && prev->primitives > 0) {
+                const double estimate =
+                    prev->bruteSeconds * double(e.row.primitives) / double(prev->primitives);
+                if (estimate > bruteLimitSeconds_) {
+                    e.row.bruteSeconds = estimate;
+                    e.row.bruteEstimated = true;
+                    if (view.headless)
+                        std::fprintf(stderr, "experiment: %s without the BVH: about %.0f s, "
+                                             "not run\n", e.row.scene.c_str(), estimate);
+                    timings_.push_back(e.row);
+                    e.column = 0;
+                    ++e.next;
+                    return;
+                }
+            }
+        }
+        e.run = 0;
+        e.cellSeconds = 0;
         expJob_.start(e.request);
         e.tracing = true;
     }
     if (view.headless) expJob_.wait();
     const TraceStatus st = expJob_.status();
-    if (st.running) return;
-    if (!st.finished) { // cancelled (the lab is going away): drop the row
-        e.tracing = false;
-        ++e.next;
+    if (st.running) {
+        // In a window: at most ~20 redraws a second while a timed trace runs, so the
+        // software GL of the panel takes little from the cores being measured.
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
         return;
     }
-    if (st.seconds < e.row.traceSeconds) {
-        e.row.traceSeconds = st.seconds;
-        e.row.raysPerSecond =
-            double(st.primaryRays + st.secondaryRays + st.shadowRays) / std::max(st.seconds, 1e-9);
+    if (!st.finished) { // cancelled (x, or the lab is going away)
+        e.tracing = false;
+        e.active = false;
+        return;
     }
-    // The best of several runs: the machine is shared, the minimum is the least disturbed.
-    if (++e.run < kExperimentRuns) {
+    const bool brute = e.column == 1;
+    double& best = brute ? e.row.bruteSeconds : e.row.traceSeconds;
+    double& rate = brute ? e.row.bruteRaysPerSecond : e.row.raysPerSecond;
+    if (best < 0 || st.seconds < best) {
+        best = st.seconds;
+        rate = double(st.primaryRays + st.secondaryRays + st.shadowRays) /
+               std::max(st.seconds, 1e-9);
+    }
+    e.cellSeconds += st.seconds;
+    if (++e.run < kExperimentRuns && e.cellSeconds < kRepeatBelowSeconds) {
         expJob_.start(e.request);
         return;
     }
+    if (view.headless)
+        std::fprintf(stderr, "experiment: %-10s %-7s %8.3f s (%d run%s)\n", e.row.scene.c_str(),
+                     brute ? "no BVH" : "BVH", best, e.run, e.run > 1 ? "s" : "");
     e.tracing = false;
+    if (!brute) {
+        e.column = 1;
+        return;
+    }
     timings_.push_back(e.row);
+    e.column = 0;
     ++e.next;
 }
 
+namespace {
+
+// One line of text wrapped to the panel's width at spaces only, never inside a number
+// or a parenthesised vector (ImGui's TextWrapped also breaks after '.' and ',', which
+// cut "dir (-0.|700"); continuation lines keep the line's indentation plus two spaces.
+// Every piece is one item no wider than the region (a clipping test can check it).
+void wrapText(const std::string& line) {
+    const float avail = std::max(ImGui::GetContentRegionAvail().x, 40.0f);
+    size_t indentLen = line.find_first_not_of(' ');
+    if (indentLen == std::string::npos) indentLen = 0;
+    const std::string indent(indentLen + 2, ' ');
+    // Words: split at spaces, except inside a parenthesised list of numbers ("(0.447,
+    // 0.000, -0.894)", "(168, 233, 86)"), which stays whole.
+    std::vector<std::string> words;
+    std::string word;
+    bool inNumbers = false;
+    for (size_t i = indentLen; i < line.size(); ++i) {
+        const char c = line[i];
+        if (c == '(' && i + 1 < line.size() &&
+            (std::isdigit(static_cast<unsigned char>(line[i + 1])) || line[i + 1] == '-' ||
+             line[i + 1] == '+' || line[i + 1] == '.'))
+            inNumbers = true;
+        if (c == ')') inNumbers = false;
+        if (c == ' ' && !inNumbers) {
+            if (!word.empty()) words.push_back(word);
+            word.clear();
+        } else {
+            word += c;
+        }
+    }
+    if (!word.empty()) words.push_back(word);
+    std::string cur(indentLen, ' ');
+    bool curHasWord = false;
+    for (const std::string& w : words) {
+        const std::string next = curHasWord ? cur + " " + w : cur + w;
+        if (curHasWord && ImGui::CalcTextSize(next.c_str()).x > avail) {
+            ImGui::TextUnformatted(cur.c_str());
+            cur = indent + w;
+        } else {
+            cur = next;
+        }
+        curHasWord = true;
+    }
+    ImGui::TextUnformatted(cur.c_str());
+}
+
+// printf into wrapText.
+void wrapf(const char* format, ...) __attribute__((format(printf, 1, 2)));
+void wrapf(const char* format, ...) {
+    char buf[1024];
+    va_list args;
+    va_start(args, format);
+    std::vsnprintf(buf, sizeof buf, format, args);
+    va_end(args);
+    wrapText(buf);
+}
+
+// The heat map's colour bar: the scale heat() uses, |raster − trace| per channel in
+// 0..255 levels, saturating at 64.
+void heatBar() {
+    const float w = std::max(ImGui::GetContentRegionAvail().x - 8.0f, 64.0f), h = 14.0f;
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const int steps = 64;
+    for (int i = 0; i < steps; ++i) {
+        uint8_t c[3];
+        heat(i * 64 / steps, c);
+        const float x0 = p.x + w * float(i) / steps, x1 = p.x + w * float(i + 1) / steps + 1;
+        dl->AddRectFilled(ImVec2(x0, p.y), ImVec2(x1, p.y + h), IM_COL32(c[0], c[1], c[2], 255));
+    }
+    dl->AddRect(p, ImVec2(p.x + w, p.y + h), IM_COL32(160, 160, 160, 255));
+    ImGui::Dummy(ImVec2(w, h));
+    // Tick labels under the bar: 0, 16, 32, 48, >= 64 of 255.
+    const ImVec2 q = ImGui::GetCursorScreenPos();
+    const char* labels[] = {"0", "16", "32", "48", ">=64"};
+    for (int i = 0; i < 5; ++i) {
+        const float tw = ImGui::CalcTextSize(labels[i]).x;
+        const float x = std::clamp(p.x + w * float(i) / 4 - tw / 2, p.x, p.x + w - tw);
+        dl->AddLine(ImVec2(p.x + w * float(i) / 4, p.y + h), ImVec2(p.x + w * float(i) / 4, p.y + h + 3),
+                    IM_COL32(220, 220, 220, 255));
+        dl->AddText(ImVec2(x, q.y + 2), ImGui::GetColorU32(ImGuiCol_Text), labels[i]);
+    }
+    ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
+    wrapText("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
+             "yellow at 64 and above (also under the picture)");
+}
+
+// The timing experiment as a plot: trace time per scene on a log scale, BVH and no BVH.
+void plotTimings(const std::vector<TimingRow>& rows) {
+    std::vector<float> bvh, brute;
+    float lo = 1e30f, hi = -1e30f;
+    for (const TimingRow& r : rows) {
+        if (r.traceSeconds <= 0) break;
+        bvh.push_back(float(std::log10(std::max(r.traceSeconds * 1e3, 1e-3))));
+        lo = std::min(lo, bvh.back());
+        hi = std::max(hi, bvh.back());
+    }
+    for (const TimingRow& r : rows) {
+        if (r.bruteSeconds <= 0) break;
+        brute.push_back(float(std::log10(std::max(r.bruteSeconds * 1e3, 1e-3))));
+        lo = std::min(lo, brute.back());
+        hi = std::max(hi, brute.back());
+    }
+    if (bvh.size() < 2) return;
+    lo = std::floor(lo);
+    hi = std::max(std::ceil(hi), lo + 1);
+    const ImU32 yellow = IM_COL32(255, 220, 60, 255), cyan = IM_COL32(80, 220, 255, 255);
+    ImGui::TextUnformatted("trace time per scene (log scale):");
+    ImGui::TextColored(ImColor(yellow), "-- BVH");
+    ImGui::SameLine();
+    ImGui::TextColored(ImColor(cyan), "-- no BVH (brute force)");
+    const float w = ImGui::GetContentRegionAvail().x, h = 120.0f;
+    const ImVec2 pos = ImGui::GetCursorScreenPos();
+    // Both series on one log scale, drawn on an ImGui frame (PlotLines has no log axis
+    // and would show log10 values in its tooltip); the speed-up below is a PlotHistogram.
+    ImGui::GetWindowDrawList()->AddRectFilled(pos, ImVec2(pos.x + w, pos.y + h),
+                                              ImGui::GetColorU32(ImGuiCol_FrameBg),
+                                              ImGui::GetStyle().FrameRounding);
+    ImGui::Dummy(ImVec2(w, h));
+    const ImVec2 after = ImGui::GetCursorScreenPos();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float x0 = pos.x + style.FramePadding.x, x1 = pos.x + w - style.FramePadding.x;
+    const float y0 = pos.y + style.FramePadding.y, y1 = pos.y + h - style.FramePadding.y;
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    auto xOf = [&](size_t i, size_t count) {
+        return count > 1 ? x0 + (x1 - x0) * float(i) / float(count - 1) : x0;
+    };
+    auto yOf = [&](float v) { return y1 - (y1 - y0) * (v - lo) / (hi - lo); };
+    for (size_t i = 0; i + 1 < bvh.size(); ++i)
+        dl->AddLine(ImVec2(xOf(i, bvh.size()), yOf(bvh[i])),
+                    ImVec2(xOf(i + 1, bvh.size()), yOf(bvh[i + 1])), yellow, 1.5f);
+    for (size_t i = 0; i + 1 < brute.size(); ++i)
+        dl->AddLine(ImVec2(xOf(i, bvh.size()), yOf(brute[i])),
+                    ImVec2(xOf(i + 1, bvh.size()), yOf(brute[i + 1])), cyan, 1.5f);
+    for (size_t i = 0; i < brute.size(); ++i)
+        dl->AddCircleFilled(ImVec2(xOf(i, bvh.size()), yOf(brute[i])), 2.5f, cyan);
+    for (size_t i = 0; i < bvh.size(); ++i)
+        dl->AddCircleFilled(ImVec2(xOf(i, bvh.size()), yOf(bvh[i])), 2.5f, yellow);
+    // Decade lines and labels: 1 ms, 10 ms, ..., 1 s, 10 s.
+    for (int d = int(lo); d <= int(hi); ++d) {
+        const float y = yOf(float(d));
+        dl->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(255, 255, 255, 40));
+        char label[16];
+        const double ms = std::pow(10.0, d);
+        if (ms >= 1000)
+            std::snprintf(label, sizeof label, "%g s", ms / 1000);
+        else
+            std::snprintf(label, sizeof label, "%g ms", ms);
+        // Below its line, except the lowest one (above it): labels never overlap.
+        const float th = ImGui::GetTextLineHeight();
+        const float ty = d == int(lo) ? y - th : y + 1;
+        dl->AddText(ImVec2(x0 + 2, ty), IM_COL32(230, 230, 230, 200), label);
+    }
+    ImGui::SetCursorScreenPos(after);
+    std::string xs = "x: ";
+    for (size_t i = 0; i < bvh.size(); ++i)
+        xs += rows[i].scene + (i + 1 < bvh.size() ? ", " : "");
+    wrapText(xs + " (objects grow left to right)");
+    // What the BVH buys: no-BVH time / BVH time per scene (hover a bar for its value).
+    std::vector<float> speedup;
+    float top = 1.0f;
+    for (size_t i = 0; i < brute.size() && i < bvh.size(); ++i) {
+        speedup.push_back(float(rows[i].bruteSeconds / rows[i].traceSeconds));
+        top = std::max(top, speedup.back());
+    }
+    if (speedup.empty()) return;
+    wrapText("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):");
+    char overlay[48];
+    std::snprintf(overlay, sizeof overlay, "up to x%.0f", double(top));
+    ImGui::PlotHistogram("##speedup", speedup.data(), int(speedup.size()), 0, overlay, 0.0f,
+                         top * 1.15f, ImVec2(w, 70.0f));
+}
+
+} // namespace
+
 void RaytraceLab::gui() {
-    ImGui::TextWrapped("%s", scene_.about.c_str());
+    wrapText(scene_.about);
     if (ImGui::BeginCombo("scene", s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())
             if (ImGui::Selectable(n.c_str(), n == s.sceneName)) {
@@ -823,52 +1190,98 @@ void RaytraceLab::gui() {
             }
         ImGui::EndCombo();
     }
+    ImGui::TextUnformatted("file (.nff / .obj):");
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("load").x - 2 * ImGui::GetStyle().FramePadding.x -
+                            ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
     ImGui::SameLine();
-    if (ImGui::Button("load .nff/.obj")) {
+    if (ImGui::Button("load")) {
         std::string err;
         fileError_ = loadScene(fileBuffer_, err) ? "" : err;
     }
-    if (!fileError_.empty()) ImGui::TextWrapped("%s", fileError_.c_str());
-    ImGui::Text("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
-                meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
+    if (!fileError_.empty()) wrapText(fileError_);
+    // The reader's warnings: counted, the first few lines.
+    const std::vector<std::string> warns = warningLines(scene_);
+    for (size_t i = 0; i < warns.size() && i < 6; ++i)
+        wrapText(warns[i]);
+    if (warns.size() > 6)
+        wrapf("  ... (%zu more lines on stderr)", warns.size() - 6);
+    wrapf("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
+          meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
+    if (meshStats_.level < 1.0 || meshStats_.standIns > 0)
+        wrapf("raster budget %lld triangles: drawn coarser (level %.2g)%s%s", meshStats_.budget,
+              meshStats_.level, meshStats_.standIns ? ", " : "",
+              meshStats_.standIns
+                  ? (std::to_string(meshStats_.standIns) + " objects as one bounding box").c_str()
+                  : "");
     int mode = s.traced ? 1 : 0;
     ImGui::RadioButton("g: OpenGL", &mode, 0);
     ImGui::SameLine();
     ImGui::RadioButton("G: ray traced", &mode, 1);
     s.traced = mode == 1;
-    ImGui::Checkbox("f: per-fragment GLSL Phong", &s.glsl);
-    if (!programError_.empty()) ImGui::TextWrapped("shader: %s", programError_.c_str());
-    ImGui::Checkbox("d: difference heat map", &s.showDiff);
+    ImGui::Checkbox("f: GLSL Phong", &s.glsl);
+    ImGui::SameLine();
+    ImGui::Checkbox("d: heat map", &s.showDiff);
+    if (!programError_.empty()) wrapf("shader: %s", programError_.c_str());
 
     ImGui::Separator();
     const TraceStatus st = job_.status();
-    ImGui::Text("raster %.2f ms / frame", rasterMsSmooth_);
+    const ExperimentStatus es = experimentStatus();
+    if (es.active) {
+        // Up here, where it is seen without scrolling: the table and plot are at the end.
+        wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
+        ImGui::ProgressBar(float(es.fraction));
+        if (ImGui::Button("x: cancel experiment")) cancelExperiment();
+        if (s.traced) wrapText("The view's own trace waits while the experiment runs.");
+        ImGui::Separator();
+    }
+    wrapf("raster %.2f ms / frame", rasterMsSmooth_);
     if (traceStarted_) {
         ImGui::ProgressBar(st.tilesTotal ? float(st.tilesDone) / float(st.tilesTotal) : 0.0f);
         if (st.running)
-            ImGui::Text("tracing: %.1f s, about %.1f s left", st.seconds, st.secondsLeft);
+            wrapf("tracing: %.1f s, about %.1f s left", st.seconds, st.secondsLeft);
         else
-            ImGui::Text("trace %.3f s (%s)", st.seconds, st.finished ? "finished" : "cancelled");
+            wrapf("trace %.3f s (%s)%s", st.seconds, st.finished ? "finished" : "cancelled",
+                  st.finished ? "" : "");
         if (st.finished)
-            ImGui::Text("trace / raster = %.0f",
-                        st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
-        ImGui::Text("rays: %lld primary, %lld secondary, %lld shadow", st.primaryRays,
-                    st.secondaryRays, st.shadowRays);
-        ImGui::Text("threads %d, cancelled frames %d", st.threads, cancels_);
+            wrapf("trace / raster = %.0f", st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
+        // Live while tracing (tiles finished so far); one number per row, right-aligned.
+        if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_SizingStretchProp)) {
+            auto row = [](const char* what, long long n) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(what);
+                ImGui::TableNextColumn();
+                char buf[32];
+                std::snprintf(buf, sizeof buf, "%lld", n);
+                ImGui::SetCursorPosX(ImGui::GetCursorPosX() + ImGui::GetContentRegionAvail().x -
+                                     ImGui::CalcTextSize(buf).x);
+                ImGui::TextUnformatted(buf);
+            };
+            row("primary rays", st.primaryRays);
+            row("secondary rays", st.secondaryRays);
+            row("shadow rays", st.shadowRays);
+            ImGui::EndTable();
+        }
+        wrapf("threads %d, cancelled frames %d", st.threads, cancels_);
     }
-    if (s.showDiff && diffValid_)
-        ImGui::Text("|raster - trace|: mean %.2f, max %d (of 255)", diff_.meanDiff, diff_.maxDiff);
+    if (s.showDiff) {
+        if (diffValid_)
+            wrapf("|raster - trace|: mean %.2f, max %d (of 255)", diff_.meanDiff, diff_.maxDiff);
+        else
+            wrapText("heat map: shown when the trace is finished");
+        heatBar();
+    }
 
     ImGui::Separator();
     if (tree_) {
-        ImGui::Text("ray tree of pixel (%d, %d), screen (%.1f, %.1f)", inspectedPixel_.x,
-                    inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y);
+        wrapf("ray tree of pixel (%d, %d), screen (%g, %g)", inspectedPixel_.x, inspectedPixel_.y,
+              inspectedScreen_.x, inspectedScreen_.y);
         ImGui::Checkbox("draw the ray path", &s.showRayPath);
         for (const std::string& l : treeLines_)
-            ImGui::TextWrapped("%s", l.c_str());
+            wrapText(l);
     } else {
-        ImGui::TextWrapped("Click a pixel to see its ray tree.");
+        wrapText("Click a pixel to see its ray tree.");
     }
     ImGui::Separator();
     int model = s.model == ModelKind::Course ? 0 : 1;
@@ -876,11 +1289,32 @@ void RaytraceLab::gui() {
     ImGui::SameLine();
     ImGui::RadioButton("phong model", &model, 1);
     s.model = model == 0 ? ModelKind::Course : ModelKind::Phong;
+    if (s.model == ModelKind::Course) {
+        // Seed 000's SH = distScale/dist is made for its scene (lights ~60-100 units away):
+        // closer lights give SH > 1 and every lit surface clamps to 255 (white).
+        const rt::Scene& sc = *scene_.scene;
+        glm::dvec3 c;
+        double r;
+        sceneBounds(sc, c, r);
+        for (const rt::Light& l : sc.lights) {
+            if (l.kind != rt::Light::Kind::Point || sc.distScale <= 0) continue;
+            const double sh = sc.distScale / std::max(glm::length(l.position - c), 1e-9);
+            if (sh > 1.5) {
+                wrapf("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
+                      "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
+                      "clamp at 255.",
+                      sc.distScale, glm::length(l.position - c), sh);
+                break;
+            }
+        }
+    }
     ImGui::SliderInt("depth limit", &s.maxDepth, 0, 20);
     float w = float(s.minWeight);
-    if (ImGui::SliderFloat("weight cut-off", &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
-    ImGui::SliderInt("threads (0 = all)", &s.threads, 0, 64);
+    if (ImGui::SliderFloat("weight cut", &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
+    ImGui::SliderInt("threads", &s.threads, 0, 64, s.threads == 0 ? "all cores" : "%d");
     int res = s.divisor == 1 ? 0 : s.divisor == 2 ? 1 : 2;
+    ImGui::TextUnformatted("trace res.");
+    ImGui::SameLine();
     ImGui::RadioButton("1/1", &res, 0);
     ImGui::SameLine();
     ImGui::RadioButton("1/2", &res, 1);
@@ -889,38 +1323,57 @@ void RaytraceLab::gui() {
     s.divisor = 1 << res;
     if (ImGui::Checkbox("b: BVH", &s.bvh)) applyAccel();
     if (!bvhAvailable_ && s.bvh)
-        ImGui::TextWrapped("(no BVH: brute force over all objects)");
+        wrapText("(no BVH: brute force over all objects)");
     else if (scene_.accel)
-        ImGui::Text("BVH built in %.4f s", scene_.accelSeconds);
+        wrapf("BVH built in %.3f ms", scene_.accelSeconds * 1e3);
+    else if (s.bvh)
+        wrapText("(too few objects for a BVH: brute force)");
 
     ImGui::Separator();
-    if (ImGui::Button("t: run timing experiment")) startExperiment();
-    if (experiment_.active)
-        ImGui::Text("running: %s", experiment_.next < experiment_.scenes.size()
-                                       ? experiment_.scenes[experiment_.next].c_str()
-                                       : "");
-    if (!timings_.empty() && ImGui::BeginTable("timings", 5)) {
+    if (!es.active) {
+        if (ImGui::Button("t: run timing experiment")) startExperiment();
+        if (es.cancelled) {
+            ImGui::SameLine();
+            ImGui::TextUnformatted("(cancelled)");
+        }
+    } else {
+        wrapText("timing experiment running (progress at the top; x cancels)");
+    }
+    if (!timings_.empty() &&
+        ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("scene");
-        ImGui::TableSetupColumn("raster ms");
-        ImGui::TableSetupColumn("trace s");
-        ImGui::TableSetupColumn("bvh ms");
-        ImGui::TableSetupColumn("Mrays/s");
+        ImGui::TableSetupColumn("raster");
+        ImGui::TableSetupColumn("BVH");
+        ImGui::TableSetupColumn("no BVH");
+        ImGui::TableSetupColumn("Mray/s");
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%s", r.scene.c_str());
+            ImGui::TextUnformatted(r.scene.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.2f", r.rasterMs);
+            ImGui::Text("%.1fms", r.rasterMs);
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", r.traceSeconds);
+            if (r.traceSeconds >= 0)
+                ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
-            ImGui::Text("%.3f", r.accelSeconds * 1000.0);
+            if (r.bruteSeconds >= 0)
+                ImGui::Text(r.bruteEstimated ? "~%.0fs" : "%.3fs", r.bruteSeconds);
+            else
+                ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();
-            ImGui::Text("%.2f", r.raysPerSecond / 1e6);
+            ImGui::Text("%.1f", r.raysPerSecond / 1e6);
         }
         ImGui::EndTable();
+        wrapText("* too few objects for a BVH (brute force in both columns); ~ estimated from "
+                 "the row above x objects, not run; Mray/s with the BVH.");
+        plotTimings(timings_);
     }
+}
+
+bool& raytraceHeadlessFailed() {
+    static bool failed = false;
+    return failed;
 }
 
 std::unique_ptr<Lab> makeRaytraceLab() {
@@ -938,6 +1391,13 @@ void raytraceInspectPixel(Lab& lab, int x, int y) {
 }
 const std::vector<TimingRow>& raytraceTimings(const Lab& lab) {
     return static_cast<const RaytraceLab&>(lab).timings();
+}
+ExperimentStatus raytraceExperiment(const Lab& lab) {
+    return static_cast<const RaytraceLab&>(lab).experimentStatus();
+}
+void raytraceSetExperiment(Lab& lab, const std::vector<std::string>& scenes,
+                           double bruteLimitSeconds) {
+    static_cast<RaytraceLab&>(lab).setExperiment(scenes, bruteLimitSeconds);
 }
 int raytraceCancels(const Lab& lab) {
     return static_cast<const RaytraceLab&>(lab).cancels();

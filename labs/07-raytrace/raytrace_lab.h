@@ -30,19 +30,35 @@ struct RaytraceState {
     bool showRayPath = true;            // draw the inspected ray tree in 3D
 };
 
-// One row of the timing experiment.
+// One row of the timing experiment: one scene, traced with the BVH and without it.
 struct TimingRow {
     std::string scene;
     long long primitives = 0, triangles = 0;
-    double rasterMs = 0;      // mean of several frames, glFinish included
-    double traceSeconds = 0;  // wall time of the whole trace
-    double accelSeconds = 0;  // BVH build
-    double raysPerSecond = 0; // primary + secondary + shadow rays / trace time
+    double rasterMs = 0;          // mean of several frames, glFinish included
+    double traceSeconds = -1;     // BVH column: best wall time of the trace (-1: not run)
+    double bruteSeconds = -1;     // no-BVH column (-1: not run or cancelled)
+    bool bruteEstimated = false;  // bruteSeconds is an estimate (too slow to run: see panel)
+    bool bvhBuilt = false;        // false: too few objects, the "BVH" trace was brute force too
+    double accelSeconds = 0;      // BVH build
+    double raysPerSecond = 0;     // BVH column: all rays / trace time
+    double bruteRaysPerSecond = 0; // no-BVH column
     int width = 0, height = 0;
+};
+// Timing experiment progress, for the panel and tests.
+struct ExperimentStatus {
+    bool active = false;
+    bool cancelled = false;  // `x` stopped it; finished rows stay
+    double fraction = 0;     // 0..1 of the planned traces
+    std::string current;     // "balls:3, no BVH, run 1"
+    double seconds = 0;      // since the start
 };
 
 class RaytraceLab;
 std::unique_ptr<Lab> makeRaytraceLab();
+
+// Set by a headless run whose output must not pass for success (non-finite pixels,
+// --inspect outside the image); the lab's main() then exits 1 after the message.
+bool& raytraceHeadlessFailed();
 
 // Test access to the lab's state (the lab class lives in the .cpp).
 RaytraceState& raytraceState(Lab& lab);
@@ -50,6 +66,10 @@ const RayTree* raytraceInspected(const Lab& lab);
 // Inspects image pixel (x, y) of the traced view as a click there would.
 void raytraceInspectPixel(Lab& lab, int x, int y);
 const std::vector<TimingRow>& raytraceTimings(const Lab& lab);
+ExperimentStatus raytraceExperiment(const Lab& lab);
+// Test hook: the experiment's scenes (default: the lab's list) and its no-BVH time limit.
+void raytraceSetExperiment(Lab& lab, const std::vector<std::string>& scenes,
+                           double bruteLimitSeconds);
 // Cancelled traces so far (camera changes during a trace) and the last finished frame's status.
 int raytraceCancels(const Lab& lab);
 bool raytraceLastTraceFinished(const Lab& lab);

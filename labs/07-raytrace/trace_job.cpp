@@ -94,6 +94,10 @@ void TraceJob::run() {
             }
         status_.tilesDone = t.tilesDone;
         status_.tilesTotal = t.tilesTotal;
+        // Live counters: the rays of the tiles finished so far (the totals land at the end).
+        status_.primaryRays = t.primaryRays;
+        status_.secondaryRays = t.secondaryRays;
+        status_.shadowRays = t.shadowRays;
         ++version_;
     };
     rt::ParallelRenderStats st;

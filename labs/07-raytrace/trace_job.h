@@ -33,7 +33,7 @@ struct TraceStatus {
     bool running = false;
     bool finished = false;  // every tile traced
     bool cancelled = false; // stopped before the end
-    long long primaryRays = 0, secondaryRays = 0, shadowRays = 0;
+    long long primaryRays = 0, secondaryRays = 0, shadowRays = 0; // so far while running
     long long nonFinitePixels = 0; // must stay 0
     int threads = 1;               // threads that traced
     uint64_t frame = 0;            // counts start() calls

@@ -12,32 +12,16 @@ ViewCamera ViewCamera::make(const CameraSpec& spec, double yawDeg, double pitchD
                             int width, int height) {
     if (!(width > 0 && height > 0)) throw std::invalid_argument("ViewCamera: empty image");
     if (!(zoom > 0) || !std::isfinite(zoom)) zoom = 1.0;
-    const glm::dvec3 up0 = glm::normalize(spec.up);
-    glm::dvec3 offset = spec.eye - spec.target;
-    const double dist = glm::length(offset);
+    // The frame is core's (rt::orbitScreenCamera), the same code rt_render's
+    // LookAtCamera uses, so both front ends trace the same rays for the same view.
+    const double dist = glm::length(spec.eye - spec.target);
     if (!(dist > 0)) throw std::invalid_argument("ViewCamera: eye == target");
-    // Exact when both angles are 0 (cos 0 = 1, sin 0 = 0): seed 000's rays stay bit-exact.
-    if (yawDeg != 0.0)
-        offset = glm::dvec3(glm::rotate(glm::dmat4(1.0), glm::radians(yawDeg), up0) *
-                            glm::dvec4(offset, 0.0));
-    glm::dvec3 forward = -offset / dist;
-    glm::dvec3 right = glm::cross(forward, up0);
-    if (!(glm::length(right) > 1e-9)) throw std::invalid_argument("ViewCamera: up along the view");
-    right = glm::normalize(right);
-    if (pitchDeg != 0.0) {
-        // Keep the angle between the view and up inside (1°, 179°).
-        const double now = glm::degrees(std::acos(std::clamp(glm::dot(forward, up0), -1.0, 1.0)));
-        const double pitch = std::clamp(pitchDeg, now - 179.0, now - 1.0);
-        offset = glm::dvec3(glm::rotate(glm::dmat4(1.0), glm::radians(-pitch), right) *
-                            glm::dvec4(offset, 0.0));
-        forward = -offset / dist;
-    }
-    const glm::dvec3 up = glm::cross(right, forward);
     const double pixel = spec.screenPixel > 0
                              ? spec.screenPixel
                              : 2.0 * dist * std::tan(glm::radians(spec.fovY) / 2) / height;
     ViewCamera v;
-    v.screen = rt::ScreenCamera(spec.target + offset, forward, dist, right, up, pixel / zoom);
+    v.screen =
+        rt::orbitScreenCamera(spec.eye, spec.target, spec.up, yawDeg, pitchDeg, pixel / zoom);
     v.target = spec.target;
     v.dist = dist;
     v.width = width;

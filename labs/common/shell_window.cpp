@@ -38,6 +38,7 @@ struct WindowState {
     std::vector<int> smokeKeys;   // --smoke: keys still to press, one per frame
     int settleFrames = 0;         // frames still to draw after an event (ImGui shows hover/press a frame late)
     bool timerPending = false;    // a glutTimerFunc redraw is on its way (busy lab)
+    bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;        // left button down outside the panel
     bool moved = false;           // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
@@ -87,11 +88,13 @@ std::string timestampedName() {
     return name + "-" + buf + ".png";
 }
 
-void saveScreenshot(const std::string& path) {
+bool saveScreenshot(const std::string& path) {
     Image img = readFramebuffer(g->windowWidth, g->windowHeight);
     std::string error;
-    g->panel.lastScreenshot = writePng(path, img, &error) ? "saved " + path : error;
+    const bool ok = writePng(path, img, &error);
+    g->panel.lastScreenshot = ok ? "saved " + path : error;
     std::fprintf(stderr, "%s\n", g->panel.lastScreenshot.c_str());
+    return ok;
 }
 
 // A new UI scale: fonts rebuilt at the new size (sharp, not stretched), style scaled, the
@@ -182,7 +185,8 @@ void display() {
         glPopAttrib();
     }
     // --screenshot and the button save what the user sees, panel included (`h` hides it).
-    if (lastFrame && !g->opts.screenshot.empty()) saveScreenshot(g->opts.screenshot);
+    if (lastFrame && !g->opts.screenshot.empty() && !saveScreenshot(g->opts.screenshot))
+        g->screenshotFailed = true;
     if (g->panel.screenshotRequested) {
         g->panel.screenshotRequested = false;
         saveScreenshot(timestampedName());
@@ -380,7 +384,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     state.lab.reset(); // GL objects go while the context still exists
     glutExit();        // destroys the window and its GL context (Mesa's buffers with them)
     g = nullptr;
-    return 0;
+    return state.screenshotFailed ? 1 : 0;
 }
 
 } // namespace wb

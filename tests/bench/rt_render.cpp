@@ -24,6 +24,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <unistd.h>
+
 namespace {
 
 constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
@@ -32,6 +34,17 @@ constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [
 int usage(const char* argv0) {
     std::fprintf(stderr, kUsage, argv0);
     return 2;
+}
+
+// The 40-column progress bar on stderr; `inPlace` starts with \r (a terminal redraw),
+// otherwise the line is written once, whole.
+void printBar(int done, int total, bool inPlace) {
+    const int percent = total > 0 ? 100 * done / total : 100;
+    const int bar = 40, filled = bar * percent / 100;
+    std::fprintf(stderr, "%s[%.*s%*s] %3d%%%s", inPlace ? "\r" : "", filled,
+                 "########################################", bar - filled, "", percent,
+                 inPlace ? "" : "\n");
+    std::fflush(stderr);
 }
 
 } // namespace
@@ -75,6 +88,15 @@ int main(int argc, char** argv) {
         wb::rt::SceneFile sf = wb::rt::loadSceneFile(scenePath);
         const double loadS =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        // The reader's repairs (faces dropped, a missing .mtl, ...): counted, the first lines.
+        if (sf.warningCount > 0) {
+            std::fprintf(stderr, "%s: %zu warning%s:\n", scenePath.c_str(), sf.warningCount,
+                         sf.warningCount == 1 ? "" : "s");
+            for (const std::string& w : sf.warnings)
+                std::fprintf(stderr, "  %s\n", w.c_str());
+            if (sf.warningCount > sf.warnings.size())
+                std::fprintf(stderr, "  ... and %zu more\n", sf.warningCount - sf.warnings.size());
+        }
         std::unique_ptr<wb::rt::Bvh> bvh;
         if (useBvh) bvh = wb::rt::makeAggregate(*sf.scene);
         sf.scene->setAggregate(bvh.get());
@@ -88,20 +110,32 @@ int main(int argc, char** argv) {
         opt.threads = threads;
         opt.cornerRays = spd;
         opt.trace.maxDepth = depth;
+        // The bar is redrawn in place only on a terminal; piped into a log, the \r updates
+        // would pile up on one line, so it is written once at the end instead.
+        const bool terminal = ::isatty(STDERR_FILENO) != 0;
         int lastPercent = -1; // redraw the bar only when the percentage changes
-        opt.progress = [&lastPercent](const wb::rt::TileProgress& p) {
+        opt.progress = [&lastPercent, terminal](const wb::rt::TileProgress& p) {
+            if (!terminal) return;
             const int percent = 100 * p.tilesDone / p.tilesTotal;
             if (percent == lastPercent) return;
             lastPercent = percent;
-            const int bar = 40, done = bar * p.tilesDone / p.tilesTotal;
-            std::fprintf(stderr, "\r[%.*s%*s] %3d%%", done,
-                         "########################################", bar - done, "", percent);
-            std::fflush(stderr);
+            printBar(p.tilesDone, p.tilesTotal, true);
         };
         wb::rt::ParallelRenderStats st;
         const wb::Image img =
             wb::rt::renderParallel(*sf.scene, cam, model, width, height, opt, &st);
-        std::fprintf(stderr, "\n");
+        if (terminal)
+            std::fprintf(stderr, "\n");
+        else
+            printBar(1, 1, false);
+        if (st.nonFinitePixels) {
+            // A NaN/Inf colour is written black: the picture would be wrong, not fine.
+            std::fprintf(stderr,
+                         "%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not writing "
+                         "the image\n",
+                         argv[0], scenePath.c_str(), st.nonFinitePixels);
+            return 1;
+        }
         std::string err;
         if (!wb::writePng(out, img, &err)) {
             std::fprintf(stderr, "%s: %s\n", argv[0], err.c_str());
@@ -115,8 +149,6 @@ int main(int argc, char** argv) {
                     "reflection+refraction %lld rays; %.2f M rays/s -> %s\n",
                     width, height, depth, st.threads, st.seconds * 1e3, st.primaryRays,
                     st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6, out.c_str());
-        if (st.nonFinitePixels)
-            std::printf("warning: %lld non-finite pixels\n", st.nonFinitePixels);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

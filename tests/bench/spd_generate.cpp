@@ -1,17 +1,25 @@
-// Writes an SPD scene as NFF: spd_generate balls|jacks SIZE [FILE] (stdout without FILE).
-// The generators are core's (core/raytrace/spd.h); sizes 1..6. Example:
+// Writes an SPD scene as NFF: spd_generate NAME SIZE [FILE] (stdout without FILE).
+// The generators are core's (core/raytrace/spd.h); NAME is one of spdSceneNames()
+// (balls, jacks, gears, ...), sizes 1..6. Example:
 //   build/bin/spd_generate balls 4 balls4.nff
 #include "core/raytrace/spd.h"
 
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 int main(int argc, char** argv) {
-    if (argc < 3 || argc > 4 || (std::strcmp(argv[1], "balls") && std::strcmp(argv[1], "jacks"))) {
-        std::fprintf(stderr, "usage: %s balls|jacks SIZE(1..6) [FILE]\n", argv[0]);
+    std::string names;
+    for (const std::string& n : wb::rt::spdSceneNames())
+        names += (names.empty() ? "" : "|") + n;
+    bool known = false;
+    if (argc >= 2)
+        for (const std::string& n : wb::rt::spdSceneNames())
+            known = known || n == argv[1];
+    if (argc < 3 || argc > 4 || !known) {
+        std::fprintf(stderr, "usage: %s %s SIZE(1..6) [FILE]\n", argv[0], names.c_str());
         return 2;
     }
     char* end = nullptr;
@@ -21,9 +29,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        const wb::rt::NffDocument doc = std::strcmp(argv[1], "balls") == 0
-                                            ? wb::rt::spdBalls(int(size))
-                                            : wb::rt::spdJacks(int(size));
+        const wb::rt::NffDocument doc = wb::rt::spdScene(argv[1], int(size));
         if (argc == 4)
             wb::rt::writeNffFile(argv[3], doc);
         else

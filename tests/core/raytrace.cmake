@@ -9,6 +9,7 @@ wb_test(raytrace_test
     raytrace/tracer_test.cpp
     raytrace/render_test.cpp
     raytrace/tracer_observer_test.cpp
+    raytrace/polygon_test.cpp
   LIBS core)
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)
@@ -19,6 +20,7 @@ wb_test(raytrace_scale_test
     raytrace_scale/bvh_test.cpp
     raytrace_scale/nff_test.cpp
     raytrace_scale/parallel_test.cpp
+    raytrace_scale/scene_file_test.cpp
   LIBS core)
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-out)
 target_compile_definitions(raytrace_scale_test PRIVATE WB_TEST_TMP="${CMAKE_BINARY_DIR}/test-out")
@@ -37,4 +39,21 @@ if(WORKBENCH_FUZZ)
     target_compile_options(fuzz_${reader} PRIVATE -fsanitize=fuzzer,address,undefined)
     target_link_options(fuzz_${reader} PRIVATE -fsanitize=fuzzer,address,undefined)
   endforeach()
+endif()
+# Issue 12 point 11: rt_render and lab 07's headless front end give the same picture of
+# the same file (runs both executables as a user would).
+wb_test(raytrace_same_picture_test
+  SOURCES raytrace_scale/same_picture_test.cpp
+  LIBS core)
+add_dependencies(raytrace_same_picture_test rt_render lab07-raytrace lab07-raytrace-headless)
+if(WORKBENCH_SANITIZE)
+  target_compile_definitions(raytrace_same_picture_test PRIVATE WB_SANITIZED=1)
+endif()
+# Issue 12 point 12: every SPD generator in the suite (counts, round trip, render smoke)
+# and a speckle census (isolated outliers that one exact ray alone carries).
+wb_test(raytrace_pictures_test
+  SOURCES raytrace_scale/spd_scenes_test.cpp raytrace_scale/speckle_test.cpp
+  LIBS core)
+if(WORKBENCH_SANITIZE)
+  target_compile_definitions(raytrace_pictures_test PRIVATE WB_SANITIZED=1)
 endif()

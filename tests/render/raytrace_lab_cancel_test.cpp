@@ -83,8 +83,11 @@ TEST_CASE("lab 07: a camera change during a trace cancels it and the result is t
         CHECK(wb::raytraceLastTraceFinished(*lab));
     }
     // A 320×240 trace of this scene takes far longer than a draw() call, so every change
-    // arrived mid-trace.
-    CHECK(cancels == 3);
+    // normally arrives mid-trace (3). On a loaded machine one llvmpipe draw() can outlast
+    // a trace (seen with a parallel sanitizer build: 2), so at least one is required.
+    CHECK(cancels >= 1);
+    CHECK(cancels <= 3);
+    if (cancels != 3) WARN("only " << cancels << " of 3 camera changes arrived mid-trace");
     // The frame shown equals a fresh headless render of the final camera, pixel for pixel.
     auto fresh = wb::makeRaytraceLab();
     std::string err;
@@ -158,11 +161,13 @@ TEST_CASE("lab 07: while a restarted trace runs, every pixel shown is the new ca
     req.scene = &s;
     req.model = s.model;
     req.threads = 1;
-    req.camera = wb::ViewCamera::make(s.camera, 0, 0, 1, 200, 150);
+    // 400×300 on one thread takes long enough (tens of ms) to be seen growing even on a
+    // busy machine; at 200×150 it sometimes finished between two 2-ms snapshots.
+    req.camera = wb::ViewCamera::make(s.camera, 0, 0, 1, 400, 300);
     wb::TraceJob job;
     job.start(req);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    req.camera = wb::ViewCamera::make(s.camera, 25, 10, 1, 200, 150);
+    req.camera = wb::ViewCamera::make(s.camera, 25, 10, 1, 400, 300);
     job.start(req); // cancels and joins the first frame
     std::vector<wb::Image> snapshots;
     uint64_t version = 0;

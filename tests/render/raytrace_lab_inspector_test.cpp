@@ -10,6 +10,8 @@
 namespace {
 
 constexpr int kSize = 160; // seed 000: one world unit per pixel, homeX = homeY = 80
+// seed000-part1 is framed at 4 pixels per unit: P(50, 0) is pixel (W/2 + 200, H/2).
+constexpr int kPart1Size = 480, kPart1X = 440, kPart1Y = 240;
 
 void near(double v, double printed, double unit) {
     INFO("value " << v << " printed " << printed);
@@ -26,16 +28,18 @@ void colour(const glm::dvec3& c, int r, int g, int b) {
     CHECK(c.z == b);
 }
 
-// Renders the scene traced at 160×160 and clicks P(50, 0) = pixel (80 + 50, 80).
-std::unique_ptr<wb::Lab> clickP50(const std::string& scene, wb::Image& img) {
+// Renders the scene traced at size×size and clicks P(50, 0): pixel (80 + 50, 80) at the
+// seed's scale, (x, y) for the framed part 1.
+std::unique_ptr<wb::Lab> clickP50(const std::string& scene, wb::Image& img, int size = kSize,
+                                  int x = 130, int y = 80) {
     auto lab = wb::makeRaytraceLab();
     std::string err;
     REQUIRE(lab->setOption("scene", scene, err));
-    img = wb::test::renderLab(*lab, kSize, kSize, "G");
+    img = wb::test::renderLab(*lab, size, size, "G");
     wb::View v;
-    v.width = v.height = kSize;
+    v.width = v.height = size;
     v.headless = true;
-    REQUIRE(lab->click(130, 80, v));
+    REQUIRE(lab->click(x, y, v));
     REQUIRE(wb::raytraceInspected(*lab));
     return lab;
 }
@@ -117,7 +121,7 @@ TEST_CASE("lab 07 inspector: seed 000 part 2, P(50,0) with the reflected ray", "
 
 TEST_CASE("lab 07 inspector: seed 000 part 1, P(50,0) in the shadow of rectangle 1", "[gl]") {
     wb::Image img;
-    auto lab = clickP50("seed000-part1", img);
+    auto lab = clickP50("seed000-part1", img, kPart1Size, kPart1X, kPart1Y);
     const wb::RayTree& t = *wb::raytraceInspected(*lab);
     CHECK(t.matchesTracer);
     REQUIRE(t.nodes.size() == 1);
@@ -139,12 +143,12 @@ TEST_CASE("lab 07 inspector: seed 000 part 1, P(50,0) in the shadow of rectangle
     colour(f.diffuse, 0, 0, 0);
     colour(f.specular, 0, 0, 0);
     colour(p.colour, 10, 117, 10);
-    CHECK(img.at(130, 80)[0] == 10);
-    CHECK(img.at(130, 80)[1] == 117);
-    CHECK(img.at(130, 80)[2] == 10);
+    CHECK(img.at(kPart1X, kPart1Y)[0] == 10);
+    CHECK(img.at(kPart1X, kPart1Y)[1] == 117);
+    CHECK(img.at(kPart1X, kPart1Y)[2] == 10);
     // The same pixel with rectangle 1 removed is lit: (50, 197, 50).
     wb::Image lit;
-    auto lab2 = clickP50("seed000-part1-lit", lit);
+    auto lab2 = clickP50("seed000-part1-lit", lit, kPart1Size, kPart1X, kPart1Y);
     colour(wb::raytraceInspected(*lab2)->nodes[0].colour, 50, 197, 50);
 }
 

@@ -19,7 +19,11 @@ struct Image {
     bool empty() const { return data.empty(); }
 };
 
-// Writes a PNG; returns false and fills `error` (naming the file) on failure.
+// Writes a PNG; returns false and fills `error` (naming the file and the reason) on
+// failure. Every write is checked (a full disk, /dev/full, a read-only file all fail).
+// A regular file is written to a temporary file in the same directory and renamed
+// over the name, so a failed write never leaves a truncated PNG under the real name;
+// a device or pipe (/dev/stdout) is written in place.
 bool writePng(const std::string& path, const Image& img, std::string* error = nullptr);
 // Reads a PNG (or any format stb_image knows) as RGB or RGBA; `channels` 0 keeps the file's.
 bool readImage(const std::string& path, Image& img, int channels, std::string* error = nullptr);

@@ -1,32 +1,51 @@
 #include "core/raytrace/nff.h"
 
+#include "core/file_read.h"
+
 #include "core/raytrace/cylinder.h"
+#include "core/raytrace/polygon.h"
 #include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <istream>
+#include <iterator>
 #include <ostream>
 #include <sstream>
+#include <string_view>
 
 namespace wb::rt {
 
 namespace {
 
-// Tokens with their line numbers, read line by line (a huge file is never held whole).
+// Tokens with their line numbers, from the whole text. Lines end at LF, CR LF or a lone
+// CR (old Mac files: accepted, not reported as one long line); a UTF-8 byte order mark
+// at the start is skipped; whitespace is space, tab, VT and FF; any other byte (NUL
+// included) belongs to a token and is printed escaped in messages.
 class Tokens {
   public:
-    Tokens(std::istream& in, const std::string& name) : in_(in), name_(name) {}
+    Tokens(std::string_view text, const std::string& name) : text_(text), name_(name) {
+        if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);
+    }
 
     // Next token, or false at the end of the input.
     bool next(std::string& tok, int& line) {
-        if (!fill()) return false;
+        if (pos_ < words_.size()) {
+            prevLine_ = lastLine_;
+        } else {
+            prevLine_ = line_;
+            if (!fill()) return false;
+        }
+        firstOnLine_ = pos_ == 0;
         tok = words_[pos_++];
         line = line_;
+        lastLine_ = line_;
         return true;
     }
     // True if the next token exists and is on line `line`.
@@ -37,6 +56,15 @@ class Tokens {
     [[noreturn]] void fail(int line, const std::string& what) const {
         throw SceneFileError(name_ + ":" + std::to_string(line) + ": " + what);
     }
+    // A token that is not what was expected. When it begins a later line than the
+    // previous token, the command was cut short: name the line that ends early.
+    [[noreturn]] void unexpected(const std::string& tok, int line, const std::string& expected) {
+        if (firstOnLine_ && prevLine_ > 0 && prevLine_ < line)
+            fail(prevLine_, "the line ends early: expected " + expected + " (line " +
+                                std::to_string(line) + " begins with '" + escapeForMessage(tok) +
+                                "')");
+        fail(line, "expected " + expected + ", got '" + escapeForMessage(tok) + "'");
+    }
     double number(const char* what, int cmdLine) {
         std::string tok;
         int line;
@@ -44,15 +72,49 @@ class Tokens {
             fail(cmdLine, std::string("unexpected end of file, expected ") + what);
         const char* s = tok.c_str();
         char* end = nullptr;
+        errno = 0;
         const double v = std::strtod(s, &end);
-        if (end == s || *end != '\0')
-            fail(line, std::string("expected a number (") + what + "), got '" + tok + "'");
-        if (!std::isfinite(v)) fail(line, std::string("non-finite number for ") + what);
+        // The whole token: a NUL inside it must not end the number early.
+        if (end == s || end != s + tok.size())
+            unexpected(tok, line, std::string("a number (") + what + ")");
+        if (std::isnan(v) || (std::isinf(v) && errno != ERANGE))
+            fail(line, std::string("non-finite number '") + escapeForMessage(tok) + "' for " +
+                           what);
+        if (std::isinf(v))
+            fail(line, std::string("number '") + escapeForMessage(tok) + "' for " + what +
+                           " is beyond the range of a double");
+        return v;
+    }
+    // A number within [lo, hi] (what the quantity means), or a file:line error.
+    double number(const char* what, int cmdLine, double lo, double hi, const char* range) {
+        const double v = number(what, cmdLine);
+        if (!(v >= lo && v <= hi))
+            fail(lastLine_, std::string(what) + " " + fmt(v) + " outside " + range);
+        return v;
+    }
+    // A coordinate or length of geometry: |v| <= kNffMaxCoordinate (see nff.h).
+    double coordinate(const char* what, int cmdLine) {
+        const double v = number(what, cmdLine);
+        if (!(std::abs(v) <= kNffMaxCoordinate))
+            fail(lastLine_, std::string(what) + ": " + fmt(v) +
+                                " is beyond the coordinate limit ±1e150 (the tracer squares "
+                                "coordinates; larger ones would overflow)");
         return v;
     }
     glm::dvec3 vec3(const char* what, int cmdLine) {
         const double x = number(what, cmdLine), y = number(what, cmdLine),
                      z = number(what, cmdLine);
+        return {x, y, z};
+    }
+    glm::dvec3 point(const char* what, int cmdLine) {
+        const double x = coordinate(what, cmdLine), y = coordinate(what, cmdLine),
+                     z = coordinate(what, cmdLine);
+        return {x, y, z};
+    }
+    glm::dvec3 colour(const char* what, int cmdLine, double hi, const char* range) {
+        const double x = number(what, cmdLine, 0, hi, range),
+                     y = number(what, cmdLine, 0, hi, range),
+                     z = number(what, cmdLine, 0, hi, range);
         return {x, y, z};
     }
     long long integer(const char* what, int cmdLine) {
@@ -64,38 +126,93 @@ class Tokens {
         char* end = nullptr;
         errno = 0;
         const long long v = std::strtoll(s, &end, 10);
-        if (end == s || *end != '\0' || errno == ERANGE)
-            fail(line, std::string("expected an integer (") + what + "), got '" + tok + "'");
+        if (end == s || end != s + tok.size())
+            unexpected(tok, line, std::string("an integer (") + what + ")");
+        if (errno == ERANGE)
+            fail(line, std::string("integer '") + escapeForMessage(tok) + "' (" + what +
+                           ") out of range");
         return v;
     }
     const std::string& name() const { return name_; }
+    int lastLine() const { return lastLine_; }
+
+    // Shortest text that reads back to v: 1.0000001e150 is not shown as "1e+150".
+    static std::string fmt(double v) {
+        char buf[32];
+        const auto r = std::to_chars(buf, buf + sizeof buf, v);
+        return std::string(buf, r.ptr);
+    }
 
   private:
+    static bool space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+    // Splits the next non-empty line (comments removed) into words_.
     bool fill() {
         while (pos_ >= words_.size()) {
-            std::string text;
-            if (!std::getline(in_, text)) return false;
+            if (at_ >= text_.size()) return false;
+            std::size_t e = at_;
+            while (e < text_.size() && text_[e] != '\n' && text_[e] != '\r')
+                ++e;
+            const std::string_view text = text_.substr(at_, e - at_);
+            at_ = e;
+            if (at_ < text_.size()) { // the line end: LF, CR LF or CR
+                if (text_[at_] == '\r' && at_ + 1 < text_.size() && text_[at_ + 1] == '\n')
+                    ++at_;
+                ++at_;
+            }
             ++line_;
             words_.clear();
             pos_ = 0;
-            std::istringstream ls(text);
-            std::string w;
-            while (ls >> w) {
-                if (w[0] == '#') break; // comment to the end of the line
-                words_.push_back(w);
+            std::size_t i = 0;
+            while (i < text.size()) {
+                while (i < text.size() && space(text[i]))
+                    ++i;
+                if (i == text.size()) break;
+                if (text[i] == '#') break; // comment to the end of the line
+                std::size_t j = i;
+                while (j < text.size() && !space(text[j]))
+                    ++j;
+                words_.emplace_back(text.substr(i, j - i));
+                i = j;
             }
         }
         return true;
     }
-    std::istream& in_;
+    std::string_view text_;
+    std::size_t at_ = 0; // next byte of text_ to split
     std::string name_;
     std::vector<std::string> words_;
     std::size_t pos_ = 0;
     int line_ = 0;
+    int lastLine_ = 0;         // line of the token last returned
+    int prevLine_ = 0;         // line of the token before it
+    bool firstOnLine_ = false; // the token last returned began its line
 };
+
+// The same test LookAtCamera makes, on the direction vectors scaled by powers of two
+// (exact), so that far-away coordinates are judged on their direction, and each problem
+// gets its own message.
+void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
+    if (v.from == v.at) tk.fail(vLine, "bad view: from == at");
+    if (!(v.angle > 0 && v.angle < 180))
+        tk.fail(angleLine, "bad view: angle " + Tokens::fmt(v.angle) + " not in (0, 180)");
+    auto unitScale = [](glm::dvec3 a) {
+        const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+        return m > 0 ? a * std::ldexp(1.0, -std::ilogb(m)) : a;
+    };
+    const glm::dvec3 f = unitScale(v.at - v.from), u = unitScale(v.up);
+    if (u == glm::dvec3(0.0)) tk.fail(vLine, "bad view: up is the zero vector");
+    if (!(glm::length(glm::cross(f, u)) > 1e-12 * glm::length(f) * glm::length(u)))
+        tk.fail(vLine, "bad view: up is parallel to the view direction (at - from)");
+    try {
+        LookAtCamera(v.from, v.at, scaledUp(v.up), v.angle); // as SceneFile::camera() builds it
+    } catch (const std::invalid_argument&) {
+        tk.fail(vLine, "bad view: from == at, up along the view, or angle not in (0, 180)");
+    }
+}
 
 void readView(Tokens& tk, int vLine, SceneView& v) {
     const char* keys[6] = {"from", "at", "up", "angle", "hither", "resolution"};
+    int angleLine = vLine;
     for (const char* key : keys) {
         std::string tok;
         int line;
@@ -103,16 +220,18 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
             tk.fail(vLine,
                     std::string("unexpected end of file in the v block, expected '") + key + "'");
         if (tok != key)
-            tk.fail(line, std::string("expected '") + key + "' in the v block, got '" + tok + "'");
+            tk.fail(line, std::string("expected '") + key + "' in the v block, got '" +
+                              escapeForMessage(tok) + "'");
         if (tok == "from")
-            v.from = tk.vec3("from x y z", line);
+            v.from = tk.point("from x y z", line);
         else if (tok == "at")
-            v.at = tk.vec3("at x y z", line);
+            v.at = tk.point("at x y z", line);
         else if (tok == "up")
-            v.up = tk.vec3("up x y z", line);
-        else if (tok == "angle")
+            v.up = tk.point("up x y z", line);
+        else if (tok == "angle") {
             v.angle = tk.number("angle", line);
-        else if (tok == "hither")
+            angleLine = line;
+        } else if (tok == "hither")
             v.hither = tk.number("hither", line);
         else {
             const long long w = tk.integer("resolution width", line);
@@ -123,11 +242,7 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
             v.height = int(h);
         }
     }
-    try {
-        LookAtCamera(v.from, v.at, v.up, v.angle);
-    } catch (const std::invalid_argument&) {
-        tk.fail(vLine, "bad view: from == at, up along the view, or angle not in (0, 180)");
-    }
+    checkView(tk, vLine, angleLine, v);
 }
 
 // Shortest text that reads back to the same double (std::to_chars): exact round trips
@@ -147,16 +262,17 @@ void writeVec(std::ostream& out, const glm::dvec3& v) {
 
 } // namespace
 
-NffDocument readNff(std::istream& in, const std::string& name) {
+NffDocument readNffText(std::string_view text, const std::string& name) {
     NffDocument doc;
-    Tokens tk(in, name);
+    Tokens tk(text, name);
     std::string cmd;
     int line;
     std::size_t primitives = 0;
     auto count = [&](std::size_t n, int at) {
         primitives += n;
         if (primitives > kNffMaxPrimitives)
-            tk.fail(at, "more than " + std::to_string(kNffMaxPrimitives) + " primitives");
+            tk.fail(at, "more than " + std::to_string(kNffMaxPrimitives) +
+                            " primitives (the limit for one file, see nff.h)");
     };
     while (tk.next(cmd, line)) {
         const int surface = int(doc.surfaces.size()) - 1;
@@ -164,32 +280,37 @@ NffDocument readNff(std::istream& in, const std::string& name) {
             readView(tk, line, doc.view);
             doc.hasView = true;
         } else if (cmd == "b") {
-            doc.background = tk.vec3("background r g b", line);
+            doc.background = tk.colour("background r g b", line, kNffMaxIntensity, "[0, 1e6]");
             doc.hasBackground = true;
         } else if (cmd == "l") {
+            if (doc.lights.size() >= kNffMaxLights)
+                tk.fail(line, "more than " + std::to_string(kNffMaxLights) +
+                                  " lights (the limit for one file, see nff.h)");
             NffLight l;
-            l.position = tk.vec3("light x y z", line);
+            l.position = tk.point("light x y z", line);
             if (tk.moreOnLine(line)) {
-                l.colour = tk.vec3("light r g b", line);
+                l.colour = tk.colour("light r g b", line, kNffMaxIntensity, "[0, 1e6]");
                 l.hasColour = true;
             }
             doc.lights.push_back(l);
         } else if (cmd == "f") {
+            // Each value within its meaning: a reflectance above 1 multiplies light at
+            // every bounce (Ks = 1e100 made every pixel Inf), a negative one is no colour.
             NffSurface f;
-            f.colour = tk.vec3("f r g b", line);
-            f.kd = tk.number("f Kd", line);
-            f.ks = tk.number("f Ks", line);
-            f.shine = tk.number("f Shine", line);
-            f.t = tk.number("f T", line);
-            f.ior = tk.number("f index of refraction", line);
+            f.colour = tk.colour("f r g b", line, 1.0, "[0, 1]");
+            f.kd = tk.number("f Kd", line, 0.0, 1.0, "[0, 1]");
+            f.ks = tk.number("f Ks", line, 0.0, 1.0, "[0, 1]");
+            f.shine = tk.number("f Shine", line, 0.0, 1e6, "[0, 1e6]");
+            f.t = tk.number("f T", line, 0.0, 1.0, "[0, 1]");
+            f.ior = tk.number("f index of refraction", line, -1e6, 1e6, "[-1e6, 1e6]");
             doc.surfaces.push_back(f);
         } else if (cmd == "s") {
             NffObject o;
             o.kind = NffObject::Kind::Sphere;
             o.line = line;
             o.surface = surface;
-            o.centre = tk.vec3("sphere centre", line);
-            o.radius = tk.number("sphere radius", line);
+            o.centre = tk.point("sphere centre", line);
+            o.radius = tk.coordinate("sphere radius", line);
             if (o.radius < 0) tk.fail(line, "negative sphere radius");
             count(1, line);
             doc.objects.push_back(std::move(o));
@@ -199,10 +320,10 @@ NffDocument readNff(std::istream& in, const std::string& name) {
             o.line = line;
             o.surface = surface;
             o.coneOneLine = tk.moreOnLine(line);
-            o.base = tk.vec3("cone base x y z", line);
-            o.baseRadius = tk.number("cone base radius", line);
-            o.apex = tk.vec3("cone apex x y z", line);
-            o.apexRadius = tk.number("cone apex radius", line);
+            o.base = tk.point("cone base x y z", line);
+            o.baseRadius = tk.coordinate("cone base radius", line);
+            o.apex = tk.point("cone apex x y z", line);
+            o.apexRadius = tk.coordinate("cone apex radius", line);
             if (o.base == o.apex) tk.fail(line, "cone base and apex coincide");
             if (o.baseRadius == 0 && o.apexRadius == 0) tk.fail(line, "cone with both radii 0");
             if (!std::isfinite(glm::length(o.apex - o.base)))
@@ -221,21 +342,29 @@ NffDocument readNff(std::istream& in, const std::string& name) {
                                   std::to_string(kNffMaxVertices) + ")");
             count(std::size_t(n - 2), line);
             for (long long i = 0; i < n; ++i) {
-                o.vertices.push_back(tk.vec3("polygon vertex", line));
-                if (cmd == "pp") o.normals.push_back(tk.vec3("polygon vertex normal", line));
+                o.vertices.push_back(tk.point("polygon vertex", line));
+                if (cmd == "pp") o.normals.push_back(tk.point("polygon vertex normal", line));
             }
             doc.objects.push_back(std::move(o));
         } else {
-            tk.fail(line, "unknown command '" + cmd + "'");
+            tk.fail(line, "unknown command '" + escapeForMessage(cmd) + "'");
         }
     }
     return doc;
 }
 
+NffDocument readNff(std::istream& in, const std::string& name) {
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return readNffText(text, name);
+}
+
 NffDocument readNffFile(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw SceneFileError(path + ":0: cannot open the file");
-    return readNff(in, path);
+    std::string text, error;
+    if (!readRegularFile(path, kNffMaxBytes, text, error))
+        throw SceneFileError(path + ":0: " + (error.rfind(path + ": ", 0) == 0
+                                                  ? error.substr(path.size() + 2)
+                                                  : error));
+    return readNffText(text, path);
 }
 
 void writeNff(std::ostream& out, const NffDocument& doc) {
@@ -363,16 +492,20 @@ SceneFile toScene(const NffDocument& doc) {
                 s.add(Cone(o.base, std::abs(o.baseRadius), o.apex, std::abs(o.apexRadius)), m);
                 break;
             case NffObject::Kind::Polygon:
-                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i)
-                    s.add(Triangle(o.vertices[0], o.vertices[i], o.vertices[i + 1]), m);
+                // Concave polygons (SPD gears) are ear-clipped; convex ones stay fans.
+                for (const auto& t : triangulatePolygon(o.vertices))
+                    s.add(Triangle(o.vertices[size_t(t[0])], o.vertices[size_t(t[1])],
+                                   o.vertices[size_t(t[2])]),
+                          m);
                 break;
             case NffObject::Kind::PatchPolygon:
-                for (std::size_t i = 1; i + 1 < o.vertices.size(); ++i) {
+                for (const auto& t : triangulatePolygon(o.vertices)) {
                     const bool hasN = o.normals.size() == o.vertices.size();
                     const glm::dvec3 z(0.0); // a zero normal falls back to the geometric one
-                    s.add(SmoothTriangle(o.vertices[0], o.vertices[i], o.vertices[i + 1],
-                                         hasN ? o.normals[0] : z, hasN ? o.normals[i] : z,
-                                         hasN ? o.normals[i + 1] : z),
+                    const auto a = size_t(t[0]), b = size_t(t[1]), c = size_t(t[2]);
+                    s.add(SmoothTriangle(o.vertices[a], o.vertices[b], o.vertices[c],
+                                         hasN ? o.normals[a] : z, hasN ? o.normals[b] : z,
+                                         hasN ? o.normals[c] : z),
                           m);
                 }
                 break;

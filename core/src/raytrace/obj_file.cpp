@@ -1,116 +1,367 @@
 #include "core/raytrace/obj_file.h"
 
+#include "core/file_read.h"
 #include "core/raytrace/smooth_triangle.h"
 
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
+#include <istream>
+#include <map>
 #include <sstream>
+#include <streambuf>
+#include <string_view>
 
 namespace wb::rt {
 
 namespace {
 
-// Line of the k-th (0-based) line starting with `tag` ("v", "vn", "f"): only on the
-// error path, so the normal load does not pay for it.
-int lineOf(const std::string& path, const std::string& tag, std::size_t k) {
-    std::ifstream in(path);
-    std::string text;
-    int line = 0;
-    std::size_t seen = 0;
-    while (std::getline(in, text)) {
-        ++line;
-        std::istringstream ls(text);
-        std::string w;
-        if (ls >> w && w == tag && seen++ == k) return line;
-    }
-    return 0;
-}
-
 bool finite3(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// tinyobjloader reads a malformed number as 0; this pass finds them first and names
-// the line. Only the numeric records (v, vn, vt) are checked.
-void checkNumbers(const std::string& path) {
-    std::ifstream in(path);
-    std::string text;
-    int line = 0;
-    while (std::getline(in, text)) {
-        ++line;
-        std::istringstream ls(text);
-        std::string w;
-        if (!(ls >> w) || (w != "v" && w != "vn" && w != "vt")) continue;
-        const bool texcoord = w == "vt";
-        int n = 0;
-        while (ls >> w) {
-            if (w[0] == '#') break;
-            const char* s = w.c_str();
-            char* end = nullptr;
-            const double v = std::strtod(s, &end);
-            if (end == s || *end != '\0')
-                throw SceneFileError(path + ":" + std::to_string(line) + ": bad number '" + w +
-                                     "'");
-            if (!std::isfinite(v))
-                throw SceneFileError(path + ":" + std::to_string(line) +
-                                     ": non-finite vertex coordinate");
-            ++n;
-        }
-        const int need = texcoord ? 1 : 3;
-        if (n < need)
-            throw SceneFileError(path + ":" + std::to_string(line) + ": expected " +
-                                 std::to_string(need) + " numbers");
+// Shortest text that reads back to v (1.0000001e38 is not shown as "1e+38").
+std::string fmt(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+// An istream over text already in memory (tinyobjloader reads from a stream), without
+// copying it.
+struct MemoryBuf : std::streambuf {
+    MemoryBuf(const char* b, std::size_t n) {
+        char* p = const_cast<char*>(b); // read only: the get area is never written
+        setg(p, p, p + n);
     }
+};
+
+std::string_view skipBom(std::string_view t) {
+    if (t.substr(0, 3) == "\xEF\xBB\xBF") t.remove_prefix(3);
+    return t;
+}
+
+// Calls f(lineNumber, line) for every line; lines end at LF, CR LF or CR, as in
+// tinyobjloader's safeGetline, so both count lines alike.
+template <class F>
+void forEachLine(std::string_view t, F&& f) {
+    std::size_t at = 0;
+    int line = 0;
+    while (at < t.size()) {
+        std::size_t e = at;
+        while (e < t.size() && t[e] != '\n' && t[e] != '\r')
+            ++e;
+        f(++line, t.substr(at, e - at));
+        at = e;
+        if (at < t.size()) {
+            if (t[at] == '\r' && at + 1 < t.size() && t[at + 1] == '\n') ++at;
+            ++at;
+        }
+    }
+}
+
+// Whitespace-separated words of a line up to a `#` comment (tinyobjloader splits at
+// space and tab; VT and FF are treated as space here and refused nowhere).
+std::vector<std::string_view> words(std::string_view l) {
+    std::vector<std::string_view> w;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; };
+    std::size_t i = 0;
+    while (i < l.size()) {
+        while (i < l.size() && space(l[i]))
+            ++i;
+        if (i == l.size() || l[i] == '#') break;
+        std::size_t j = i;
+        while (j < l.size() && !space(l[j]))
+            ++j;
+        w.push_back(l.substr(i, j - i));
+        i = j;
+    }
+    return w;
+}
+
+class FileErrors {
+  public:
+    explicit FileErrors(const std::string& path) : path_(path) {}
+    [[noreturn]] void fail(int line, const std::string& what) const {
+        throw SceneFileError(path_ + ":" + std::to_string(line) + ": " + what);
+    }
+    // A decimal number as tinyobjloader reads it ([+-]digits[.digits][e[+-]digits]):
+    // anything else (hex, "nan", trailing bytes, a NUL) would be read differently or as 0.
+    double number(std::string_view w, int line, const char* what) const {
+        const std::string s(w);
+        std::string lower = s;
+        std::transform(lower.begin(), lower.end(), lower.begin(),
+                       [](unsigned char c) { return char(std::tolower(c)); });
+        const auto sign = lower.find_first_not_of("+-");
+        if (sign != std::string::npos && (lower.compare(sign, 3, "nan") == 0 ||
+                                          lower.compare(sign, 3, "inf") == 0))
+            fail(line, std::string("non-finite ") + what + " '" + escapeForMessage(s) + "'");
+        const bool decimal = !s.empty() && s.find_first_not_of("0123456789+-.eE") == std::string::npos;
+        char* end = nullptr;
+        errno = 0;
+        const double v = decimal ? std::strtod(s.c_str(), &end) : 0.0;
+        if (!decimal || end != s.c_str() + s.size())
+            fail(line, std::string("bad number '") + escapeForMessage(s) + "' (" + what + ")");
+        if (std::isinf(v))
+            fail(line, std::string(what) + " '" + escapeForMessage(s) +
+                           "' is beyond the range of a double");
+        return v;
+    }
+
+  private:
+    const std::string& path_;
+};
+
+// What the pre-pass learns (tinyobjloader reads malformed numbers and indices as 0 or
+// wraps them, and gives no line numbers; this pass checks the text first and names the
+// line).
+struct ObjScan {
+    std::vector<int> faceLines;          // line of the k-th `f` with 3 or more vertices
+    std::vector<int> droppedLines;       // `f` with fewer (tinyobjloader drops them)
+    std::vector<std::size_t> badNormals; // indices of `vn` records to repair
+    std::vector<int> badNormalLines;     // their lines
+    std::size_t triangles = 0;           // after fan triangulation
+};
+
+ObjScan scanObj(std::string_view text, const std::string& path) {
+    const FileErrors err(path);
+    ObjScan scan;
+    long long nv = 0, nvt = 0, nvn = 0;
+    forEachLine(text, [&](int line, std::string_view l) {
+        if (l.find('\0') != std::string_view::npos)
+            err.fail(line, "NUL byte in the line (a binary file?)");
+        const std::vector<std::string_view> w = words(l);
+        if (w.empty()) return;
+        const std::string_view cmd = w[0];
+        if (cmd == "v") {
+            if (w.size() < 4) err.fail(line, "a vertex needs 3 numbers (v x y z)");
+            for (std::size_t i = 1; i < w.size(); ++i) {
+                const double c = err.number(w[i], line, "vertex coordinate");
+                if (i <= 3 && !(std::abs(c) <= kObjMaxCoordinate))
+                    err.fail(line, "vertex coordinate " + fmt(c) +
+                                       " is beyond the limit ±1e38 (OBJ coordinates are read "
+                                       "as 32-bit floats)");
+            }
+            ++nv;
+        } else if (cmd == "vn") {
+            if (w.size() < 4) err.fail(line, "a normal needs 3 numbers (vn x y z)");
+            bool bad = false;
+            for (std::size_t i = 1; i < 4; ++i) {
+                // A normal only gives a direction: a non-finite or huge one is the
+                // documented repair (the face normal is used), not an error.
+                const std::string s(w[i]);
+                char* end = nullptr;
+                const double c = std::strtod(s.c_str(), &end);
+                if (end == s.c_str() || end != s.c_str() + s.size())
+                    err.fail(line, "bad number '" + escapeForMessage(s) + "' (normal component)");
+                if (!(std::abs(c) <= kObjMaxCoordinate)) bad = true;
+            }
+            if (bad) {
+                scan.badNormals.push_back(std::size_t(nvn));
+                scan.badNormalLines.push_back(line);
+            }
+            ++nvn;
+        } else if (cmd == "vt") {
+            if (w.size() < 2) err.fail(line, "a texture coordinate needs a number (vt u [v])");
+            for (std::size_t i = 1; i < w.size(); ++i)
+                err.number(w[i], line, "texture coordinate");
+            ++nvt;
+        } else if (cmd == "f") {
+            const std::size_t n = w.size() - 1;
+            (n >= 3 ? scan.faceLines : scan.droppedLines).push_back(line);
+            for (std::size_t i = 1; i < w.size(); ++i) {
+                // v, v/vt, v//vn or v/vt/vn: each given index a non-zero int.
+                std::string_view rest = w[i];
+                const long long counts[3] = {nv, nvt, nvn};
+                for (int k = 0; k < 3; ++k) {
+                    const std::size_t slash = rest.find('/');
+                    const std::string part(rest.substr(0, slash));
+                    if (!part.empty() || k == 0) {
+                        char* end = nullptr;
+                        errno = 0;
+                        const long long ix = std::strtoll(part.c_str(), &end, 10);
+                        if (part.empty() || end != part.c_str() + part.size())
+                            err.fail(line, "bad index '" + escapeForMessage(std::string(w[i])) +
+                                               "' in a face");
+                        if (errno == ERANGE || ix > INT_MAX || ix < -INT_MAX)
+                            err.fail(line, "index " + escapeForMessage(part) +
+                                               " out of range (more than 2^31 - 1)");
+                        if (ix == 0) err.fail(line, "index 0 in a face (OBJ indices start at 1)");
+                        if (ix < 0 && -ix > counts[k])
+                            err.fail(line, "relative index " + part + " points before the first " +
+                                               (k == 0 ? "vertex" : k == 1 ? "texture coordinate"
+                                                                           : "normal"));
+                    }
+                    if (slash == std::string_view::npos) break;
+                    rest = rest.substr(slash + 1);
+                }
+            }
+            if (n >= 3) {
+                scan.triangles += n - 2;
+                if (scan.triangles > kObjMaxTriangles)
+                    err.fail(line, "more than " + std::to_string(kObjMaxTriangles) +
+                                       " triangles (the limit for one file, see obj_file.h)");
+            }
+        }
+    });
+    return scan;
+}
+
+// The .mtl values tinyobjloader would take unchecked (`d nan` hid the object): each within
+// its meaning, named by the .mtl's own line.
+void checkMtl(std::string_view text, const std::string& path) {
+    const FileErrors err(path);
+    forEachLine(text, [&](int line, std::string_view l) {
+        if (l.find('\0') != std::string_view::npos)
+            err.fail(line, "NUL byte in the line (a binary file?)");
+        const std::vector<std::string_view> w = words(l);
+        if (w.size() < 2) return;
+        const std::string cmd(w[0]);
+        double lo = 0, hi = 1;
+        const char* range = "[0, 1]";
+        if (cmd == "Ka" || cmd == "Kd" || cmd == "Ks" || cmd == "Tf") {
+            if (w[1] == "spectral" || w[1] == "xyz") return; // other colour forms: not used
+        } else if (cmd == "Ke") {
+            hi = 1e6;
+            range = "[0, 1e6]";
+        } else if (cmd == "Ns") {
+            hi = 1e6;
+            range = "[0, 1e6]";
+        } else if (cmd == "Ni") {
+            lo = -1e6;
+            hi = 1e6;
+            range = "[-1e6, 1e6]";
+        } else if (cmd == "d" || cmd == "Tr") {
+            if (w[1] == "-halo") return;
+        } else {
+            return;
+        }
+        for (std::size_t i = 1; i < w.size(); ++i) {
+            const double v = err.number(w[i], line, (cmd + " value").c_str());
+            if (!(v >= lo && v <= hi))
+                err.fail(line, cmd + " " + fmt(v) + " outside " + range);
+        }
+    });
+}
+
+// Reads each mtllib through readRegularFile and checkMtl. A missing .mtl is the
+// documented repair (a warning, default material); one that is not a regular file, too
+// large or malformed is an error, kept here and thrown after tinyobjloader returns.
+class SafeMaterialReader : public tinyobj::MaterialReader {
+  public:
+    explicit SafeMaterialReader(std::string dir) : dir_(std::move(dir)) {}
+    bool operator()(const std::string& matId, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* matMap, std::string* warn,
+                    std::string* err) override {
+        const std::string path = (!matId.empty() && matId[0] == '/') ? matId : dir_ + matId;
+        // The name comes from the file: escaped wherever it is shown (fuzz_obj found a
+        // control byte of a mtllib name in the "not found" warning).
+        const std::string shown = escapeForMessage(path, 200);
+        std::string text, why;
+        if (!readRegularFile(path, kMtlMaxBytes, text, why)) {
+            if (why.find("No such file") != std::string::npos) {
+                missing_.push_back(shown + ": material file not found; default material used");
+            } else if (error_.empty()) {
+                error_ = shown + ":0: " +
+                         (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why);
+            }
+            return false;
+        }
+        try {
+            checkMtl(skipBom(text), shown);
+        } catch (const SceneFileError& e) {
+            if (error_.empty()) error_ = e.what();
+            return false;
+        }
+        const std::string_view body = skipBom(text);
+        MemoryBuf buf(body.data(), body.size());
+        std::istream in(&buf);
+        tinyobj::LoadMtl(matMap, materials, &in, warn, err);
+        return true;
+    }
+    const std::string& error() const { return error_; }
+    const std::vector<std::string>& missing() const { return missing_; }
+
+  private:
+    std::string dir_;
+    std::string error_;
+    std::vector<std::string> missing_;
+};
+
+void warn(ObjLoadReport& rep, const std::string& w) {
+    ++rep.warningCount;
+    if (rep.warnings.size() < kSceneMaxKeptWarnings) rep.warnings.push_back(w);
 }
 
 } // namespace
 
 SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
-    {
-        std::ifstream probe(path, std::ios::binary | std::ios::ate);
-        if (!probe) throw SceneFileError(path + ":0: cannot open the file");
-        // tinyobjloader holds the whole file and its arrays in memory: cap the input so
-        // an enormous file is an error, not an out-of-memory.
-        if (probe.tellg() > std::streamoff(kObjMaxBytes))
-            throw SceneFileError(path + ":0: file larger than " +
-                                 std::to_string(kObjMaxBytes >> 20) + " MB");
-    }
-    checkNumbers(path);
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = false; // fans are made here, after the indices are checked
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    const bool ok = reader.ParseFromFile(path, config);
     ObjLoadReport local;
     ObjLoadReport& rep = report ? *report : local;
-    if (!reader.Warning().empty()) {
-        std::istringstream ws(reader.Warning());
+    rep = ObjLoadReport{};
+    // 1. The whole file, if it is a regular file within the cap (tinyobjloader holds it
+    //    and its arrays in memory anyway).
+    std::string raw, why;
+    if (!readRegularFile(path, kObjMaxBytes, raw, why))
+        throw SceneFileError(path + ":0: " +
+                             (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why));
+    const std::string_view text = skipBom(raw);
+    // 2. Numbers, indices and the triangle cap, with line numbers.
+    const ObjScan scan = scanObj(text, path);
+    // 3. tinyobjloader on the checked text; materials through SafeMaterialReader.
+    const auto slash = path.find_last_of('/');
+    SafeMaterialReader mtl(slash == std::string::npos ? std::string() : path.substr(0, slash + 1));
+    tinyobj::attrib_t at;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string tinyWarn, tinyErr;
+    MemoryBuf buf(text.data(), text.size());
+    std::istream in(&buf);
+    const bool ok = tinyobj::LoadObj(&at, &shapes, &materials, &tinyWarn, &tinyErr, &in, &mtl,
+                                     /*triangulate=*/false, /*default_vcols_fallback=*/false);
+    if (!mtl.error().empty()) throw SceneFileError(mtl.error());
+    for (const std::string& m : mtl.missing())
+        warn(rep, m);
+    for (const int line : scan.droppedLines)
+        warn(rep, path + ":" + std::to_string(line) + ": face with fewer than 3 vertices dropped");
+    {
+        std::istringstream ws(tinyWarn);
         std::string w;
-        while (std::getline(ws, w))
-            if (!w.empty()) rep.warnings.push_back(path + ": " + w);
+        while (std::getline(ws, w)) {
+            // Said above with the file's name and line.
+            if (w.empty() || w == "." || w.find("Degenerated face found") != std::string::npos ||
+                (!mtl.missing().empty() && w.rfind("Failed to load material", 0) == 0))
+                continue;
+            warn(rep, path + ": " + escapeForMessage(w, 200));
+        }
     }
     if (!ok) {
-        std::string err = reader.Error();
-        while (!err.empty() && (err.back() == '\n' || err.back() == '\r'))
-            err.pop_back();
-        throw SceneFileError(path + ":0: " + (err.empty() ? "cannot parse" : err));
+        std::string e = tinyErr;
+        while (!e.empty() && (e.back() == '\n' || e.back() == '\r'))
+            e.pop_back();
+        throw SceneFileError(path + ":0: " + (e.empty() ? "cannot parse" : escapeForMessage(e, 200)));
     }
-    const tinyobj::attrib_t& at = reader.GetAttrib();
     const std::size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3;
     std::vector<glm::dvec3> verts(nv), norms(nn);
     for (std::size_t i = 0; i < nv; ++i) {
         verts[i] = {at.vertices[3 * i], at.vertices[3 * i + 1], at.vertices[3 * i + 2]};
-        if (!finite3(verts[i]))
-            throw SceneFileError(path + ":" + std::to_string(lineOf(path, "v", i)) +
-                                 ": non-finite vertex coordinate");
+        if (!finite3(verts[i])) // scanObj checked the text; a float rounding to inf is caught here
+            throw SceneFileError(path + ":0: vertex " + std::to_string(i + 1) +
+                                 " is not finite as a 32-bit float");
     }
     for (std::size_t i = 0; i < nn; ++i) {
         norms[i] = {at.normals[3 * i], at.normals[3 * i + 1], at.normals[3 * i + 2]};
         if (!finite3(norms[i])) norms[i] = glm::dvec3(0.0); // repair: use the face normal
+    }
+    for (std::size_t k = 0; k < scan.badNormals.size(); ++k) {
+        if (scan.badNormals[k] < nn) norms[scan.badNormals[k]] = glm::dvec3(0.0);
+        warn(rep, path + ":" + std::to_string(scan.badNormalLines[k]) +
+                      ": normal not finite or beyond ±1e38; faces using it get their face normal");
     }
 
     SceneFile sf;
@@ -118,7 +369,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     Scene& s = *sf.scene;
     s.background = glm::dvec3(0.05);
     std::vector<int> mats;
-    for (const tinyobj::material_t& mt : reader.GetMaterials()) {
+    for (const tinyobj::material_t& mt : materials) {
         Material m;
         m.colour = {mt.diffuse[0], mt.diffuse[1], mt.diffuse[2]};
         m.ka = 0.1;
@@ -129,9 +380,10 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
         const double d = mt.dissolve;
         m.kt = std::isfinite(d) ? std::clamp(1.0 - d, 0.0, 1.0) : 0.0;
         m.medium.refract = (std::isfinite(mt.ior) && mt.ior > 0) ? mt.ior : 1.0;
+        // checkMtl refused values outside their meaning; these guard what it cannot see.
         if (!finite3(m.colour)) m.colour = glm::dvec3(0.8);
         if (!std::isfinite(m.ks)) m.ks = 0;
-        if (!std::isfinite(m.phongExp)) m.phongExp = 0;
+        if (!std::isfinite(m.phongExp) || m.phongExp < 0) m.phongExp = 0;
         mats.push_back(s.addMaterial(m));
     }
     Material def;
@@ -142,18 +394,20 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     def.phongExp = 20;
     const int defaultMat = s.addMaterial(def);
 
-    std::size_t faceNo = 0;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    auto faceLine = [&](std::size_t k) { return k < scan.faceLines.size() ? scan.faceLines[k] : 0; };
+    std::size_t faceNo = 0, dropped = 0;
+    for (const tinyobj::shape_t& shape : shapes) {
         const auto& mesh = shape.mesh;
         std::size_t base = 0;
         for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f, ++faceNo) {
             const std::size_t n = mesh.num_face_vertices[f];
             if (base + n > mesh.indices.size())
-                throw SceneFileError(path + ":" + std::to_string(lineOf(path, "f", faceNo)) +
+                throw SceneFileError(path + ":" + std::to_string(faceLine(faceNo)) +
                                      ": face index list truncated");
             if (n < 3) {
-                rep.warnings.push_back(path + ":" + std::to_string(lineOf(path, "f", faceNo)) +
-                                       ": face with fewer than 3 vertices dropped");
+                ++dropped;
+                warn(rep, path + ":" + std::to_string(faceLine(faceNo)) +
+                              ": face with fewer than 3 vertices dropped");
                 base += n;
                 continue;
             }
@@ -164,8 +418,9 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             for (std::size_t k = 0; k < n; ++k) {
                 const tinyobj::index_t& ix = mesh.indices[base + k];
                 if (ix.vertex_index < 0 || std::size_t(ix.vertex_index) >= nv)
-                    throw SceneFileError(path + ":" + std::to_string(lineOf(path, "f", faceNo)) +
-                                         ": vertex index out of range");
+                    throw SceneFileError(path + ":" + std::to_string(faceLine(faceNo)) +
+                                         ": vertex index out of range (the file has " +
+                                         std::to_string(nv) + " vertices)");
                 if (ix.normal_index < 0 || std::size_t(ix.normal_index) >= nn) smooth = false;
             }
             auto V = [&](std::size_t k) {
@@ -184,9 +439,19 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             base += n;
         }
     }
+    // 4. Nothing to draw is an error, not an empty picture (issue 12 point 7).
+    if (rep.triangles == 0) {
+        std::string what = "nothing to draw: no faces with 3 or more vertices";
+        dropped += scan.droppedLines.size();
+        if (dropped) what += " (" + std::to_string(dropped) + " smaller faces dropped)";
+        else if (scan.faceLines.empty()) what += " (no `f` lines: is this an OBJ file?)";
+        throw SceneFileError(path + ":0: " + what);
+    }
     sf.hasView = false;
     sf.view = frameScene(s);
     addDefaultLight(s, sf.view);
+    sf.warnings = rep.warnings;
+    sf.warningCount = rep.warningCount;
     return sf;
 }
 

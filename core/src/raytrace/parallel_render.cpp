@@ -1,10 +1,14 @@
 #include "core/raytrace/parallel_render.h"
 
+#include <tbb/info.h>
+#ifdef WB_TSAN_THREADS
+#include <thread>
+#else
 #include <tbb/blocked_range.h>
 #include <tbb/global_control.h>
-#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -23,6 +27,40 @@ namespace {
 
 bool finite(const Color& c) {
     return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+}
+
+// Runs body(i) for i in [0, count) on `threads` workers, each index once, and returns
+// when all are done. With TBB (parallel_for, one index per task, simple partitioner)
+// normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON, WB_TSAN_THREADS) on
+// std::threads pulling indices from an atomic counter, because Debian's TBB is not
+// instrumented and TSan cannot see its hand-offs (every report landed in TBB's headers).
+// The tiles and what each does are the same code either way.
+template <class Body> void forEachIndex(int threads, int count, const Body& body) {
+#ifdef WB_TSAN_THREADS
+    std::atomic<int> next{0};
+    std::vector<std::thread> workers;
+    for (int t = 0; t < std::min(threads, count); ++t)
+        workers.emplace_back([&] {
+            for (int i = next++; i < count; i = next++)
+                body(i);
+        });
+    for (std::thread& w : workers)
+        w.join();
+#else
+    // More threads than cores (tests ask for 3 on 2 cores) must be allowed explicitly.
+    tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
+                              std::size_t(std::max(threads, hardwareThreads())));
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, count, 1),
+            [&](const tbb::blocked_range<int>& r) {
+                for (int i = r.begin(); i != r.end(); ++i)
+                    body(i);
+            },
+            tbb::simple_partitioner());
+    });
+#endif
 }
 
 } // namespace
@@ -91,40 +129,29 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
             p.tilesDone = ++tilesDone;
             p.tilesTotal = tilesTotal;
             p.image = opt.cornerRays ? nullptr : &img;
+            p.primaryRays = primary.load();
+            p.secondaryRays = secondary.load();
+            p.shadowRays = shadow.load();
             opt.progress(p);
         }
     };
 
-    // More threads than cores (tests ask for 3 on 2 cores) must be allowed explicitly.
-    tbb::global_control allow(tbb::global_control::max_allowed_parallelism,
-                              std::size_t(std::max(threads, hardwareThreads())));
-    tbb::task_arena arena(threads);
-    arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<int>(0, tilesTotal, 1),
-            [&](const tbb::blocked_range<int>& r) {
-                for (int t = r.begin(); t != r.end(); ++t)
-                    renderTile(t);
-            },
-            tbb::simple_partitioner());
-    });
+    forEachIndex(threads, tilesTotal, renderTile);
 
     if (opt.cornerRays && !cancelled) {
         // Each pixel is the mean of its four corners, in the model's units.
-        arena.execute([&] {
-            tbb::parallel_for(0, height, [&](int y) {
-                for (int x = 0; x < width; ++x) {
-                    const auto at = [&](int cx, int cy) {
-                        return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
-                    };
-                    Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
-                    if (!finite(c)) {
-                        ++bad;
-                        c = Color(0.0);
-                    }
-                    model.toRgb8(c, img.at(x, y));
+        forEachIndex(threads, height, [&](int y) {
+            for (int x = 0; x < width; ++x) {
+                const auto at = [&](int cx, int cy) {
+                    return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
+                };
+                Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
+                if (!finite(c)) {
+                    ++bad;
+                    c = Color(0.0);
                 }
-            });
+                model.toRgb8(c, img.at(x, y));
+            }
         });
     }
     if (stats) {

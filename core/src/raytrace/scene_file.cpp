@@ -9,8 +9,17 @@
 
 namespace wb::rt {
 
+glm::dvec3 scaledUp(const glm::dvec3& up) {
+    const double m = std::max({std::abs(up.x), std::abs(up.y), std::abs(up.z)});
+    if (!(m > 0) || !std::isfinite(m)) return up;
+    return up * std::ldexp(1.0, -std::ilogb(m));
+}
+
 LookAtCamera SceneFile::camera() const {
-    return LookAtCamera(view.from, view.at, view.up, view.angle);
+    // up only gives a direction: scaled by a power of two (exact, so an up of (0, 1, 0)
+    // keeps every bit) so that cross(at − from, up) cannot overflow for a far-away
+    // from/at and a huge up (issue 12 point 5).
+    return LookAtCamera(view.from, view.at, scaledUp(view.up), view.angle);
 }
 
 SceneFile loadSceneFile(const std::string& path) {
@@ -21,7 +30,11 @@ SceneFile loadSceneFile(const std::string& path) {
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (ext == "nff") {
         try {
-            return toScene(readNffFile(path));
+            SceneFile sf = toScene(readNffFile(path));
+            if (sf.scene->primitives.empty())
+                throw SceneFileError(path +
+                                     ":0: nothing to draw: no objects (s, c, p, pp) in the file");
+            return sf;
         } catch (const SceneFileError& e) {
             // toScene names the document "NFF"; give the file name instead.
             std::string msg = e.what();

@@ -22,7 +22,7 @@ std::optional<glm::dvec3> refractDir(const glm::dvec3& v, const glm::dvec3& n, d
 }
 
 double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                             double dist) const {
+                             double dist, const Primitive* self) const {
     ++shadowRays;
     Ray feeler;
     feeler.origin = origin;
@@ -30,6 +30,7 @@ double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, do
     double k = 1.0;
     // Only the blockers' materials matter: no hit records (Primitive::occluded).
     scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&](const Primitive& p) {
+        if (&p == self) return true; // a flat primitive cannot shadow its own point
         const double kt = scene_.materials[size_t(p.material)].kt;
         if (kt < settings_.opaqueKt) {
             k = 0.0; // an opaque blocker: no need to look further
@@ -76,8 +77,11 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
             // the surface as the normal offset of reflected rays: a feeler that grazes a
             // blocker's border (seed 000's does, exactly) is judged on the true line.
             const double t0 = feelerStart(hit.point, hit.normal, s.toLight);
-            s.transmittance = t0 < s.distance ? transmittance(hit.point, s.toLight, t0, s.distance)
-                                              : 1.0; // the light is closer than the offset
+            const Primitive* self =
+                hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
+            s.transmittance = t0 < s.distance
+                                  ? transmittance(hit.point, s.toLight, t0, s.distance, self)
+                                  : 1.0; // the light is closer than the offset
         } else {
             s.transmittance = 0.0; // the surface faces away from the light
         }
@@ -86,7 +90,8 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
 }
 
 template <bool kObserve>
-Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const {
+Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
+                       long& budget) const {
     if (ray.depth == 0)
         ++primaryRays;
     else
@@ -120,15 +125,24 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
     }
 
     if (ray.depth < settings_.maxDepth) {
+        // A child's weight is its share of this ray's, k / max(1, kr + kt) (issue 12): the
+        // weights of one level then sum to <= 1 for any kr, kt, so at most 1/minWeight
+        // rays a level pass the cut-off (kr = kt = 1 made 2^depth rays of weight 1).
+        // For kr + kt <= 1 the divisor is exactly 1: seed 000's weight × k, same bits.
+        const double share = std::max(1.0, m.kr + m.kt);
         // Reflected ray: same side, same medium.
-        if (m.kr > 0 && ray.weight * m.kr >= settings_.minWeight) {
+        const bool reflect = m.kr > 0 && ray.weight * m.kr / share >= settings_.minWeight;
+        if (reflect && budget <= 0) {
+            if constexpr (kObserve) observer->childSkipped(RayKind::Reflected, SkipReason::RayBudget);
+        } else if (reflect) {
+            --budget;
             Ray r;
             r.origin = offsetRayOrigin(hit.point, hit.normal);
             r.direction = reflectDir(ray.direction, hit.normal);
-            r.weight = ray.weight * m.kr;
+            r.weight = ray.weight * m.kr / share;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
-            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer);
+            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget);
             if constexpr (kObserve) observer->childResult(RayKind::Reflected, rc, m.kr);
             c = model_.addScaled(c, rc, m.kr);
         } else if (kObserve && m.kr > 0) {
@@ -136,7 +150,10 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
         }
         // Transmitted ray: through a thin (open) surface unchanged, into or out of a
         // body by formula (7) with the ratio of the indices on both sides.
-        if (m.kt > 0 && ray.weight * m.kt >= settings_.minWeight) {
+        const bool transmit = m.kt > 0 && ray.weight * m.kt / share >= settings_.minWeight;
+        if (transmit && budget <= 0) {
+            if constexpr (kObserve) observer->childSkipped(RayKind::Refracted, SkipReason::RayBudget);
+        } else if (transmit) {
             std::optional<glm::dvec3> dir = ray.direction;
             Medium medium = ray.medium;
             if (hit.solid) {
@@ -151,13 +168,14 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
                 dir = refractDir(ray.direction, hit.normal, eta);
             }
             if (dir) {
+                --budget;
                 Ray t;
                 t.origin = offsetRayOrigin(hit.point, -hit.normal);
                 t.direction = *dir;
-                t.weight = ray.weight * m.kt;
+                t.weight = ray.weight * m.kt / share;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer);
+                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget);
                 if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
                 c = model_.addScaled(c, tc, m.kt);
             } else if (kObserve) {
@@ -181,12 +199,14 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) co
 }
 
 Color Tracer::trace(const Ray& ray) const {
-    return traceRay<false>(ray, RayKind::Primary, nullptr);
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {
     if (!observer) return trace(ray);
-    return traceRay<true>(ray, RayKind::Primary, observer);
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<true>(ray, RayKind::Primary, observer, budget);
 }
 
 } // namespace wb::rt

@@ -1,5 +1,6 @@
 #include "core/raytrace/triangle.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -7,8 +8,16 @@ namespace wb::rt {
 
 Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, bool closedMesh)
     : v0(a), v1(b), v2(c), closed_(closedMesh) {
-    const glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
-    const double len = glm::length(n);
+    glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
+    double len = glm::length(n);
+    if (std::isinf(len) && std::isfinite(n.x + n.y + n.z)) {
+        // |n|² overflowed (vertices beyond ~1e77 apart, issue 12 point 5): scale n by a
+        // power of two first (exact), so the direction is kept. Inputs where len is
+        // finite take the unscaled path and keep their bits.
+        const double m = std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)});
+        n *= std::ldexp(1.0, -std::ilogb(m));
+        len = glm::length(n);
+    }
     normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
 }
 
@@ -39,7 +48,17 @@ bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) con
     const double det = u + v + w;
     if (det == 0) return false; // ray in the triangle's plane, or degenerate projection
     const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
-    const double t = (u * az + v * bz + w * cz) / det;
+    double t = (u * az + v * bz + w * cz) / det;
+    if (!std::isfinite(t)) {
+        // u·az is a product of three coordinate differences: it overflows beyond ~1e100
+        // (issue 12 point 5). The same formula with u, v, w, det scaled by one power of
+        // two (exact) rounds exactly as the unscaled one would without the overflow;
+        // dividing first instead lost enough accuracy to shadow the triangle by itself.
+        // Taken only here, so every hit that was finite keeps its bits.
+        const double m = std::max({std::abs(u), std::abs(v), std::abs(w)});
+        const double k = std::ldexp(1.0, -std::ilogb(m));
+        t = ((u * k) * az + (v * k) * bz + (w * k) * cz) / (det * k);
+    }
     if (!(t > tMin && t <= tMax)) return false;
     const double b0 = u / det, b1 = v / det, b2 = w / det;
     hit.t = t;

@@ -241,3 +241,63 @@ TEST_CASE("textures: a plane bound by three points, a box face, an ellipsoid",
     lat30.direction = {0, -1, 0};
     CHECK(tracer2.trace(lat30) == glm::dvec3(1, 1, 1));
 }
+
+TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
+          "[raytrace][tracer]") {
+    // Issue 12 point 3: 30 stacked quads with kr = kt = 1 took 2^depth rays (depth 16
+    // over 60 s at 160x120). Each hit spawns a reflected and a transmitted ray of weight
+    // 1, so only the depth and the budget stop the tree.
+    Scene s;
+    Material both;
+    both.kr = 1;
+    both.kt = 1;
+    const int m = s.addMaterial(both);
+    for (int i = 0; i < 30; ++i) {
+        const double z = -1.0 - i;
+        s.add(Rectangle({-50, -50, z}, {50, -50, z}, {-50, 50, z}), m);
+    }
+    s.add(Rectangle({-50, -50, 1}, {-50, 50, 1}, {50, -50, 1}), m); // a lid: reflections come back
+    const PhongModel model;
+    auto rays = [&](int depth, long budget, double minWeight) {
+        TraceSettings ts;
+        ts.maxDepth = depth;
+        ts.maxRaysPerSample = budget;
+        ts.minWeight = minWeight;
+        const Tracer tracer(s, model, ts);
+        const Color c = tracer.trace(down({0.1, 0.2, 0}));
+        CHECK(std::isfinite(c.x + c.y + c.z));
+        return tracer.secondaryRays.load();
+    };
+    const long kNoBudget = 1L << 40;
+    // Without the weight cut-off and the budget the tree grows by about 2x per level
+    // (rays that leave the stack miss and end their branch): exponential, as reported.
+    const long long unbounded12 = rays(12, kNoBudget, 0), unbounded16 = rays(16, kNoBudget, 0);
+    CHECK(unbounded16 > 8 * unbounded12);
+    CHECK(unbounded16 > 30000);
+    // The weight cut-off holds: children get k / (kr + kt) = 1/2 of the weight, so a ray
+    // of depth d has weight 2^-d and depth 7 (1/128 < 0.01) is never traced: at most
+    // 2 + 4 + ... + 64 = 126 rays at any depth limit.
+    CHECK(rays(16, kNoBudget, 0.01) <= 126);
+    CHECK(rays(16, kNoBudget, 0.01) == rays(64, kNoBudget, 0.01));
+    CHECK(rays(16, kNoBudget, 0.01) == rays(6, kNoBudget, 0.01));
+    // The budget is the backstop when minWeight is 0: below it nothing changes, above it
+    // the tree stops exactly at the budget.
+    CHECK(rays(8, 4096, 0) == rays(8, kNoBudget, 0));
+    CHECK(rays(16, 4096, 0) == 4096);
+    CHECK(rays(16, TraceSettings{}.maxRaysPerSample, 0) == 4096);
+    CHECK(rays(16, 10, 0) == 10);
+    CHECK(rays(16, 0, 0) == 0);
+
+    // The observer is told why a child was skipped.
+    struct Count : TraceObserver {
+        int budget = 0;
+        void childSkipped(RayKind, SkipReason why) override { budget += why == SkipReason::RayBudget; }
+    } obs;
+    TraceSettings ts;
+    ts.maxDepth = 16;
+    ts.maxRaysPerSample = 10;
+    ts.minWeight = 0;
+    const Tracer tracer(s, model, ts);
+    tracer.trace(down({0.1, 0.2, 0}), &obs);
+    CHECK(obs.budget > 0);
+}

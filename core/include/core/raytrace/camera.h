@@ -13,20 +13,6 @@ class Camera {
     virtual Ray primaryRay(int x, int y, int width, int height) const = 0;
 };
 
-class LookAtCamera : public Camera {
-  public:
-    // fovYDegrees in (0, 180); up not parallel to target − eye. Throws
-    // std::invalid_argument otherwise. Rays pass through pixel centres.
-    LookAtCamera(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up,
-                 double fovYDegrees);
-    Ray primaryRay(int x, int y, int width, int height) const override;
-    // The ray through continuous image coordinates (px, py) in [0, w] × [0, h].
-    Ray rayAt(double px, double py, int width, int height) const;
-
-    glm::dvec3 eye, forward, right, up; // orthonormal frame
-    double tanHalfFov;
-};
-
 class ScreenCamera : public Camera {
   public:
     // The screen plane is perpendicular to `viewDir` at distance `dist` from the eye;
@@ -43,8 +29,45 @@ class ScreenCamera : public Camera {
     // The ray through screen point (xs, ys) (origin at the screen centre, y up).
     Ray rayThroughScreen(double xs, double ys) const;
 
+    // The same with pixels of `pixel` world units instead of pixelSize.
+    Ray rayThroughScreen(double xs, double ys, double pixel) const;
+
     glm::dvec3 eye, screenCentre, screenX, screenY;
     double pixelSize;
+};
+
+// The one look-at frame of the project (issue 12: rt_render and lab 07 rendered the
+// same file differently because each built its rays its own way). The eye looks at
+// `target`, turned first by yawDeg about `up` and then by pitchDeg about the camera's
+// right axis (lab 07's orbit; pitch keeps the view between 1° and 179° from up; both
+// 0 for a fixed view, which is then exact: no rotation is applied). The screen plane
+// passes through the target (distance |eye − target|), x = normalize(forward × up),
+// y = x × forward, pixels of pixelSize. Throws std::invalid_argument when eye == target
+// or up runs along the view.
+ScreenCamera orbitScreenCamera(const glm::dvec3& eye, const glm::dvec3& target,
+                               const glm::dvec3& up, double yawDeg, double pitchDeg,
+                               double pixelSize);
+
+// A look-at pinhole with a vertical field of view, for images of any size: the rays of
+// orbitScreenCamera(eye, target, up, 0, 0, pixel) with pixel = 2·|eye − target|·tan(fov/2)/h,
+// bit for bit what lab 07 traces for the same view (see tests/core/raytrace_scale/
+// same_picture_test.cpp).
+class LookAtCamera : public Camera {
+  public:
+    // fovYDegrees in (0, 180); up not parallel to target − eye. Throws
+    // std::invalid_argument otherwise. Rays pass through pixel centres.
+    LookAtCamera(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up,
+                 double fovYDegrees);
+    Ray primaryRay(int x, int y, int width, int height) const override;
+    // The ray through continuous image coordinates (px, py) in [0, w] × [0, h].
+    Ray rayAt(double px, double py, int width, int height) const;
+
+    glm::dvec3 eye, forward, right, up; // orthonormal frame (eye as orbitScreenCamera puts it)
+    double tanHalfFov;                  // tan(fov/2)
+    double dist;                        // |eye − target|: the screen plane's distance
+
+  private:
+    ScreenCamera screen_; // pixel size 1; each image size scales it
 };
 
 } // namespace wb::rt

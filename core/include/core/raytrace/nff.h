@@ -14,13 +14,19 @@
 // triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone
 // (NFF's negative radii, which some writers use, are read as their absolute value).
 //
-// Limits (hostile input): a polygon may have 3..kNffMaxVertices vertices, a file at
-// most kNffMaxPrimitives primitives; numbers must be finite; the resolution at most
-// 16384². Errors name the file, the line and the problem.
+// Limits (hostile input, issue 12): a polygon may have 3..kNffMaxVertices vertices, a
+// file at most kNffMaxPrimitives primitives and kNffMaxLights lights, and at most
+// kNffMaxBytes bytes; only regular files are read (a FIFO or device is refused, see
+// core/file_read.h); numbers must be finite; coordinates and radii within
+// ±kNffMaxCoordinate; colours, Kd, Ks and T within [0, 1], Shine within [0, 1e6],
+// light and background colours within [0, kNffMaxIntensity]; the resolution at most
+// 16384². Line ends may be LF, CR LF or CR; a UTF-8 byte order mark is skipped. Errors
+// name the file, the line and the problem; bytes of the file appear escaped (\xNN).
 #include "core/raytrace/scene_file.h"
 
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace wb::rt {
@@ -29,6 +35,21 @@ constexpr int kNffMaxVertices = 100000; // per polygon
 // Per file: balls 6 has 0.6 million; 4 million primitives take about 1.5 GB at peak
 // (document, scene and BVH), so a hostile file cannot exhaust memory.
 constexpr std::size_t kNffMaxPrimitives = 4000000;
+// Per file: every light costs a shadow feeler at every hit, so time grows with
+// lights × hits (200,000 lights took 50 s at 160×120). The SPD databases use at most
+// a handful; 1000 keeps the worst case near 0.3 s at 160×120 and a few seconds at 512².
+constexpr std::size_t kNffMaxLights = 1000;
+// Largest file: the text is read whole; 4 million primitives written as `p 3` polygons
+// take about 400 MB, so 512 MB holds any file within the primitive cap with comments.
+constexpr std::size_t kNffMaxBytes = std::size_t(512) << 20;
+// Largest |coordinate| or radius: the tracer squares coordinate differences (sphere
+// |f|², triangle edge products); with coordinates up to 1e150 and the framing camera
+// a few radii away, squares stay near 1e302, below DBL_MAX ≈ 1.8e308. Beyond about
+// 1e154 they overflow and the geometry vanished silently.
+constexpr double kNffMaxCoordinate = 1e150;
+// Largest light or background component: far above any meaningful intensity, and
+// 1000 lights × 1e6 × any depth stay finite.
+constexpr double kNffMaxIntensity = 1e6;
 
 struct NffSurface {
     glm::dvec3 colour{1.0}; // r g b, 0..1
@@ -71,6 +92,8 @@ struct NffDocument {
 
 // Parses NFF text; `name` is used in error messages. Throws SceneFileError.
 NffDocument readNff(std::istream& in, const std::string& name);
+NffDocument readNffText(std::string_view text, const std::string& name);
+// A regular file of at most kNffMaxBytes (errors "path:0: ..." otherwise).
 NffDocument readNffFile(const std::string& path);
 // Writes NFF text that readNff reads back to an equal document (numbers in the
 // shortest form that reads back exactly). Each `f` is written just before the first

@@ -4,7 +4,12 @@
 // index, kt = 1 − d). Faces with vertex normals are shaded with interpolated normals.
 // A file without lights or camera gets a default view that frames the model and a
 // light near the eye. A missing .mtl is a documented repair: a warning, the default
-// material. Errors name the file, the line (when tinyobjloader gives one) and the problem.
+// material. Errors name the file, the line and the problem (issue 12: a pre-pass checks
+// every number and index with its line, since tinyobjloader reads a bad number as 0 and
+// wraps a huge index); .mtl values are checked the same way, each in its meaning (Ka, Kd,
+// Ks, Tf, d, Tr in [0, 1]; Ke, Ns in [0, 1e6]; Ni in [-1e6, 1e6]). Line ends may be LF,
+// CR LF or CR; a UTF-8 byte order mark is skipped; a line with a NUL byte is refused.
+// Only regular files are read (core/file_read.h). A file without faces is an error.
 #include "core/raytrace/scene_file.h"
 
 #include <string>
@@ -14,10 +19,22 @@ namespace wb::rt {
 
 // Largest .obj accepted (about 5 million triangles; tinyobjloader keeps it all in memory).
 constexpr std::size_t kObjMaxBytes = std::size_t(256) << 20;
+// Largest .mtl: a material is a few lines, so 16 MB is thousands of materials; /dev/zero
+// or /dev/urandom as a .mtl used to be read until memory ran out.
+constexpr std::size_t kMtlMaxBytes = std::size_t(16) << 20;
+// Triangles per file, the NFF cap (kNffMaxPrimitives): about 1.5 GB at peak with the BVH.
+// A 256 MB file of small triangles holds about 7 million.
+constexpr std::size_t kObjMaxTriangles = 4000000;
+// Largest |vertex coordinate|: tinyobjloader reads 32-bit floats (FLT_MAX ≈ 3.4e38), so a
+// larger value would become infinite.
+constexpr double kObjMaxCoordinate = 1e38;
 
 struct ObjLoadReport {
-    std::vector<std::string> warnings; // repairs made (missing .mtl, degenerate faces dropped)
-    std::size_t triangles = 0;         // after fan triangulation
+    // Repairs made (missing .mtl, faces with < 3 vertices dropped, normals repaired): the
+    // first kSceneMaxKeptWarnings messages, "file:line: what".
+    std::vector<std::string> warnings;
+    std::size_t warningCount = 0; // all warnings, kept or not
+    std::size_t triangles = 0;    // after fan triangulation
 };
 
 SceneFile loadObjFile(const std::string& path, ObjLoadReport* report = nullptr);

@@ -18,6 +18,8 @@ struct TileProgress {
     int tilesDone = 0;                  // tiles finished so far, including this one
     int tilesTotal = 0;                 // tiles of the frame
     const Image* image = nullptr;       // the image being written (read the tile only)
+    // Rays of the tiles finished so far, this one included (live counters for a viewer).
+    long long primaryRays = 0, secondaryRays = 0, shadowRays = 0;
 };
 
 struct ParallelRenderOptions {

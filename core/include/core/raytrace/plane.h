@@ -17,6 +17,7 @@ class Plane : public Primitive {
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
     Aabb bounds() const override { return Aabb::infinite(); }
     bool solid() const override { return false; }
+    bool planar() const override { return true; }
 
     glm::dvec3 normal; // unit normal (the "front" side)
     double d;          // plane offset: n·x = d

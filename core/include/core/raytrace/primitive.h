@@ -37,6 +37,12 @@ class Primitive {
     // ellipsoid, closed meshes): a ray crossing their surface changes medium.
     virtual bool solid() const = 0;
 
+    // True for flat primitives (triangle, rectangle, plane): a line meets them at most
+    // once, so a shadow feeler starting on one can never be blocked by that same one.
+    // The tracer skips it (issue 12): far from the origin the feeler's offset is smaller
+    // than the error of its intersection with its own surface (acne from ~1e5 on).
+    virtual bool planar() const { return false; }
+
     int material = 0; // index into Scene::materials
 
   protected:

@@ -16,6 +16,7 @@ class Rectangle : public Primitive {
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
     Aabb bounds() const override;
     bool solid() const override { return false; }
+    bool planar() const override { return true; }
 
     // (u, v) of a point of the plane, seed 000's parametrisation.
     glm::dvec2 uvOf(const glm::dvec3& p) const;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace wb::rt {
 
@@ -26,16 +27,29 @@ struct SceneView {
     int height = 512;
 };
 
+// Loader warnings kept with a SceneFile (the count covers all of them).
+constexpr std::size_t kSceneMaxKeptWarnings = 10;
+
 struct SceneFile {
     std::unique_ptr<Scene> scene; // never null after a successful load
     SceneView view;               // from the file, or a default that frames the scene
     bool hasView = false;         // the file gave its own view
+    // Repairs the loader made (OBJ: faces dropped, missing .mtl, normals repaired), the
+    // first kSceneMaxKeptWarnings as "file:line: what", for the front ends to show.
+    std::vector<std::string> warnings;
+    std::size_t warningCount = 0; // all warnings, kept or not
     // The pinhole camera of `view` (vertical field of view = view.angle).
     LookAtCamera camera() const;
 };
 
+// `up` scaled by a power of two so its largest component is in [1, 2) (exact; the
+// direction is all a camera needs and cross products with it cannot overflow).
+glm::dvec3 scaledUp(const glm::dvec3& up);
+
 // Loads .nff or .obj by extension (case-insensitive). Throws SceneFileError naming the
-// file, the line and the problem; never crashes on malformed input.
+// file, the line and the problem; never crashes on malformed input. Only regular files
+// are read (a directory, FIFO or device is refused); a file with nothing to draw is an
+// error.
 SceneFile loadSceneFile(const std::string& path);
 
 // A view that frames the bounded primitives of `scene` (looking from +z, slightly

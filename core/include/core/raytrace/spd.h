@@ -5,6 +5,9 @@
 // writeNff, render them with toScene).
 #include "core/raytrace/nff.h"
 
+#include <string>
+#include <vector>
+
 namespace wb::rt {
 
 // Sphereflake of size factor 1..6: (9^(SF+1) − 1)/8 spheres (7,381 at SF 4), each
@@ -14,9 +17,28 @@ NffDocument spdBalls(int sizeFactor);
 // Recursive jacks of size factor 1..6: (8^SF − 1)/7 jacks of 3 cylinders and 6
 // spheres, 8 half-size copies per level; the SPD view (from 0 0 −8, angle 25).
 NffDocument spdJacks(int sizeFactor);
+// Gears of size factor 1..6: sf³ meshing gears of 36 teeth (faces are concave
+// 144-gons, 144 side rectangles each), every fifth transparent (kt 0.8, ior 1.1),
+// on a mirror-like ground square; 5 lights; the SPD view (from −1.1 −2.1 2.6, angle 45).
+NffDocument spdGears(int sizeFactor);
+// The other SPD databases, size factor 1..6, each with the SPD's view and lights:
+NffDocument spdTetra(int sizeFactor);   // 4^SF triangles of a recursive tetrahedron
+NffDocument spdRings(int sizeFactor);   // 5·SF(SF+1)(2SF+1) cylinders and spheres, a wall
+NffDocument spdLattice(int sizeFactor); // (SF+1)³ shiny spheres joined by 3SF(SF+1)² cylinders
+NffDocument spdShells(int sizeFactor);  // 180·2^SF + 1 overlapping spheres on a spiral
+NffDocument spdTree(int sizeFactor);    // 2^(SF+1) − 1 cones and spheres, a field square
+// 2·4^SF triangles of a fractal mountain (own Gaussian hash: the SPD's statistics, not
+// its exact heights) and 4 touching glass spheres (kt 0.9, ior 1.5).
+NffDocument spdMount(int sizeFactor);
 // Counts by the SPD formulas, for tests and the bench.
 long long spdBallsSpheres(int sizeFactor); // (9^(SF+1) − 1)/8
 long long spdJacksCount(int sizeFactor);   // (8^SF − 1)/7
+
+// The generators by name: balls, jacks, gears, tetra, rings, lattice, shells, tree, mount
+// (the SPD's teapot is not among them: it needs the Newell patch data).
+std::vector<std::string> spdSceneNames();
+// spdScene("gears", 2) == spdGears(2); std::invalid_argument for an unknown name or size.
+NffDocument spdScene(const std::string& name, int sizeFactor);
 
 // Lab 7's timing experiment: one sphere, and two spheres (one mirror) over a floor.
 NffDocument oneSphereScene();

@@ -7,6 +7,9 @@
 // with total internal reflection when the root's argument is <= 0; the ray's medium
 // decides η (entering: n_ray/n_body, leaving: n_body/n_air); colour *= exp(−atten·t)
 // in an attenuating medium; recursion stops at maxDepth or when the weight < minWeight.
+// A child's weight is parent weight × k / max(1, kr + kt) (seed 000's weight × k when
+// kr + kt <= 1), so the cut-off bounds the tree for any kr, kt (issue 12), and
+// TraceSettings::maxRaysPerSample bounds it when minWeight is 0.
 #include "core/raytrace/scene.h"
 #include "core/raytrace/shading.h"
 
@@ -19,6 +22,13 @@ struct TraceSettings {
     int maxDepth = 5;        // rays of depth >= maxDepth spawn no reflected/refracted rays
     double minWeight = 0.01; // a child ray is traced only when its weight >= minWeight (seed 000)
     double opaqueKt = 0.01; // a shadow blocker with kt below this blocks the light fully (seed 000)
+    // Reflected + transmitted rays one trace() may spawn in all (issue 12 point 3), the
+    // backstop when minWeight is 0 (lab 07's slider allows it; kr = kt = 1 then makes
+    // 2^depth rays). With minWeight 0.01 at most 100 rays a level pass the cut-off (see
+    // above), so lab 07's deepest tree (depth 20) has at most 2000 < 4096 and the budget
+    // never binds. Children past it are skipped (RayBudget), depth first, reflected
+    // before transmitted, so the image stays deterministic.
+    long maxRaysPerSample = 4096;
 };
 
 // Direction of the reflected ray: e − 2(e·n)n, renormalised.
@@ -37,7 +47,7 @@ double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& d
 // Which ray of the recursion an observer event is about.
 enum class RayKind { Primary, Reflected, Refracted };
 // Why a reflected or transmitted child ray was not traced.
-enum class SkipReason { DepthLimit, BelowWeight, TotalInternalReflection };
+enum class SkipReason { DepthLimit, BelowWeight, TotalInternalReflection, RayBudget };
 
 // Sees the recursion of Tracer::trace(ray, observer) as it happens, so a tool (lab 07's
 // ray inspector) can build the ray tree without a second copy of the rules. Events of
@@ -82,9 +92,10 @@ class Tracer {
     // The same samples into `out` (cleared first): lets the tracer reuse one buffer
     // instead of allocating a vector per hit.
     void sampleLights(const Hit& hit, std::vector<LightSample>& out) const;
-    // Π kt of the blockers met by origin + t·dir for tMin < t <= dist (dist may be inf).
+    // Π kt of the blockers met by origin + t·dir for tMin < t <= dist (dist may be inf),
+    // `self` (the flat primitive the feeler starts on, or null) not counted.
     double transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                         double dist) const;
+                         double dist, const Primitive* self = nullptr) const;
 
     // Counters for the bench and tests (relaxed atomics: cheap, thread-safe).
     mutable std::atomic<long long> primaryRays{0}, secondaryRays{0}, shadowRays{0};
@@ -92,8 +103,9 @@ class Tracer {
   private:
     // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
+    // `budget`: child rays this trace() may still spawn (TraceSettings::maxRaysPerSample).
     template <bool kObserve>
-    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer) const;
+    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget) const;
 
     const Scene& scene_;
     const ShadingModel& model_;

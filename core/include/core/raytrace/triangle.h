@@ -17,6 +17,7 @@ class Triangle : public Primitive {
     bool intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const override;
     Aabb bounds() const override;
     bool solid() const override { return closed_; }
+    bool planar() const override { return true; }
 
     glm::dvec3 v0, v1, v2;
 
