@@ -1,0 +1,3 @@
+# Lab 08: the GL hemicube against core's CPU hemicube (occlusion), goldens flat and smooth,
+# colour bleeding and smoothness properties of the picture.
+wb_test(radiosity_lab_test SOURCES radiosity_gl_hemicube_test.cpp LIBS lab08-radiosity_headless)
