@@ -1,6 +1,5 @@
 #include "core/radiosity/patch_bvh.h"
 
-#include "core/raytrace/rectangle.h"
 #include "core/raytrace/triangle.h"
 
 #include <cmath>
@@ -18,19 +17,13 @@ PatchBvh::PatchBvh(const PatchMesh& mesh) : mesh_(mesh) {
             prims_.back()->material = id;
             continue;
         }
-        // A parallelogram (c0 + c2 = c1 + c3 up to rounding) is one rt::Rectangle, anything
-        // else two triangles sharing the diagonal c0–c2 (watertight between them).
-        const glm::dvec3 gap = at(0) + at(2) - at(1) - at(3);
-        const double scale = glm::length(at(2) - at(0));
-        if (glm::length(gap) <= 1e-12 * scale) {
-            prims_.push_back(std::make_unique<rt::Rectangle>(at(0), at(1), at(3)));
-            prims_.back()->material = id;
-        } else {
-            prims_.push_back(std::make_unique<rt::Triangle>(at(0), at(1), at(2)));
-            prims_.back()->material = id;
-            prims_.push_back(std::make_unique<rt::Triangle>(at(0), at(2), at(3)));
-            prims_.back()->material = id;
-        }
+        // Two watertight triangles sharing the diagonal c0–c2 (core/raytrace's Woop et al.
+        // test: no ray slips between triangles with bitwise equal shared vertices, which the
+        // patches of one surface have; an rt::Rectangle would be cheaper but is not watertight).
+        prims_.push_back(std::make_unique<rt::Triangle>(at(0), at(1), at(2)));
+        prims_.back()->material = id;
+        prims_.push_back(std::make_unique<rt::Triangle>(at(0), at(2), at(3)));
+        prims_.back()->material = id;
     }
     rt::BvhOptions opt;
     opt.maxLeafSize = 2; // patches are cheap to test but numerous: small leaves
@@ -45,9 +38,20 @@ int PatchBvh::nearestPatch(const glm::dvec3& origin, const glm::dvec3& dir, doub
     rt::Hit hit;
     if (!bvh_->intersect(ray, tMin, tMax, hit)) return -1;
     const int id = hit.material;
+    if (glm::dot(mesh_.patches[static_cast<std::size_t>(id)].normal, dir) < 0.0) return id;
     // Back sides face the inside of a body or the outside of the room: they block, unseen.
-    if (glm::dot(mesh_.patches[static_cast<std::size_t>(id)].normal, dir) >= 0.0) return -1;
-    return id;
+    // A ray through a convex edge of a body meets the back of one face and the front of the
+    // other at the same distance; take the front one if there is one (a tie within 1e-9 t).
+    int front = -1;
+    const double t = hit.t;
+    bvh_->forEachHit(ray, t * (1.0 - 1e-9), t * (1.0 + 1e-9), [&](const rt::Hit& h) {
+        if (glm::dot(mesh_.patches[static_cast<std::size_t>(h.material)].normal, dir) < 0.0) {
+            front = h.material;
+            return false;
+        }
+        return true;
+    });
+    return front;
 }
 
 bool PatchBvh::visible(const glm::dvec3& a, const glm::dvec3& b) const {

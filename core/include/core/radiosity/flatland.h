@@ -24,9 +24,11 @@ struct Segment2 {
 // with P_i = q1q2, P_j = q3q4 seen from each other (their facing sides); exact.
 double crossedStrings(const Segment2& pi, const Segment2& pj);
 
-// Crossed strings with occluders: the strings are the shortest paths (taut around the
-// occluders' end points) instead of straight lines; exact for segment occluders that neither
-// touch P_i or P_j nor make the view empty. Returns 0 when every string is blocked.
+// Crossed strings with one occluding segment between P_i and P_j (the course's figure 15.50):
+// the light passes through two channels, beside each end of the occluder; in each, the strings
+// are taut (wrapped around that end where a straight string would pass on the wrong side) and
+// Hottel's rule gives that channel's part; the sum is the exact F. Throws for more than one
+// occluder. P_i and P_j must see each other whole (each wholly in front of the other).
 double crossedStringsOccluded(const Segment2& pi, const Segment2& pj,
                               const std::vector<Segment2>& occluders);
 

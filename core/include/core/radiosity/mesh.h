@@ -10,9 +10,9 @@
 // the room or between a box and the floor it stands on (no light leaks across
 // surfaces). Refinement leaves T-vertices (a split patch's edge midpoints lie on the
 // edge of an unsplit neighbour); they are handled, not avoided: Patch::outline lists a
-// patch's corners AND every vertex lying on its edges, in order, so drawing the outline
-// polygon (or displayTriangles) gives a conforming mesh on which Gouraud interpolation is
-// continuous and no crack shows.
+// patch's corners AND every vertex lying on its edges, in order, and displayTriangles fans
+// such a patch from an extra centre vertex through all of them, so the display mesh is
+// conforming: Gouraud interpolation is continuous and no crack shows.
 #include "core/radiosity/scene.h"
 
 #include <array>
@@ -24,6 +24,10 @@ struct Patch {
     std::array<int, 4> corners{-1, -1, -1, -1}; // vertex ids, counter-clockwise; [3] = -1 for a triangle
     int cornerCount = 4;                        // 3 or 4
     std::vector<int> outline; // corners plus T-vertices on the edges, counter-clockwise
+    // Patches with T-vertices get one extra vertex at their centroid, the apex of their display
+    // fan (so every outline vertex is a triangle corner: no T-junction, no crack); −1 otherwise.
+    // Its smoothed value is the mean of the patch's outline vertices.
+    int centreVertex = -1;
     int surface = 0;          // index into Scene::surfaces
     int level = 0;            // 0 = from the initial grid, +1 per adaptive split
     double area = 0.0;        // m²

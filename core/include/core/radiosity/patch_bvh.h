@@ -1,7 +1,7 @@
 #pragma once
 // Visibility between patches through the project's BVH (core/raytrace): every patch becomes
-// one rt::Rectangle (parallelogram patches) or two rt::Triangles, whose `material` field holds
-// the patch id. Used by the ray form factors (any-hit between two points) and by the CPU
+// one (triangle) or two (quad) watertight rt::Triangles, whose `material` field holds the
+// patch id. Used by the ray form factors (any-hit between two points) and by the CPU
 // hemicube (nearest patch along a pixel's ray).
 #include "core/radiosity/mesh.h"
 #include "core/raytrace/bvh.h"

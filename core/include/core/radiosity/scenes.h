@@ -12,6 +12,11 @@
 
 namespace wb::rad {
 
+// Spectrum -> RGB reflectance by band averages: blue = mean of the samples in [400, 500) nm,
+// green [500, 600), red [600, 700]; samples outside 400..700 are ignored. Throws if a band
+// has no sample.
+glm::dvec3 spectrumToRgbBands(const std::vector<double>& samples, double firstNm, double stepNm);
+
 Scene cornellBox();
 Scene classroom();
 Scene floorLamp();
