@@ -1,5 +1,7 @@
 #include "core/radiosity/form_factors.h"
 
+#include "core/raytrace/ray.h"
+
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -36,6 +38,53 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         ready_ = std::make_unique<std::atomic<bool>[]>(n);
         for (std::size_t i = 0; i < n; ++i) ready_[i] = false;
     }
+    const std::size_t groups = mesh.groups.size();
+    if (groups > 0 && static_cast<double>(groups) * static_cast<double>(n) <=
+                          static_cast<double>(config_.maxStoredPatches) * static_cast<double>(config_.maxStoredPatches)) {
+        groupRows_.assign(groups * n, 0.0f);
+        groupReady_ = std::make_unique<std::atomic<bool>[]>(groups);
+        for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
+    }
+}
+
+const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
+    if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size())
+        throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
+    const std::size_t n = mesh_.patches.size();
+    auto compute = [&](std::vector<float>& out) {
+        const auto t0 = Clock::now();
+        const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(g)];
+        HemicubeFrame fr;
+        fr.n = sg.normal;
+        fr.u = sg.u;
+        fr.v = glm::cross(sg.normal, sg.u);
+        fr.origin = rt::offsetRayOrigin(sg.centre, sg.normal);
+        ItemBuffer items;
+        auto cast = [&] { castItemBuffer(*bvh_, fr, table_.resolution, items, config_.threads != 1); };
+        if (config_.threads > 1) {
+            tbb::task_arena arena(config_.threads);
+            arena.execute(cast);
+        } else {
+            cast();
+        }
+        accumulate(items, table_, static_cast<int>(n), -1, out);
+        nanos_ += nanosSince(t0);
+        ++rows_;
+    };
+    if (groupRows_.empty()) {
+        compute(scratch);
+        return scratch.data();
+    }
+    float* dst = const_cast<float*>(groupRows_.data()) + static_cast<std::ptrdiff_t>(g) * static_cast<std::ptrdiff_t>(n);
+    if (!groupReady_[static_cast<std::size_t>(g)]) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!groupReady_[static_cast<std::size_t>(g)]) {
+            compute(scratch);
+            std::copy(scratch.begin(), scratch.end(), dst);
+            groupReady_[static_cast<std::size_t>(g)] = true;
+        }
+    }
+    return dst;
 }
 
 FormFactors::~FormFactors() = default;
@@ -143,7 +192,7 @@ bool FormFactors::rowReady(int i) const {
 }
 
 std::size_t FormFactors::bytes() const {
-    std::size_t b = matrix_.capacity() * sizeof(float);
+    std::size_t b = (matrix_.capacity() + groupRows_.capacity()) * sizeof(float);
     for (const auto& f : table_.faces) b += f.capacity() * sizeof(double);
     // The BVH's primitives and nodes: about 300 bytes per patch (rt::Rectangle ~200 B, node share).
     b += mesh_.patches.size() * 300;

@@ -17,6 +17,7 @@ struct PatchDesc {
     int level;
     int count; // 3 or 4
     std::array<glm::dvec2, 4> lat;
+    int group = -1; // shooting group, −1 without grouping
 };
 
 // Hard cap so a tiny maxEdge gives a clear error, not an out-of-memory (~1 KB per patch with F
@@ -81,6 +82,7 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
         p.centre = wsum > 0.0 ? c / wsum : poly[0];
         p.reflectivity = s.reflectivity;
         p.emission = s.emission;
+        p.group = d.group;
         maxLevel = std::max(maxLevel, d.level);
         mesh.patches.push_back(std::move(p));
     }
@@ -111,6 +113,32 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
             mesh.vertexLattice.push_back(l);
         }
     }
+    // Shooting groups: numbered densely (a triangle's grid leaves some coarse cells empty),
+    // then members, area, centroid; the frame comes from the surface.
+    std::map<int, int> dense;
+    for (const Patch& p : mesh.patches)
+        if (p.group >= 0) dense.emplace(p.group, 0);
+    int groups = 0;
+    for (auto& [id, to] : dense) to = groups++;
+    for (Patch& p : mesh.patches)
+        if (p.group >= 0) p.group = dense[p.group];
+    mesh.groups.assign(static_cast<std::size_t>(groups), ShooterGroup{});
+    for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& p = mesh.patches[i];
+        if (p.group < 0) continue;
+        ShooterGroup& g = mesh.groups[static_cast<std::size_t>(p.group)];
+        g.members.push_back(static_cast<int>(i));
+        g.area += p.area;
+        g.centre += p.area * p.centre;
+        g.surface = p.surface;
+        g.normal = p.normal;
+    }
+    for (ShooterGroup& g : mesh.groups) {
+        if (g.area > 0.0) g.centre /= g.area;
+        const auto& c = mesh.surfaces[static_cast<std::size_t>(g.surface)].vertices;
+        const glm::dvec3 e = c[1] - c[0];
+        g.u = glm::normalize(e - glm::dot(e, g.normal) * g.normal);
+    }
 }
 
 } // namespace
@@ -137,39 +165,55 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
     PatchMesh mesh;
     mesh.surfaces = scene.surfaces;
     mesh.closed = scene.closed;
+    if (!(config.shooterEdge >= 0.0) || !std::isfinite(config.shooterEdge))
+        throw std::invalid_argument("radiosity meshing: shooterEdge must be >= 0");
+    const bool grouped = config.shooterEdge > config.maxEdge;
     std::vector<PatchDesc> descs;
     double total = 0.0;
+    int groupBase = 0;
     for (std::size_t si = 0; si < scene.surfaces.size(); ++si) {
         const auto& c = scene.surfaces[si].vertices;
         const int surface = static_cast<int>(si);
-        auto cells = [&](double len) { return std::max(1.0, std::ceil(len / config.maxEdge - 1e-9)); };
+        auto cells = [&](double len, double edge) { return std::max(1.0, std::ceil(len / edge - 1e-9)); };
+        // Fine cells per coarse (shooting) cell along each direction: the fine grid is the
+        // coarse one subdivided, so every element lies in one shooting patch.
+        auto counts = [&](double len, int& coarse, int& per) {
+            const double cc = grouped ? cells(len, config.shooterEdge) : 1.0;
+            const double fine = cells(len, config.maxEdge);
+            per = static_cast<int>(std::ceil(fine / cc - 1e-9));
+            coarse = static_cast<int>(cc);
+        };
+        int cu = 1, mu = 1, cv = 1, mv = 1;
         if (c.size() == 3) {
             const double longest = std::max({glm::length(c[1] - c[0]), glm::length(c[2] - c[1]),
                                              glm::length(c[0] - c[2])});
-            const double n = cells(longest);
-            total += n * n;
-            if (total > kMaxPatches) break;
-            mesh.grid.emplace_back(static_cast<int>(n), static_cast<int>(n));
+            counts(longest, cu, mu);
+            cv = cu;
+            mv = mu;
         } else {
-            const double nu = cells(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])));
-            const double nv = cells(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])));
-            total += nu * nv;
-            if (total > kMaxPatches) break;
-            mesh.grid.emplace_back(static_cast<int>(nu), static_cast<int>(nv));
+            counts(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])), cu, mu);
+            counts(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])), cv, mv);
         }
+        const double nu = double(cu) * mu, nv = double(cv) * mv;
+        total += nu * nv;
+        if (total > kMaxPatches) break;
+        mesh.grid.emplace_back(static_cast<int>(nu), static_cast<int>(nv));
         const glm::ivec2 g = mesh.grid.back();
         const double S = kLatticeScale;
+        auto groupOf = [&](int i, int j) { return grouped ? groupBase + (j / mv) * cu + i / mu : -1; };
         if (c.size() == 3) {
             for (int j = 0; j < g.x; ++j)
                 for (int i = 0; i + j < g.x; ++i) {
                     descs.push_back({surface, 0, 3,
                                      {glm::dvec2(i * S, j * S), glm::dvec2((i + 1) * S, j * S),
-                                      glm::dvec2(i * S, (j + 1) * S), glm::dvec2(0.0)}});
+                                      glm::dvec2(i * S, (j + 1) * S), glm::dvec2(0.0)},
+                                     groupOf(i, j)});
                     if (i + j + 1 < g.x)
                         descs.push_back({surface, 0, 3,
                                          {glm::dvec2((i + 1) * S, j * S),
                                           glm::dvec2((i + 1) * S, (j + 1) * S),
-                                          glm::dvec2(i * S, (j + 1) * S), glm::dvec2(0.0)}});
+                                          glm::dvec2(i * S, (j + 1) * S), glm::dvec2(0.0)},
+                                         groupOf(i, j)});
                 }
         } else {
             for (int j = 0; j < g.y; ++j)
@@ -177,8 +221,10 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
                     descs.push_back({surface, 0, 4,
                                      {glm::dvec2(i * S, j * S), glm::dvec2((i + 1) * S, j * S),
                                       glm::dvec2((i + 1) * S, (j + 1) * S),
-                                      glm::dvec2(i * S, (j + 1) * S)}});
+                                      glm::dvec2(i * S, (j + 1) * S)},
+                                     groupOf(i, j)});
         }
+        if (grouped) groupBase += cu * cv;
     }
     if (total > kMaxPatches)
         throw std::invalid_argument("radiosity meshing: maxEdge " + std::to_string(config.maxEdge) +
@@ -234,7 +280,7 @@ int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const Refi
         const Patch& p = mesh.patches[i];
         const auto& L = p.lattice;
         if (!split[i]) {
-            descs.push_back({p.surface, p.level, p.cornerCount, L});
+            descs.push_back({p.surface, p.level, p.cornerCount, L, p.group});
             parents.push_back(static_cast<int>(i));
             continue;
         }
@@ -243,18 +289,18 @@ int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const Refi
         if (p.cornerCount == 3) {
             const glm::dvec2 ab = 0.5 * (L[0] + L[1]), bc = 0.5 * (L[1] + L[2]), ca = 0.5 * (L[2] + L[0]);
             const glm::dvec2 z(0.0);
-            descs.push_back({p.surface, lv, 3, {L[0], ab, ca, z}});
-            descs.push_back({p.surface, lv, 3, {ab, L[1], bc, z}});
-            descs.push_back({p.surface, lv, 3, {ca, bc, L[2], z}});
-            descs.push_back({p.surface, lv, 3, {ab, bc, ca, z}});
+            descs.push_back({p.surface, lv, 3, {L[0], ab, ca, z}, p.group});
+            descs.push_back({p.surface, lv, 3, {ab, L[1], bc, z}, p.group});
+            descs.push_back({p.surface, lv, 3, {ca, bc, L[2], z}, p.group});
+            descs.push_back({p.surface, lv, 3, {ab, bc, ca, z}, p.group});
         } else {
             const glm::dvec2 m01 = 0.5 * (L[0] + L[1]), m12 = 0.5 * (L[1] + L[2]),
                              m23 = 0.5 * (L[2] + L[3]), m30 = 0.5 * (L[3] + L[0]),
                              mc = 0.25 * (L[0] + L[1] + L[2] + L[3]);
-            descs.push_back({p.surface, lv, 4, {L[0], m01, mc, m30}});
-            descs.push_back({p.surface, lv, 4, {m01, L[1], m12, mc}});
-            descs.push_back({p.surface, lv, 4, {mc, m12, L[2], m23}});
-            descs.push_back({p.surface, lv, 4, {m30, mc, m23, L[3]}});
+            descs.push_back({p.surface, lv, 4, {L[0], m01, mc, m30}, p.group});
+            descs.push_back({p.surface, lv, 4, {m01, L[1], m12, mc}, p.group});
+            descs.push_back({p.surface, lv, 4, {mc, m12, L[2], m23}, p.group});
+            descs.push_back({p.surface, lv, 4, {m30, mc, m23, L[3]}, p.group});
         }
         for (int c = 0; c < 4; ++c) parents.push_back(static_cast<int>(i));
     }

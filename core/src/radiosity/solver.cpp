@@ -83,6 +83,48 @@ double Solver::step() {
         break;
     }
     case SolverKind::Progressive: {
+        if (config_.groupShooting && !mesh_.groups.empty()) {
+            // 1. The group with the most unshot power.
+            int best = -1;
+            double bestPower = 0.0;
+            for (std::size_t g = 0; g < mesh_.groups.size(); ++g) {
+                double pw = 0.0;
+                for (int e : mesh_.groups[g].members)
+                    pw += mesh_.patches[static_cast<std::size_t>(e)].area * sum3(dB_[static_cast<std::size_t>(e)]);
+                if (pw > bestPower) {
+                    bestPower = pw;
+                    best = static_cast<int>(g);
+                }
+            }
+            if (best < 0) {
+                residual_ = 0.0;
+                break;
+            }
+            // 2. Pool its members' unshot radiosity (area average) and shoot it from the centroid:
+            //    j receives R_j ΔB_g F_gj A_g/A_j.
+            const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(best)];
+            glm::dvec3 pooled(0.0);
+            for (int e : sg.members) {
+                pooled += mesh_.patches[static_cast<std::size_t>(e)].area * dB_[static_cast<std::size_t>(e)];
+                dB_[static_cast<std::size_t>(e)] = glm::dvec3(0.0);
+            }
+            const glm::dvec3 shot = pooled / sg.area;
+            const float* f = ff_.shooterRow(best, scratch_);
+            double unshot = 0.0;
+            for (int j = 0; j < n; ++j) {
+                const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
+                if (f[j] != 0.0f) {
+                    const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * sg.area / p.area);
+                    B_[static_cast<std::size_t>(j)] += add;
+                    dB_[static_cast<std::size_t>(j)] += add;
+                }
+                unshot += p.area * sum3(dB_[static_cast<std::size_t>(j)]);
+            }
+            lastGroup_ = best;
+            lastShooter_ = sg.members.front();
+            residual_ = unshot / emittedSum_;
+            break;
+        }
         // 1. The shooter: most unshot power A·ΔB (channels summed).
         int s = -1;
         double best = 0.0;

@@ -50,6 +50,10 @@ class FormFactors {
     const float* row(int i, std::vector<float>& scratch) const;
     // Stored value (computes the row if needed). Throws std::logic_error when not stored.
     float at(int i, int j) const;
+    // Row of shooting group g (mesh.groups): F from the group's centroid to every patch by the
+    // CPU hemicube at hemicubeResolution, whatever the method (a group is not a patch). Cached
+    // for all groups when groups × n <= maxStoredPatches². Thread-safe.
+    const float* shooterRow(int g, std::vector<float>& scratch) const;
     bool rowReady(int i) const;
 
     std::size_t bytes() const;          // memory held for F (and the BVH's primitives)
@@ -68,6 +72,8 @@ class FormFactors {
     DeltaFormFactors table_;
     std::vector<float> matrix_;                       // n × n when stored
     std::unique_ptr<std::atomic<bool>[]> ready_;      // row computed (stored mode)
+    std::vector<float> groupRows_;                    // groups × n when cached
+    std::unique_ptr<std::atomic<bool>[]> groupReady_;
     mutable std::mutex mutex_;                        // guards lazy row computation
     mutable std::atomic<long long> nanos_{0};
     mutable std::atomic<long long> rows_{0};

@@ -29,6 +29,7 @@ struct Patch {
     // Its smoothed value is the mean of the patch's outline vertices.
     int centreVertex = -1;
     int surface = 0;          // index into Scene::surfaces
+    int group = -1;           // shooting group (PatchMesh::groups), −1 when not grouped
     int level = 0;            // 0 = from the initial grid, +1 per adaptive split
     double area = 0.0;        // m²
     glm::dvec3 centre{0.0};   // centroid (area-weighted), on the patch
@@ -42,6 +43,18 @@ struct Patch {
     std::array<glm::dvec2, 4> lattice{};
 };
 
+// A shooting patch of progressive refinement (Cohen, Greenberg, Immel, Brock 1986 "patches and
+// elements"; Cohen et al. 1988 shoot from patches and receive at elements): a block of the fine
+// patches (elements) of one surface. It shoots their pooled unshot power from its centroid.
+struct ShooterGroup {
+    std::vector<int> members; // patch ids
+    int surface = 0;
+    double area = 0.0;        // Σ member areas
+    glm::dvec3 centre{0.0};   // area-weighted centroid (on the surface)
+    glm::dvec3 normal{0.0};   // the surface's normal
+    glm::dvec3 u{1, 0, 0};    // hemicube axis: the surface's first edge, in its plane
+};
+
 // Lattice units per initial grid cell: 2^12, so up to 12 adaptive splits stay on the lattice.
 constexpr double kLatticeScale = 4096.0;
 
@@ -53,6 +66,7 @@ struct PatchMesh {
     std::vector<Patch> patches;
     std::vector<Surface> surfaces; // copy of the scene's surfaces (patches refer to them)
     bool closed = false;           // copy of Scene::closed
+    std::vector<ShooterGroup> groups; // empty unless meshed with shooterEdge > maxEdge
 
     std::vector<glm::dvec3> cornersOf(int patch) const; // corner positions
     double totalArea() const;
@@ -60,6 +74,9 @@ struct PatchMesh {
 
 struct MeshConfig {
     double maxEdge = 0.1; // metres: no patch edge longer than this after meshing (> 0)
+    // > maxEdge: also group the patches into shooting patches of about this edge (the fine grid
+    // is the coarse one subdivided); progressive refinement then shoots per group. 0: no groups.
+    double shooterEdge = 0.0;
 };
 
 // Grid-meshes every surface. Validates the scene first (throws std::invalid_argument).
@@ -77,6 +94,7 @@ struct RefineConfig {
 // Adaptive refinement: splits (4-way, at edge midpoints) the patches whose radiosity `B`
 // (one RGB value per patch) jumps against a neighbour, returning the new mesh and filling
 // `parentOf` (new patch id -> old patch id) so a solver can start from the old solution.
+// Children stay in their parent's shooting group.
 // Outlines are recomputed (T-vertices). Returns the number of patches split.
 int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const RefineConfig& config,
                    std::vector<int>* parentOf = nullptr);

@@ -23,6 +23,10 @@ enum class SolverKind { Jacobi, GaussSeidel, Progressive };
 struct SolverConfig {
     SolverKind kind = SolverKind::Progressive;
     bool ambient = true;       // progressive: add the ambient term to displayRadiosity()
+    // Progressive on a mesh with shooting groups (MeshConfig::shooterEdge): shoot a group's pooled
+    // unshot power from its centroid (FormFactors::shooterRow), receive at every patch. Rows of
+    // groups are few and cached, so later shots cost O(n). false: every patch shoots itself.
+    bool groupShooting = true;
     double tolerance = 1e-6;   // run(): stop when residual() < tolerance
     int maxSteps = 1000000;    // run(): stop after this many steps (sweeps or shots)
 };
@@ -44,7 +48,9 @@ class Solver {
     const std::vector<glm::dvec3>& radiosity() const { return B_; }   // B per patch
     std::vector<glm::dvec3> displayRadiosity() const; // B (+ ambient when progressive & on)
     const std::vector<glm::dvec3>& unshot() const { return dB_; }   // progressive ΔB
-    int lastShooter() const { return lastShooter_; }                 // progressive, −1 before
+    int lastShooter() const { return lastShooter_; }  // progressive: last patch shot (a group's
+                                                      // first member), −1 before
+    int lastGroup() const { return lastGroup_; }      // progressive with groups, else −1
     // Power balance: emitted Σ A·E and absorbed Σ A·(1−R)·B_in (per channel, W).
     glm::dvec3 emittedPower() const;
     glm::dvec3 absorbedPower() const;
@@ -62,6 +68,7 @@ class Solver {
     double residual_ = 1.0;
     int steps_ = 0;
     int lastShooter_ = -1;
+    int lastGroup_ = -1;
 };
 
 } // namespace wb::rad
