@@ -4,7 +4,10 @@
 
 namespace wb {
 
-glm::ivec2 unfoldedPosition(int res, rad::HemicubeFace f, int col, int row) {
+namespace {
+
+// The cross with u to the right and v up (core's column and row directions).
+glm::ivec2 unfoldedCore(int res, rad::HemicubeFace f, int col, int row) {
     const int h = res / 2, last = 2 * res - 1;
     // Top pixel (col, row) looks along s·u + t·v + n: u to the right, v up, centred.
     // A side's row 0 is its horizon: the outer edge of the cross; its last row touches
@@ -16,6 +19,14 @@ glm::ivec2 unfoldedPosition(int res, rad::HemicubeFace f, int col, int row) {
     case rad::HemicubeFace::PosU: return {last - row, h + (res - 1 - col)}; // u − s·v + z·n
     default: return {row, h + col};                                        // −u + s·v + z·n
     }
+}
+
+} // namespace
+
+glm::ivec2 unfoldedPosition(int res, rad::HemicubeFace f, int col, int row) {
+    // Mirrored: as the patch sees it, looking along n with v up, right is n × v = −u.
+    const glm::ivec2 p = unfoldedCore(res, f, col, row);
+    return {2 * res - 1 - p.x, p.y};
 }
 
 Image unfoldHemicube(const rad::ItemBuffer& items, const std::vector<glm::vec3>& patchColour,

@@ -18,7 +18,8 @@ Image unfoldHemicube(const rad::ItemBuffer& items, const std::vector<glm::vec3>&
                      const glm::vec3& background);
 
 // Where pixel (col, row) of face f lands in the unfolded picture, as (X, Y) with X to the
-// right and Y UP (0..2·res−1), following core's face layout. Exposed for the tests.
+// right and Y UP (0..2·res−1): the view from the patch looking along its normal n with v
+// up, so X runs along −u (n × v) and the +U face is folded out on the left.
 glm::ivec2 unfoldedPosition(int res, rad::HemicubeFace f, int col, int row);
 
 } // namespace wb

@@ -180,16 +180,26 @@ class RadiosityLab : public Lab {
 
     void init() override {
         loadScene(s.sceneName, patchSizeOption_ > 0 ? patchSizeOption_ : -1.0);
+#if !defined(WB_HEADLESS)
+        // In a window the solution builds up at once (any key stops it, r goes on); headless
+        // renders solve only when their keys say so (r, space), so a script controls the state.
+        startRun();
+#endif
     }
 
     ~RadiosityLab() override { stopRun(); }
 
     bool key(int k) override {
+#if defined(WB_HEADLESS)
+        // Headless, keys are a script (--keys "r s"): a run finishes before the next key.
+        finishRun();
+#else
         // Any key stops a run in progress; r and space do nothing else then.
         if (running()) {
             stopRun();
             if (k == 'r' || k == ' ') return true;
         }
+#endif
         switch (k) {
         case '1':
         case '2':
@@ -258,6 +268,12 @@ class RadiosityLab : public Lab {
         std::vector<int> out;
         if (model_)
             for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.surface);
+        return out;
+    }
+    std::vector<glm::dvec3> patchCentres() const {
+        std::vector<glm::dvec3> out;
+        if (model_)
+            for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.centre);
         return out;
     }
     std::vector<std::string> surfaceNames() const {
@@ -401,8 +417,21 @@ class RadiosityLab : public Lab {
     void rebuildSolver() {
         stopRun();
         rad::FormFactorConfig fc;
-        fc.method = s.method == FfMethod::Rays ? rad::FormFactorMethod::Rays
-                                               : rad::FormFactorMethod::Hemicube;
+        fc.method = s.method == FfMethod::Rays          ? rad::FormFactorMethod::Rays
+                    : s.method == FfMethod::CpuHemicube ? rad::FormFactorMethod::Hemicube
+                                                        : rad::FormFactorMethod::External;
+        if (s.method == FfMethod::GlHemicube) {
+            // Rows by OpenGL: only on this (the GL) thread, so runs step in draw() (see startRun).
+            fc.rowProvider = [this](int i, std::vector<float>& out) {
+                std::string err;
+                const rad::HemicubeFrame fr = rad::hemicubeFrame(model_->mesh, i);
+                if (!glHemicube_.render(fr, s.hemicubeRes, GlHemicube::kNearFraction * sceneRadius_,
+                                        providerItems_, err))
+                    throw std::runtime_error(err);
+                rad::accumulate(providerItems_, model_->ff->deltaTable(),
+                                int(model_->mesh.patches.size()), i, out);
+            };
+        }
         fc.rays.samples = s.raySamples;
         fc.hemicubeResolution = s.hemicubeRes;
         fc.threads = s.threads;
@@ -423,7 +452,11 @@ class RadiosityLab : public Lab {
     void stepOnce() {
         if (!model_) return;
         const auto t0 = std::chrono::steady_clock::now();
-        model_->solver->step();
+        try {
+            model_->solver->step();
+        } catch (const std::exception& e) {
+            message_ = e.what();
+        }
         lastStepSeconds_ = secondsSince(t0);
         publish();
     }
@@ -434,13 +467,24 @@ class RadiosityLab : public Lab {
         running_ = true;
         runStart_ = std::chrono::steady_clock::now();
         runSeconds_ = 0;
+        if (s.method == FfMethod::GlHemicube) {
+            // GL rows need the GL thread: draw() takes steps for ~30 ms per frame instead.
+            mainThreadRun_ = true;
+            return;
+        }
         rad::Solver* solver = model_->solver.get();
         const double tol = s.tolerance;
         worker_ = std::thread([this, solver, tol] {
             auto lastPublish = std::chrono::steady_clock::now();
             while (!cancel_.load() && solver->residual() >= tol &&
                    solver->steps() < solver->config().maxSteps) {
-                solver->step();
+                try {
+                    solver->step();
+                } catch (const std::exception& e) {
+                    std::lock_guard<std::mutex> lock(snapMutex_);
+                    workerError_ = e.what();
+                    break;
+                }
                 // At most ~30 snapshots a second: copying B per shot would dominate at 10k patches.
                 if (secondsSince(lastPublish) > 0.033) {
                     publish();
@@ -456,7 +500,53 @@ class RadiosityLab : public Lab {
     void stopRun() {
         cancel_ = true;
         if (worker_.joinable()) worker_.join();
+        if (mainThreadRun_) runSeconds_ = secondsSince(runStart_);
+        mainThreadRun_ = false;
         running_ = false;
+    }
+
+    // Headless: one line per solution state drawn (the command-line front end's report).
+    void printSummary() {
+        const Snapshot snap = snapshot();
+        if (snap.version == printedVersion_) return;
+        printedVersion_ = snap.version;
+        const rad::FormFactors& ff = *model_->ff;
+        const char* methods[] = {"rays", "CPU hemicube", "GL hemicube"};
+        std::printf("%s: %zu patches, %s, %d steps, residual %.2e, form factors %.2f s (%lld rows, "
+                    "%.1f MiB), last run %.2f s\n",
+                    model_->scene.name.c_str(), model_->mesh.patches.size(),
+                    methods[int(s.method)], snap.steps, snap.residual, ff.seconds(),
+                    ff.rowsComputed(), double(ff.bytes()) / (1024.0 * 1024.0), runSeconds_.load());
+        std::fflush(stdout);
+    }
+
+    // Waits for a run to end by itself (headless scripts).
+    void finishRun() {
+        if (worker_.joinable()) worker_.join();
+        while (mainThreadRun_) stepOnMainThread(true);
+        running_ = false;
+    }
+
+    // The GL method's run: steps until the frame's time budget is spent (headless: to the end).
+    void stepOnMainThread(bool headless) {
+        if (!mainThreadRun_ || !model_) return;
+        rad::Solver& sol = *model_->solver;
+        const auto t0 = std::chrono::steady_clock::now();
+        try {
+            while (sol.residual() >= s.tolerance && sol.steps() < sol.config().maxSteps &&
+                   (headless || secondsSince(t0) < 0.03))
+                sol.step();
+        } catch (const std::exception& e) {
+            message_ = e.what();
+            mainThreadRun_ = false;
+        }
+        if (sol.residual() < s.tolerance || sol.steps() >= sol.config().maxSteps)
+            mainThreadRun_ = false;
+        publish();
+        if (!mainThreadRun_) {
+            runSeconds_ = secondsSince(runStart_);
+            running_ = false;
+        }
     }
 
     bool running() const { return running_.load(); }
@@ -500,6 +590,8 @@ class RadiosityLab : public Lab {
             version = snapshot_.version;
             if (version == coloursVersion_ && !coloursDirty_) return;
             B = snapshot_.B;
+            if (!workerError_.empty()) message_ = std::move(workerError_);
+            workerError_.clear();
             history_ = snapshot_.history;
             steps_ = snapshot_.steps;
             residual_ = snapshot_.residual;
@@ -544,8 +636,7 @@ class RadiosityLab : public Lab {
                     selected_ = -1;
                     return;
                 }
-                rad::accumulate(selectedItems_, rad::deltaFormFactors(s.hemicubeRes), n, selected_,
-                                selectedRow_);
+                rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
                 selectedSource_ = "GL hemicube";
             } else {
                 rad::castItemBuffer(ff.bvh(), frame, s.hemicubeRes, selectedItems_);
@@ -592,11 +683,15 @@ class RadiosityLab : public Lab {
     // Solving.
     std::thread worker_;
     std::atomic<bool> cancel_{false}, running_{false};
+    bool mainThreadRun_ = false;    // the GL method's run, stepped in draw()
+    rad::ItemBuffer providerItems_; // the GL row provider's item buffer
     std::chrono::steady_clock::time_point runStart_;
     std::atomic<double> runSeconds_{0};
     double lastStepSeconds_ = 0;
     mutable std::mutex snapMutex_;
     Snapshot snapshot_;
+    std::string workerError_; // a step's exception on the worker (guarded by snapMutex_)
+    uint64_t printedVersion_ = 0; // headless summary printed for this snapshot
 
     // Display.
     std::vector<glm::vec3> patchColour_;
@@ -638,7 +733,7 @@ void RadiosityLab::setupCamera(const View& view) const {
                    dist + 2 * sceneRadius_);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    const glm::dvec3 u2 = glm::normalize(glm::cross(right, d));
+    const glm::dvec3 u2 = glm::normalize(glm::cross(d, right));
     gluLookAt(eye.x, eye.y, eye.z, sc.target.x, sc.target.y, sc.target.z, u2.x, u2.y, u2.z);
 }
 
@@ -660,10 +755,11 @@ void RadiosityLab::draw(const View& view) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!model_) return;
     // Headless: a run started by the replayed keys is waited for (busy() until done).
-    if (view.headless && worker_.joinable()) {
-        worker_.join();
-        running_ = false;
+    if (view.headless) {
+        finishRun();
+        printSummary();
     }
+    stepOnMainThread(view.headless);
     updateColours();
     setupCamera(view);
     if (pendingClick_) {
@@ -681,7 +777,9 @@ void RadiosityLab::draw(const View& view) {
     glDisable(GL_LIGHTING);
     glEnable(GL_POLYGON_OFFSET_FILL); // outlines drawn on the faces win the depth test
     glPolygonOffset(1.0f, 1.0f);
-    if (selected_ >= 0 && !selectedRow_.empty()) {
+    if (s.showItems) {
+        view_.drawItems(); // patch id + 1 as 24-bit RGB: what the GL hemicube draws
+    } else if (selected_ >= 0 && !selectedRow_.empty()) {
         // The form-factor row as false colour: log10 F over four decades below the row's max.
         std::vector<glm::vec3> c(selectedRow_.size());
         const double top = std::log10(std::max(selectedRowMax_, 1e-30));
@@ -695,6 +793,7 @@ void RadiosityLab::draw(const View& view) {
         view_.draw(s.smooth);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
+    if (s.showItems) return;
     if (s.outlines) view_.drawOutlines(glm::vec3(0.0f));
     if (selected_ >= 0) view_.drawPatchOutline(selected_, glm::vec3(0.2f, 1.0f, 0.3f), 3.0f);
     if (selected_ >= 0 && selectedItems_.resolution > 0) drawOverlay(view);
@@ -773,8 +872,9 @@ void RadiosityLab::gui() {
     ImGui::RadioButton("3 GL", &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::GlHemicube)
-        ImGui::TextWrapped("GL hemicube: the clicked patch's row and picture come from OpenGL; "
-                           "the solve uses the CPU hemicube's rows.");
+        ImGui::TextWrapped("GL rows are drawn on the GL thread: a run steps between frames. "
+                           "Depth: %s.",
+                           glHemicube_.reversedDepth() ? "reversed float" : "float, far plane");
     ImGui::Text("FF time %.3f s, %lld rows", ff.seconds(), ff.rowsComputed());
     ImGui::Text("F memory %.1f MiB (%s)", double(ff.bytes()) / (1024.0 * 1024.0),
                 ff.stored() ? "stored" : "rows on demand");
@@ -819,6 +919,7 @@ void RadiosityLab::gui() {
     if (ImGui::Checkbox("s smooth", &s.smooth)) coloursDirty_ = true;
     ImGui::SameLine();
     ImGui::Checkbox("p outlines", &s.outlines);
+    ImGui::Checkbox("item colours (hemicube's view)", &s.showItems);
     if (ImGui::SliderFloat("exposure", &s.exposure, 0.1f, 10.0f, "%.2f",
                            ImGuiSliderFlags_Logarithmic))
         coloursDirty_ = true;
@@ -873,6 +974,9 @@ const rad::ItemBuffer& radiositySelectedItems(const Lab& lab) {
 void radiositySelect(Lab& lab, int patch) { static_cast<RadiosityLab&>(lab).select(patch); }
 std::vector<int> radiosityPatchSurfaces(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).patchSurfaces();
+}
+std::vector<glm::dvec3> radiosityPatchCentres(const Lab& lab) {
+    return static_cast<const RadiosityLab&>(lab).patchCentres();
 }
 std::vector<std::string> radiositySurfaceNames(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).surfaceNames();
