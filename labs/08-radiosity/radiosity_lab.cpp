@@ -742,6 +742,8 @@ int RadiosityLab::pick(const View& view, int x, int y) {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE); // as drawn: the front sides
+    glCullFace(GL_BACK);
     view_.drawItems();
     uint8_t px[4] = {};
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -773,7 +775,12 @@ void RadiosityLab::draw(const View& view) {
     updateSelection();
 
     glEnable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
+    // Patches are one-sided (they emit and receive on the front): back sides are not drawn.
+    // Besides being right, this keeps the near and far faces of thin bodies (the classroom's
+    // table panels) from fighting once polygon offset pushes the faces back at grazing angles.
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    glFrontFace(GL_CCW);
     glDisable(GL_LIGHTING);
     glEnable(GL_POLYGON_OFFSET_FILL); // outlines drawn on the faces win the depth test
     glPolygonOffset(1.0f, 1.0f);
@@ -830,6 +837,7 @@ void RadiosityLab::drawOverlay(const View& view) {
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
     glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
     glColor3f(0.2f, 1.0f, 0.3f);
     glBegin(GL_LINE_LOOP); // frame
     glVertex2i(3, 3);
