@@ -34,7 +34,8 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
     table_ = deltaFormFactors(config_.hemicubeResolution, config_.exactPixels);
     bvh_ = std::make_unique<PatchBvh>(mesh);
     if (n <= config_.maxStoredPatches) {
-        matrix_.assign(n * n, 0.0f);
+        store_ = true; // the n² floats are allocated when the first row is stored: progressive
+                       // refinement with shooting groups never needs them
         ready_ = std::make_unique<std::atomic<bool>[]>(n);
         for (std::size_t i = 0; i < n; ++i) ready_[i] = false;
     }
@@ -75,7 +76,7 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         compute(scratch);
         return scratch.data();
     }
-    float* dst = const_cast<float*>(groupRows_.data()) + static_cast<std::ptrdiff_t>(g) * static_cast<std::ptrdiff_t>(n);
+    float* dst = groupRows_.data() + static_cast<std::ptrdiff_t>(g) * static_cast<std::ptrdiff_t>(n);
     if (!groupReady_[static_cast<std::size_t>(g)]) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!groupReady_[static_cast<std::size_t>(g)]) {
@@ -90,7 +91,13 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
 FormFactors::~FormFactors() = default;
 
 int FormFactors::size() const { return static_cast<int>(mesh_.patches.size()); }
-bool FormFactors::stored() const { return !matrix_.empty(); }
+bool FormFactors::stored() const { return store_; }
+
+float* FormFactors::storedRow(int i) const {
+    auto& m = matrix_;
+    if (m.empty()) m.assign(mesh_.patches.size() * mesh_.patches.size(), 0.0f);
+    return m.data() + static_cast<std::ptrdiff_t>(i) * size();
+}
 
 void FormFactors::computeRow(int i, std::vector<float>& out) const {
     const auto t0 = Clock::now();
@@ -117,6 +124,10 @@ void FormFactors::computeRow(int i, std::vector<float>& out) const {
 void FormFactors::computeAll() {
     if (!stored()) return;
     const int n = size();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        storedRow(0); // allocate before the parallel writers
+    }
     const auto t0 = Clock::now();
     const long long before = nanos_.load();
     auto one = [&](int i) {
@@ -162,10 +173,10 @@ const float* FormFactors::row(int i, std::vector<float>& scratch) const {
         }
         return scratch.data();
     }
-    float* dst = const_cast<float*>(matrix_.data()) + static_cast<std::ptrdiff_t>(i) * size();
     if (!ready_[static_cast<std::size_t>(i)]) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!ready_[static_cast<std::size_t>(i)]) {
+            float* dst = storedRow(i);
             if (config_.threads > 1 && config_.method == FormFactorMethod::Hemicube) {
                 tbb::task_arena arena(config_.threads);
                 arena.execute([&] { computeRow(i, scratch); });
@@ -176,7 +187,7 @@ const float* FormFactors::row(int i, std::vector<float>& scratch) const {
             ready_[static_cast<std::size_t>(i)] = true;
         }
     }
-    return dst;
+    return matrix_.data() + static_cast<std::ptrdiff_t>(i) * size();
 }
 
 float FormFactors::at(int i, int j) const {

@@ -175,29 +175,30 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
         const auto& c = scene.surfaces[si].vertices;
         const int surface = static_cast<int>(si);
         auto cells = [&](double len, double edge) { return std::max(1.0, std::ceil(len / edge - 1e-9)); };
-        // Fine cells per coarse (shooting) cell along each direction: the fine grid is the
-        // coarse one subdivided, so every element lies in one shooting patch.
-        auto counts = [&](double len, int& coarse, int& per) {
-            const double cc = grouped ? cells(len, config.shooterEdge) : 1.0;
-            const double fine = cells(len, config.maxEdge);
-            per = static_cast<int>(std::ceil(fine / cc - 1e-9));
-            coarse = static_cast<int>(cc);
+        // The fine grid depends on maxEdge only (so meshes with and without groups, or with
+        // different group sizes, have the same patches); a shooting group is a block of `per`
+        // fine cells along each direction, `per` = how many fine cells fit in shooterEdge.
+        auto counts = [&](double len, int& fine, int& coarse, int& per) {
+            fine = static_cast<int>(cells(len, config.maxEdge));
+            per = grouped ? std::max(1, static_cast<int>(std::floor(config.shooterEdge / (len / fine) + 1e-9))) : 1;
+            coarse = (fine + per - 1) / per;
         };
-        int cu = 1, mu = 1, cv = 1, mv = 1;
+        int fu = 1, cu = 1, mu = 1, fv = 1, cv = 1, mv = 1;
         if (c.size() == 3) {
             const double longest = std::max({glm::length(c[1] - c[0]), glm::length(c[2] - c[1]),
                                              glm::length(c[0] - c[2])});
-            counts(longest, cu, mu);
+            counts(longest, fu, cu, mu);
+            fv = fu;
             cv = cu;
             mv = mu;
         } else {
-            counts(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])), cu, mu);
-            counts(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])), cv, mv);
+            counts(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])), fu, cu, mu);
+            counts(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])), fv, cv, mv);
         }
-        const double nu = double(cu) * mu, nv = double(cv) * mv;
+        const double nu = fu, nv = fv;
         total += nu * nv;
         if (total > kMaxPatches) break;
-        mesh.grid.emplace_back(static_cast<int>(nu), static_cast<int>(nv));
+        mesh.grid.emplace_back(fu, fv);
         const glm::ivec2 g = mesh.grid.back();
         const double S = kLatticeScale;
         auto groupOf = [&](int i, int j) { return grouped ? groupBase + (j / mv) * cu + i / mu : -1; };

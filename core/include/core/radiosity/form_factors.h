@@ -66,13 +66,15 @@ class FormFactors {
   private:
     void computeRow(int i, std::vector<float>& out) const;
 
+    float* storedRow(int i) const; // allocates the matrix on first use (under mutex_)
     const PatchMesh& mesh_;
     FormFactorConfig config_;
     std::unique_ptr<PatchBvh> bvh_;
     DeltaFormFactors table_;
-    std::vector<float> matrix_;                       // n × n when stored
+    bool store_ = false;                              // n <= maxStoredPatches
+    mutable std::vector<float> matrix_;               // n × n, allocated at the first stored row
     std::unique_ptr<std::atomic<bool>[]> ready_;      // row computed (stored mode)
-    std::vector<float> groupRows_;                    // groups × n when cached
+    mutable std::vector<float> groupRows_;            // groups × n when cached
     std::unique_ptr<std::atomic<bool>[]> groupReady_;
     mutable std::mutex mutex_;                        // guards lazy row computation
     mutable std::atomic<long long> nanos_{0};
