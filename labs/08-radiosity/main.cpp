@@ -1,7 +1,8 @@
 // Lab 08 - radiosity (§1.13-1.15): the scene cut into patches, form factors by rays
 // (§1.15.1), by the hemicube on the CPU and drawn by OpenGL (§1.15.2), B = E + R·F·B
 // solved by progressive refinement in the background, flat or smoothed (figures 13.42
-// and 13.43), the Cornell box, the course's classroom and its floor lamp.
+// and 13.43), the Cornell box, the course's classroom and its floor lamp. In a window the
+// scene starts solving at once (as after n); headless, only the keys given solve.
 // Keys:
 //   1 2 3     form factors by rays / CPU hemicube / GL hemicube
 //   s         smooth (vertex values, Gouraud) / flat patches

@@ -233,6 +233,9 @@ class RadiosityLab : public Lab {
             auto it = std::find(names.begin(), names.end(), s.sceneName);
             const size_t i = it == names.end() ? 0 : size_t(it - names.begin() + 1) % names.size();
             loadScene(names[i], -1.0);
+#if !defined(WB_HEADLESS)
+            startRun(); // a new scene solves at once in a window, as at startup
+#endif
             return true;
         }
         default: return false;
@@ -350,7 +353,17 @@ class RadiosityLab : public Lab {
     void refine() {
         if (!model_) return;
         stopRun();
-        const std::vector<glm::dvec3> B = model_->solver->displayRadiosity();
+        std::vector<glm::dvec3> B = model_->solver->displayRadiosity();
+        // The split threshold is a fraction of the largest radiosity; an emitter's (the light,
+        // ~17× the walls in the Cornell box) would make it split nothing: cap emitters at the
+        // brightest non-emitter.
+        double brightest = 0;
+        for (size_t i = 0; i < B.size(); ++i)
+            if (luminance(model_->mesh.patches[i].emission) == 0)
+                brightest = std::max({brightest, B[i].x, B[i].y, B[i].z});
+        for (size_t i = 0; i < B.size(); ++i)
+            if (luminance(model_->mesh.patches[i].emission) > 0 && brightest > 0)
+                B[i] = glm::min(B[i], glm::dvec3(brightest));
         auto m = std::make_unique<Model>();
         m->scene = model_->scene;
         m->mesh = model_->mesh;
