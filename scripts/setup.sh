@@ -7,7 +7,7 @@ pkgs=(
   cmake g++ make pkg-config
   freeglut3-dev libglew-dev libglm-dev libimgui-dev catch2
   libosmesa6-dev libglu1-mesa-dev libstb-dev libtinyobjloader-dev libtbb-dev
-  libcli11-dev fonts-dejavu-core
+  libcli11-dev fonts-dejavu-core libeigen3-dev
   xvfb xauth
 )
 # Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers; the bench

@@ -1,0 +1,84 @@
+#pragma once
+// The form-factor matrix F (F_ij = fraction of the light leaving P_i that reaches P_j
+// directly, 14.17/14.18) by rays or by the CPU hemicube, computed on all cores (TBB).
+// Storage: F is kept in float (4 bytes × n²) when n <= maxStoredPatches (default 8192:
+// 256 MiB, a twentieth of the share of one engineer's RAM on this 24 GiB machine, and 4k
+// patches take 64 MiB); beyond it no matrix is kept and rows are computed when asked for
+// (progressive refinement shoots from one patch at a time, so it needs one row per shot).
+// Rows are computed lazily and cached when stored; computeAll() fills the whole matrix.
+#include "core/radiosity/hemicube.h"
+#include "core/radiosity/ray_form_factors.h"
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+
+namespace wb::rad {
+
+// External: rows come from FormFactorConfig::rowProvider (lab 08's GL hemicube, which fills an
+// ItemBuffer with OpenGL and calls accumulate() with deltaTable()).
+enum class FormFactorMethod { Rays, Hemicube, External };
+
+struct FormFactorConfig {
+    FormFactorMethod method = FormFactorMethod::Hemicube; // how rows are computed
+    RayFormFactorConfig rays;                 // for Rays
+    int hemicubeResolution = 128;             // for Hemicube: pixels along a face edge (even)
+    bool exactPixels = false;                 // hemicube weights: course's midpoint or exact
+    std::size_t maxStoredPatches = 8192;      // store F (float) up to this patch count
+    int threads = 0;                          // 0 = all cores; 1 = serial (bench)
+    // External: called with row i and `out` sized to n, must fill F_i0..F_i,n−1. Called only
+    // from the thread calling row()/computeAll() (GL contexts are per thread); computeAll() then
+    // runs serially.
+    std::function<void(int i, std::vector<float>& out)> rowProvider;
+};
+
+class FormFactors {
+  public:
+    // Keeps a reference to `mesh` (must outlive this and not change). Builds the BVH.
+    FormFactors(const PatchMesh& mesh, FormFactorConfig config);
+    ~FormFactors();
+
+    int size() const;
+    bool stored() const;                // F kept in memory
+    const FormFactorConfig& config() const { return config_; }
+
+    // Every row, in parallel. Without storage this only checks the config (nothing to keep).
+    void computeAll();
+    // Row i (F_i0..F_i,n−1): from the store (computed first if missing) or computed into
+    // `scratch`; the pointer is valid until the next call with the same scratch. Thread-safe.
+    const float* row(int i, std::vector<float>& scratch) const;
+    // Stored value (computes the row if needed). Throws std::logic_error when not stored.
+    float at(int i, int j) const;
+    // Row of shooting group g (mesh.groups): F from the group's centroid to every patch by the
+    // CPU hemicube at hemicubeResolution, whatever the method (a group is not a patch). Cached
+    // for all groups when groups × n <= maxStoredPatches². Thread-safe.
+    const float* shooterRow(int g, std::vector<float>& scratch) const;
+    bool rowReady(int i) const;
+
+    std::size_t bytes() const;          // memory held for F (and the BVH's primitives)
+    double seconds() const;             // wall time spent computing rows so far
+    long long rowsComputed() const;     // rows computed so far (recomputations count)
+    const PatchBvh& bvh() const { return *bvh_; }
+    const DeltaFormFactors& deltaTable() const { return table_; }
+    const PatchMesh& mesh() const { return mesh_; }
+
+  private:
+    void computeRow(int i, std::vector<float>& out) const;
+
+    float* storedRow(int i) const; // allocates the matrix on first use (under mutex_)
+    const PatchMesh& mesh_;
+    FormFactorConfig config_;
+    std::unique_ptr<PatchBvh> bvh_;
+    DeltaFormFactors table_;
+    bool store_ = false;                              // n <= maxStoredPatches
+    mutable std::vector<float> matrix_;               // n × n, allocated at the first stored row
+    std::unique_ptr<std::atomic<bool>[]> ready_;      // row computed (stored mode)
+    mutable std::vector<float> groupRows_;            // groups × n when cached
+    std::unique_ptr<std::atomic<bool>[]> groupReady_;
+    mutable std::mutex mutex_;                        // guards lazy row computation
+    mutable std::atomic<long long> nanos_{0};
+    mutable std::atomic<long long> rows_{0};
+};
+
+} // namespace wb::rad

@@ -1,0 +1,107 @@
+#pragma once
+// Meshing the surfaces into patches P_1..P_n (§1.14): each surface is cut into a grid of
+// patches whose edges are at most `maxEdge` long, and patches can later be split 4-way
+// (adaptive refinement, "smaller patches where the light changes fast": corners,
+// under the table, shadow edges).
+//
+// Conventions: patch ids are indices into PatchMesh::patches (0..n−1, stable until the
+// next refine); vertex ids are indices into PatchMesh::vertices. Vertices are shared
+// only by patches of the SAME surface, so smoothing never averages across a corner of
+// the room or between a box and the floor it stands on (no light leaks across
+// surfaces). Refinement leaves T-vertices (a split patch's edge midpoints lie on the
+// edge of an unsplit neighbour); they are handled, not avoided: Patch::outline lists a
+// patch's corners AND every vertex lying on its edges, in order, and displayTriangles fans
+// such a patch from an extra centre vertex through all of them, so the display mesh is
+// conforming: Gouraud interpolation is continuous and no crack shows.
+#include "core/radiosity/scene.h"
+
+#include <array>
+#include <vector>
+
+namespace wb::rad {
+
+struct Patch {
+    std::array<int, 4> corners{-1, -1, -1, -1}; // vertex ids, counter-clockwise; [3] = -1 for a triangle
+    int cornerCount = 4;                        // 3 or 4
+    std::vector<int> outline; // corners plus T-vertices on the edges, counter-clockwise
+    // Patches with T-vertices get one extra vertex at their centroid, the apex of their display
+    // fan (so every outline vertex is a triangle corner: no T-junction, no crack); −1 otherwise.
+    // Its smoothed value is the mean of the patch's outline vertices.
+    int centreVertex = -1;
+    int surface = 0;          // index into Scene::surfaces
+    int group = -1;           // shooting group (PatchMesh::groups), −1 when not grouped
+    int level = 0;            // 0 = from the initial grid, +1 per adaptive split
+    double area = 0.0;        // m²
+    glm::dvec3 centre{0.0};   // centroid (area-weighted), on the patch
+    glm::dvec3 normal{0.0};   // unit, the emitting/receiving side
+    glm::dvec3 reflectivity{0.0}; // copied from the surface
+    glm::dvec3 emission{0.0};     // copied from the surface
+    // Corners on the surface's parameter lattice (integers, exact in double): for a quad
+    // surface meshed nu × nv, u = x / (nu·kLatticeScale), v = y / (nv·kLatticeScale); for a
+    // triangle meshed n per edge, the barycentric pair (x, y) / (n·kLatticeScale). Shared
+    // vertices and T-vertices are found on the lattice, never by comparing positions.
+    std::array<glm::dvec2, 4> lattice{};
+};
+
+// A shooting patch of progressive refinement (Cohen, Greenberg, Immel, Brock 1986 "patches and
+// elements"; Cohen et al. 1988 shoot from patches and receive at elements): a block of the fine
+// patches (elements) of one surface. It shoots their pooled unshot power from its centroid.
+struct ShooterGroup {
+    std::vector<int> members; // patch ids
+    int surface = 0;
+    double area = 0.0;        // Σ member areas
+    glm::dvec3 centre{0.0};   // area-weighted centroid (on the surface)
+    glm::dvec3 normal{0.0};   // the surface's normal
+    glm::dvec3 u{1, 0, 0};    // hemicube axis: the surface's first edge, in its plane
+};
+
+// Lattice units per initial grid cell: 2^12, so up to 12 adaptive splits stay on the lattice.
+constexpr double kLatticeScale = 4096.0;
+
+struct PatchMesh {
+    std::vector<glm::dvec3> vertices;
+    std::vector<int> vertexSurface;         // surface each vertex belongs to
+    std::vector<glm::dvec2> vertexLattice;  // its lattice coordinates on that surface
+    std::vector<glm::ivec2> grid;           // per surface: nu × nv (quads) or n × n (triangles)
+    std::vector<Patch> patches;
+    std::vector<Surface> surfaces; // copy of the scene's surfaces (patches refer to them)
+    bool closed = false;           // copy of Scene::closed
+    std::vector<ShooterGroup> groups; // empty unless meshed with shooterEdge > maxEdge
+
+    std::vector<glm::dvec3> cornersOf(int patch) const; // corner positions
+    double totalArea() const;
+};
+
+struct MeshConfig {
+    double maxEdge = 0.1; // metres: no patch edge longer than this after meshing (> 0)
+    // > maxEdge: also group the patches into shooting patches of about this edge (the fine grid
+    // is the coarse one subdivided); progressive refinement then shoots per group. 0: no groups.
+    double shooterEdge = 0.0;
+};
+
+// Grid-meshes every surface. Validates the scene first (throws std::invalid_argument).
+PatchMesh meshScene(const Scene& scene, const MeshConfig& config);
+
+struct RefineConfig {
+    // A patch is split when its radiosity differs from a neighbour's on the same surface by
+    // more than this fraction of the scene's largest radiosity (luminance, max channel).
+    double threshold = 0.05;
+    int maxLevel = 3;          // no patch is split more than this many times
+    double minEdge = 0.005;    // metres: patches with an edge shorter than this stay whole
+    std::size_t maxPatches = 20000; // stop splitting at this patch count
+};
+
+// Adaptive refinement: splits (4-way, at edge midpoints) the patches whose radiosity `B`
+// (one RGB value per patch) jumps against a neighbour, returning the new mesh and filling
+// `parentOf` (new patch id -> old patch id) so a solver can start from the old solution.
+// Children stay in their parent's shooting group.
+// Outlines are recomputed (T-vertices). Returns the number of patches split.
+int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const RefineConfig& config,
+                   std::vector<int>* parentOf = nullptr);
+
+// Triangles (vertex ids, counter-clockwise) covering every patch along its outline, conforming
+// across T-vertices; `patchOf` receives the patch id of each triangle. For GL drawing.
+std::vector<std::array<int, 3>> displayTriangles(const PatchMesh& mesh,
+                                                 std::vector<int>* patchOf = nullptr);
+
+} // namespace wb::rad

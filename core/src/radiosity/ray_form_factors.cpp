@@ -1,0 +1,172 @@
+#include "core/radiosity/ray_form_factors.h"
+
+#include "core/radiosity/closed_forms.h"
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace wb::rad {
+
+namespace {
+
+// SplitMix64: a small, well-mixed deterministic generator (seeded per patch / pair).
+struct SplitMix {
+    std::uint64_t s;
+    std::uint64_t next() {
+        std::uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+};
+
+std::uint64_t mix(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    SplitMix m{a * 0x100000001b3ULL ^ (b << 21) ^ (c << 42) ^ c};
+    m.next();
+    return m.next();
+}
+
+// k points on patch p: a jittered g × g grid (g = ceil √k) of which k cells are kept
+// (all when k is a square), mapped onto the quad bilinearly or onto the triangle by the
+// area-preserving square-root warp.
+void samplePatch(const PatchMesh& mesh, int p, int k, std::uint64_t seed, std::vector<glm::dvec3>& out) {
+    const Patch& P = mesh.patches[static_cast<std::size_t>(p)];
+    const auto c = mesh.cornersOf(p);
+    SplitMix rng{mix(seed, static_cast<std::uint64_t>(p), 0x5a)};
+    const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(k)) - 1e-12));
+    std::vector<int> cells(static_cast<std::size_t>(g * g));
+    std::iota(cells.begin(), cells.end(), 0);
+    for (std::size_t i = cells.size(); i > 1; --i) // Fisher–Yates with our generator
+        std::swap(cells[i - 1], cells[static_cast<std::size_t>(rng.next() % i)]);
+    out.clear();
+    for (int s = 0; s < k; ++s) {
+        const int cell = cells[static_cast<std::size_t>(s)];
+        const double u = ((cell % g) + rng.uniform()) / g;
+        const double v = ((cell / g) + rng.uniform()) / g;
+        if (P.cornerCount == 3) {
+            const double su = std::sqrt(u);
+            out.push_back(c[0] + su * (1 - v) * (c[1] - c[0]) + su * v * (c[2] - c[0]));
+        } else {
+            out.push_back((1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] +
+                          (1 - u) * v * c[3]);
+        }
+    }
+}
+
+double diameter(const std::vector<glm::dvec3>& c) {
+    double d = 0.0;
+    for (std::size_t a = 0; a < c.size(); ++a)
+        for (std::size_t b = a + 1; b < c.size(); ++b) d = std::max(d, glm::length(c[a] - c[b]));
+    return d;
+}
+
+struct Workspace {
+    std::vector<glm::dvec3> xi, xj;
+    std::vector<int> perm;
+};
+
+double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayFormFactorConfig& cfg,
+            const std::vector<glm::dvec3>& ci, Workspace& ws) {
+    if (i == j) return 0.0;
+    const Patch& Pi = mesh.patches[static_cast<std::size_t>(i)];
+    const Patch& Pj = mesh.patches[static_cast<std::size_t>(j)];
+    // 1. Facing test: some corner of each must lie in front of the other's plane.
+    const auto cj = mesh.cornersOf(j);
+    const double scale = 1e-12 * (glm::length(Pi.centre) + glm::length(Pj.centre) + 1.0);
+    bool jFront = false, iFront = false;
+    for (const auto& q : cj) jFront |= glm::dot(q - Pi.centre, Pi.normal) > scale;
+    for (const auto& q : ci) iFront |= glm::dot(q - Pj.centre, Pj.normal) > scale;
+    if (!jFront || !iFront) return 0.0;
+    // 2. Kernel choice.
+    const glm::dvec3 dc = Pj.centre - Pi.centre;
+    const double d = glm::length(dc);
+    RayKernel kernel = cfg.kernel;
+    if (kernel == RayKernel::Auto)
+        kernel = d < cfg.nearFactor * std::max(diameter(ci), diameter(cj)) ? RayKernel::PointToPolygon
+                                                                            : RayKernel::Centres;
+    // 3. The k points on each patch and their random pairing (seeded by the unordered pair,
+    //    so F_ij and F_ji use the same rays).
+    const int k = cfg.samples;
+    samplePatch(mesh, i, k, cfg.seed, ws.xi);
+    samplePatch(mesh, j, k, cfg.seed, ws.xj);
+    ws.perm.resize(static_cast<std::size_t>(k));
+    std::iota(ws.perm.begin(), ws.perm.end(), 0);
+    SplitMix rng{mix(cfg.seed, static_cast<std::uint64_t>(std::min(i, j)),
+                     static_cast<std::uint64_t>(std::max(i, j)))};
+    for (std::size_t s = ws.perm.size(); s > 1; --s)
+        std::swap(ws.perm[s - 1], ws.perm[static_cast<std::size_t>(rng.next() % s)]);
+    // Pairs (a_s on P_i, b_s on P_j): with i < j, a_s = xi[s], b_s = xj[perm[s]]; swapped
+    // roles for i > j, so the segment set is the same either way.
+    auto pointI = [&](int s) { return i < j ? ws.xi[static_cast<std::size_t>(s)] : ws.xi[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])]; };
+    auto pointJ = [&](int s) { return i < j ? ws.xj[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])] : ws.xj[static_cast<std::size_t>(s)]; };
+    const double invPi = 1.0 / glm::pi<double>();
+    double sum = 0.0;
+    int unblocked = 0;
+    for (int s = 0; s < k; ++s) {
+        const glm::dvec3 a = pointI(s), b = pointJ(s);
+        const glm::dvec3 r = b - a;
+        const double r2 = glm::dot(r, r);
+        const double ca = glm::dot(Pi.normal, r), cb = -glm::dot(Pj.normal, r);
+        if (kernel == RayKernel::PointPairs) {
+            if (ca <= 0.0 || cb <= 0.0 || !(r2 > 0.0)) continue;
+            if (!bvh.visible(a, b)) continue;
+            sum += ca * cb / (r2 * r2) * invPi;
+        } else if (kernel == RayKernel::PointToPolygon) {
+            if (ca <= 0.0 || cb <= 0.0) continue; // ray leaves behind a patch: blocked
+            if (!bvh.visible(a, b)) continue;
+            sum += pointToPolygon(a, Pi.normal, cj);
+        } else {
+            if (ca > 0.0 && cb > 0.0 && bvh.visible(a, b)) ++unblocked;
+        }
+    }
+    switch (kernel) {
+    case RayKernel::PointPairs:
+        return Pj.area * sum / k;
+    case RayKernel::PointToPolygon:
+        return sum / k;
+    default: {
+        // (15.20) at the centres, times the visible fraction of the k rays.
+        const double cosI = glm::dot(Pi.normal, dc) / d, cosJ = -glm::dot(Pj.normal, dc) / d;
+        if (cosI <= 0.0 || cosJ <= 0.0) return 0.0;
+        const double V = static_cast<double>(unblocked) / k;
+        return V * cosI * cosJ * Pj.area * invPi / (d * d);
+    }
+    }
+}
+
+void checkConfig(const PatchMesh& mesh, int i, const RayFormFactorConfig& cfg) {
+    if (cfg.samples < 1 || cfg.samples > 4096)
+        throw std::invalid_argument("ray form factors: samples " + std::to_string(cfg.samples) +
+                                    " outside 1..4096");
+    if (i < 0 || static_cast<std::size_t>(i) >= mesh.patches.size())
+        throw std::out_of_range("ray form factors: patch " + std::to_string(i) + " out of range");
+}
+
+} // namespace
+
+double rayFormFactor(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j,
+                     const RayFormFactorConfig& config) {
+    checkConfig(mesh, i, config);
+    checkConfig(mesh, j, config);
+    Workspace ws;
+    return pair(mesh, bvh, i, j, config, mesh.cornersOf(i), ws);
+}
+
+void rayFormFactorRow(const PatchMesh& mesh, const PatchBvh& bvh, int i,
+                      const RayFormFactorConfig& config, std::vector<float>& out) {
+    checkConfig(mesh, i, config);
+    const std::size_t n = mesh.patches.size();
+    out.assign(n, 0.0f);
+    Workspace ws;
+    const auto ci = mesh.cornersOf(i);
+    for (std::size_t j = 0; j < n; ++j)
+        out[j] = static_cast<float>(pair(mesh, bvh, i, static_cast<int>(j), config, ci, ws));
+}
+
+} // namespace wb::rad

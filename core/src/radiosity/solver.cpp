@@ -1,0 +1,222 @@
+#include "core/radiosity/solver.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace wb::rad {
+
+namespace {
+double sum3(const glm::dvec3& v) { return v.x + v.y + v.z; }
+} // namespace
+
+Solver::Solver(const PatchMesh& mesh, const FormFactors& ff, SolverConfig config)
+    : mesh_(mesh), ff_(ff), config_(config) {
+    const std::size_t n = mesh.patches.size();
+    if (static_cast<std::size_t>(ff.size()) != n)
+        throw std::invalid_argument("radiosity solver: form factors for another mesh");
+    if (config_.kind != SolverKind::Progressive && !ff.stored())
+        throw std::invalid_argument(
+            "radiosity solver: Jacobi and Gauss-Seidel gather over all of F, which is not stored "
+            "above maxStoredPatches patches; use progressive refinement (rows on demand)");
+    if (!(config_.tolerance >= 0.0)) throw std::invalid_argument("radiosity solver: tolerance < 0");
+    B_.resize(n);
+    dB_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        B_[i] = mesh.patches[i].emission;
+        dB_[i] = mesh.patches[i].emission;
+        emittedSum_ += mesh.patches[i].area * sum3(mesh.patches[i].emission);
+    }
+    if (!(emittedSum_ > 0.0))
+        throw std::invalid_argument("radiosity solver: nothing emits (E = 0 everywhere)");
+    if (config_.kind == SolverKind::Progressive) {
+        residual_ = 1.0; // all the emitted power is unshot
+    } else {
+        residual_ = computeResidual();
+    }
+}
+
+// F·B for every patch into FB_, in parallel over rows; returns the gathering residual
+// Σ A |E + R(FB) − B| / Σ A E of the current B.
+double Solver::computeResidual() {
+    const int n = ff_.size();
+    FB_.assign(static_cast<std::size_t>(n), glm::dvec3(0.0));
+    tbb::parallel_for(0, n, [&](int i) {
+        std::vector<float> scratch;
+        const float* f = ff_.row(i, scratch);
+        glm::dvec3 acc(0.0);
+        for (int j = 0; j < n; ++j) acc += static_cast<double>(f[j]) * B_[static_cast<std::size_t>(j)];
+        FB_[static_cast<std::size_t>(i)] = acc;
+    });
+    double r = 0.0;
+    for (int i = 0; i < n; ++i) {
+        const Patch& p = mesh_.patches[static_cast<std::size_t>(i)];
+        const glm::dvec3 d = p.emission + p.reflectivity * FB_[static_cast<std::size_t>(i)] -
+                             B_[static_cast<std::size_t>(i)];
+        r += p.area * sum3(glm::abs(d));
+    }
+    return r / emittedSum_;
+}
+
+double Solver::step() {
+    const int n = ff_.size();
+    switch (config_.kind) {
+    case SolverKind::Jacobi: {
+        // B_new = E + R·(F·B_old); FB_ holds F·B_old from the last residual.
+        for (int i = 0; i < n; ++i) {
+            const Patch& p = mesh_.patches[static_cast<std::size_t>(i)];
+            B_[static_cast<std::size_t>(i)] = p.emission + p.reflectivity * FB_[static_cast<std::size_t>(i)];
+        }
+        residual_ = computeResidual();
+        break;
+    }
+    case SolverKind::GaussSeidel: {
+        for (int i = 0; i < n; ++i) {
+            const float* f = ff_.row(i, scratch_);
+            glm::dvec3 acc(0.0);
+            for (int j = 0; j < n; ++j) acc += static_cast<double>(f[j]) * B_[static_cast<std::size_t>(j)];
+            const Patch& p = mesh_.patches[static_cast<std::size_t>(i)];
+            B_[static_cast<std::size_t>(i)] = p.emission + p.reflectivity * acc;
+        }
+        residual_ = computeResidual(); // one extra product: the true residual of the new B
+        break;
+    }
+    case SolverKind::Progressive: {
+        if (config_.groupShooting && !mesh_.groups.empty()) {
+            // 1. The group with the most unshot power.
+            int best = -1;
+            double bestPower = 0.0;
+            for (std::size_t g = 0; g < mesh_.groups.size(); ++g) {
+                double pw = 0.0;
+                for (int e : mesh_.groups[g].members)
+                    pw += mesh_.patches[static_cast<std::size_t>(e)].area * sum3(dB_[static_cast<std::size_t>(e)]);
+                if (pw > bestPower) {
+                    bestPower = pw;
+                    best = static_cast<int>(g);
+                }
+            }
+            if (best < 0) {
+                residual_ = 0.0;
+                break;
+            }
+            // 2. Pool its members' unshot radiosity (area average) and shoot it from the centroid:
+            //    j receives R_j ΔB_g F_gj A_g/A_j.
+            const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(best)];
+            glm::dvec3 pooled(0.0);
+            for (int e : sg.members) {
+                pooled += mesh_.patches[static_cast<std::size_t>(e)].area * dB_[static_cast<std::size_t>(e)];
+                dB_[static_cast<std::size_t>(e)] = glm::dvec3(0.0);
+            }
+            const glm::dvec3 shot = pooled / sg.area;
+            const float* f = ff_.shooterRow(best, scratch_);
+            double unshot = 0.0;
+            for (int j = 0; j < n; ++j) {
+                const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
+                if (f[j] != 0.0f) {
+                    const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * sg.area / p.area);
+                    B_[static_cast<std::size_t>(j)] += add;
+                    dB_[static_cast<std::size_t>(j)] += add;
+                }
+                unshot += p.area * sum3(dB_[static_cast<std::size_t>(j)]);
+            }
+            lastGroup_ = best;
+            lastShooter_ = sg.members.front();
+            residual_ = unshot / emittedSum_;
+            break;
+        }
+        // 1. The shooter: most unshot power A·ΔB (channels summed).
+        int s = -1;
+        double best = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double pw = mesh_.patches[static_cast<std::size_t>(i)].area * sum3(dB_[static_cast<std::size_t>(i)]);
+            if (pw > best) {
+                best = pw;
+                s = i;
+            }
+        }
+        if (s < 0) {
+            residual_ = 0.0;
+            break;
+        }
+        // 2. Shoot along row s: j receives R_j ΔB_s F_sj A_s/A_j (reciprocity).
+        const float* f = ff_.row(s, scratch_);
+        const glm::dvec3 shot = dB_[static_cast<std::size_t>(s)];
+        const double As = mesh_.patches[static_cast<std::size_t>(s)].area;
+        dB_[static_cast<std::size_t>(s)] = glm::dvec3(0.0);
+        double unshot = 0.0;
+        for (int j = 0; j < n; ++j) {
+            const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
+            if (f[j] != 0.0f) {
+                const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * As / p.area);
+                B_[static_cast<std::size_t>(j)] += add;
+                dB_[static_cast<std::size_t>(j)] += add;
+            }
+            unshot += p.area * sum3(dB_[static_cast<std::size_t>(j)]);
+        }
+        lastShooter_ = s;
+        residual_ = unshot / emittedSum_;
+        break;
+    }
+    }
+    ++steps_;
+    history_.push_back(residual_);
+    return residual_;
+}
+
+int Solver::run(const std::atomic<bool>* cancel) {
+    int taken = 0;
+    while (residual_ >= config_.tolerance && steps_ < config_.maxSteps) {
+        if (cancel && cancel->load()) break;
+        const double before = residual_;
+        step();
+        ++taken;
+        // Progressive with nothing left to shoot, or a sweep that no longer changes anything.
+        if (residual_ == 0.0 || (config_.kind != SolverKind::Progressive && residual_ == before))
+            break;
+    }
+    return taken;
+}
+
+std::vector<glm::dvec3> Solver::displayRadiosity() const {
+    if (config_.kind != SolverKind::Progressive || !config_.ambient) return B_;
+    // Ambient (Cohen et al. 1988): the unshot radiosity, area-averaged, reflected
+    // 1 + R + R² + … = 1/(1 − R_avg) times, added on each patch times its R.
+    glm::dvec3 unshot(0.0), reflect(0.0);
+    double area = 0.0;
+    for (std::size_t i = 0; i < B_.size(); ++i) {
+        const Patch& p = mesh_.patches[i];
+        unshot += p.area * dB_[i];
+        reflect += p.area * p.reflectivity;
+        area += p.area;
+    }
+    const glm::dvec3 ambient = (unshot / area) / (glm::dvec3(1.0) - reflect / area);
+    std::vector<glm::dvec3> out(B_);
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] += mesh_.patches[i].reflectivity * ambient;
+    return out;
+}
+
+glm::dvec3 Solver::emittedPower() const {
+    glm::dvec3 e(0.0);
+    for (const Patch& p : mesh_.patches) e += p.area * p.emission;
+    return e;
+}
+
+glm::dvec3 Solver::absorbedPower() const {
+    // Incident B_in = F·B (14.18), absorbed (1 − R)·A·B_in.
+    const int n = ff_.size();
+    std::vector<glm::dvec3> part(static_cast<std::size_t>(n), glm::dvec3(0.0));
+    tbb::parallel_for(0, n, [&](int i) {
+        std::vector<float> scratch;
+        const float* f = ff_.row(i, scratch);
+        glm::dvec3 acc(0.0);
+        for (int j = 0; j < n; ++j) acc += static_cast<double>(f[j]) * B_[static_cast<std::size_t>(j)];
+        const Patch& p = mesh_.patches[static_cast<std::size_t>(i)];
+        part[static_cast<std::size_t>(i)] = p.area * (glm::dvec3(1.0) - p.reflectivity) * acc;
+    });
+    glm::dvec3 a(0.0);
+    for (const auto& v : part) a += v;
+    return a;
+}
+
+} // namespace wb::rad

@@ -1,0 +1,13 @@
+# Radiosity (issue 10): writes docs/bench/radiosity.md, radiosity_ff.png, radiosity_solvers.png
+# (run bin/radiosity_bench; --quick for a small smoke run, which ctest runs into the build dir).
+add_executable(radiosity_bench radiosity_bench.cpp)
+target_compile_options(radiosity_bench PRIVATE ${WB_WARNINGS})
+target_compile_definitions(radiosity_bench PRIVATE WB_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+                                                   WB_BINARY_DIR="${CMAKE_BINARY_DIR}")
+target_link_libraries(radiosity_bench PRIVATE core)
+# The smoke run (~6 s) is skipped under the sanitizers, where it would take minutes; the
+# same code paths run there through radiosity_test.
+if(NOT WORKBENCH_SANITIZE)
+  add_test(NAME "radiosity_bench --quick"
+           COMMAND radiosity_bench --quick --out-dir ${CMAKE_BINARY_DIR}/bench-out/radiosity-quick)
+endif()

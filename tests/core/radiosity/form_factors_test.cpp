@@ -1,0 +1,135 @@
+// Form factors by rays (§1.15.1) and by the CPU hemicube (§1.15.2) against closed forms, and
+// their properties on every scene: F_ii = 0, reciprocity, rows of a closed room summing to 1.
+#include "ff_common.h"
+
+#include "core/radiosity/closed_forms.h"
+
+#include <catch2/catch.hpp>
+
+using namespace wb::rad;
+using namespace wb::rad::test;
+
+namespace {
+FormFactorConfig rays(int k, RayKernel kernel) {
+    FormFactorConfig c;
+    c.method = FormFactorMethod::Rays;
+    c.rays.samples = k;
+    c.rays.kernel = kernel;
+    return c;
+}
+FormFactorConfig cube(int res) {
+    FormFactorConfig c;
+    c.method = FormFactorMethod::Hemicube;
+    c.hemicubeResolution = res;
+    return c;
+}
+} // namespace
+
+TEST_CASE("plate-to-plate F from patches against the closed forms") {
+    const PatchMesh par = meshScene(parallelPlates(1, 1, 1), {0.25});       // 16 + 16 patches
+    const PatchMesh per = meshScene(perpendicularPlates(1, 1, 1), {0.25});
+    const double exPar = parallelRectangles(1, 1, 1), exPer = perpendicularRectangles(1, 1, 1);
+    struct Case { const char* name; FormFactorConfig cfg; double tolPar, tolPer; };
+    // Tolerances (relative) are measured figures rounded up ×2 (see docs/bench/radiosity.md):
+    // PointToPolygon is exact per sample point, leaving the sampling of P_i; the hemicube is a
+    // point method from patch centres (midpoint rule over P_i) plus pixel aliasing; Centres is
+    // (15.20), far off for touching patches.
+    const Case cases[] = {
+        {"rays k=16 point-to-polygon", rays(16, RayKernel::PointToPolygon), 2e-3, 5e-3},
+        {"rays k=16 auto", rays(16, RayKernel::Auto), 1e-2, 1e-2},
+        {"hemicube 128", cube(128), 1e-2, 2e-2},
+    };
+    for (const Case& c : cases) {
+        FormFactors a(par, c.cfg), b(per, c.cfg);
+        const double fPar = surfaceFF(par, a, 0, 1), fPer = surfaceFF(per, b, 0, 1);
+        INFO(c.name << ": parallel " << fPar << " vs " << exPar << ", perpendicular " << fPer << " vs " << exPer);
+        CHECK(std::abs(fPar - exPar) / exPar < c.tolPar);
+        CHECK(std::abs(fPer - exPer) / exPer < c.tolPer);
+    }
+    // The course's (15.20) at the centres is far off for touching patches: more than 10% here.
+    FormFactors cen(per, rays(16, RayKernel::Centres));
+    CHECK(std::abs(surfaceFF(per, cen, 0, 1) - exPer) / exPer > 0.1);
+}
+
+TEST_CASE("F_ii = 0, reciprocity and row sums on a closed room with an occluder") {
+    const PatchMesh m = meshScene(boxInRoom(), {0.25}); // 120 patches
+    struct Case { const char* name; FormFactorConfig cfg; double recip, rowMax; };
+    // Tolerances: measured on this mesh and rounded up ~1.5× (rays are seeded, so the figures
+    // are reproducible; the hemicube's are exact functions of the resolution).
+    //  - rays auto: near pairs use the exact point-to-polygon term sampled at k points of P_i,
+    //    far pairs (15.20) at the centres; rows sum to 1 up to those two errors.
+    //  - rays point pairs: (15.20) per ray pair is symmetric in i and j, so reciprocity holds
+    //    to float storage (1e-7); its rows are far off for touching patches (1/r² singular).
+    //  - hemicube: rows sum to the delta table's sum exactly when every pixel sees a front side
+    //    (1 + 0.54/res², checked separately); reciprocity is the method's weak point: it is a
+    //    point method from the patch centre, so near pairs are not reciprocal at any resolution.
+    std::vector<Case> cases = {
+        {"rays k=16 auto", rays(16, RayKernel::Auto), 0.08, 0.08},
+        {"rays k=16 point pairs", rays(16, RayKernel::PointPairs), 1e-6, 1.0},
+        {"hemicube 16", cube(16), 0.45, 0.6 / (16 * 16)},
+        {"hemicube 64", cube(64), 0.2, 0.6 / (64 * 64)},
+    };
+#ifndef WB_SANITIZED
+    cases.push_back({"hemicube 128", cube(128), 0.15, 0.6 / (128 * 128)});
+#endif
+    for (const Case& c : cases) {
+        FormFactors ff(m, c.cfg);
+        const FfStats s = stats(m, ff);
+        INFO(c.name << ": diag " << s.maxDiag << " reciprocity " << s.reciprocity << " row error max "
+                    << s.maxRowError << " mean " << s.meanRowError << " rows " << s.minRow << ".." << s.maxRow);
+        CHECK(s.maxDiag == 0.0);
+        CHECK(s.reciprocity < c.recip);
+        CHECK(s.maxRowError < c.rowMax);
+    }
+}
+
+TEST_CASE("F_ii = 0 and reciprocity on the lab's scenes (hemicube 32)") {
+    for (const Scene& sc : {cornellBox(), classroom(), floorLamp()}) {
+        const double edge = sc.name == "Cornell box" ? 0.15 : 1.0;
+        const PatchMesh m = meshScene(sc, {edge});
+        FormFactors ff(m, cube(32));
+        const FfStats s = stats(m, ff);
+        INFO(sc.name << ": n " << m.patches.size() << " reciprocity " << s.reciprocity << " rows " << s.minRow << ".." << s.maxRow);
+        CHECK(s.maxDiag == 0.0);
+        // Coarse patches and a 32² hemicube: measured 0.15–0.25, bound 0.35 (the bench reports
+        // the default settings' figure).
+        CHECK(s.reciprocity < 0.35);
+        // No row exceeds the table's sum (1 + 0.54/32²): nothing is counted twice. Rows < 1
+        // are patches that see the open front of the Cornell box or the inside of a body.
+        CHECK(s.maxRow <= deltaFormFactors(32).sum + 1e-6);
+    }
+}
+
+TEST_CASE("rows on demand equal stored rows") {
+    const PatchMesh m = meshScene(cornellBox(), {0.15});
+    FormFactorConfig c = cube(32);
+    FormFactors stored(m, c);
+    c.maxStoredPatches = 0;
+    FormFactors onDemand(m, c);
+    CHECK(stored.stored());
+    CHECK(!onDemand.stored());
+    std::vector<float> a, b;
+    for (int i : {0, 7, 33}) {
+        const float* ra = stored.row(i, a);
+        const float* rb = onDemand.row(i, b);
+        for (int j = 0; j < stored.size(); ++j) CHECK(ra[j] == rb[j]);
+    }
+    CHECK_THROWS_AS(onDemand.at(0, 1), std::logic_error);
+}
+
+TEST_CASE("external rows (the lab's GL hemicube path) go through the same accumulate") {
+    const PatchMesh m = meshScene(cornellBox(), {0.15});
+    FormFactorConfig c = cube(32);
+    FormFactors cpu(m, c);
+    c.method = FormFactorMethod::External;
+    c.rowProvider = [&](int i, std::vector<float>& out) {
+        ItemBuffer items;
+        castItemBuffer(cpu.bvh(), hemicubeFrame(m, i), 32, items, false);
+        accumulate(items, cpu.deltaTable(), static_cast<int>(m.patches.size()), i, out);
+    };
+    FormFactors ext(m, c);
+    std::vector<float> a, b;
+    const float* ra = cpu.row(3, a);
+    const float* rb = ext.row(3, b);
+    for (int j = 0; j < cpu.size(); ++j) CHECK(ra[j] == rb[j]);
+}

@@ -1,0 +1,108 @@
+// The CPU hemicube: the delta form-factor table, the layout (pixel directions against the
+// documented table), rows against closed forms, row sums in a closed room.
+#include "core/radiosity/closed_forms.h"
+#include "core/radiosity/hemicube.h"
+#include "core/radiosity/scenes.h"
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+
+using namespace wb::rad;
+
+TEST_CASE("delta form factors: sum, symmetry, exact pixels") {
+    for (int res : {16, 64, 256, 1024}) {
+        const DeltaFormFactors t = deltaFormFactors(res);
+        // Midpoint rule over the hemisphere: the error is O(h²), h = 2/res, and the rule
+        // overestimates (the weight is convex over most pixels); measured sum − 1 = 2.12e-3 at
+        // 16², 1.32e-4 at 64², 8.27e-6 at 256², 5.17e-7 at 1024², i.e. 0.54/res²; bound 0.6/res².
+        CHECK(t.sum > 1.0);
+        CHECK(t.sum - 1.0 < 0.6 / (res * res));
+        // The top face is symmetric in s and t.
+        const auto& top = t.faces[0];
+        CHECK(top[0] == top[static_cast<std::size_t>(res - 1)]);
+        CHECK(top[0] == top[static_cast<std::size_t>(res) * static_cast<std::size_t>(res) - 1]);
+        // All side faces carry the same weights.
+        for (int f = 2; f < 5; ++f) CHECK(t.faces[static_cast<std::size_t>(f)] == t.faces[1]);
+    }
+    const DeltaFormFactors e = deltaFormFactors(32, true);
+    // Exact pixel form factors tile the hemisphere: sum 1 up to rounding of 3·32² terms.
+    CHECK(e.sum == Approx(1.0).epsilon(1e-12));
+    CHECK_THROWS_AS(deltaFormFactors(15), std::invalid_argument);
+    CHECK_THROWS_AS(deltaFormFactors(0), std::invalid_argument);
+}
+
+TEST_CASE("hemicube layout: pixel directions as documented") {
+    HemicubeFrame fr; // u = x, v = y, n = z
+    const int res = 8;
+    // Top row 0 col 0 is at s = t = −1 + 1/8: direction (−7/8, −7/8, 1).
+    CHECK(pixelDirection(fr, res, HemicubeFace::Top, 0, 0) == glm::dvec3(-0.875, -0.875, 1));
+    // +U face: u − s·v + z·n; col 0 -> s = −7/8 -> +v side; row 0 -> z = 1/8.
+    CHECK(pixelDirection(fr, res, HemicubeFace::PosU, 0, 0) == glm::dvec3(1, 0.875, 0.125));
+    CHECK(pixelDirection(fr, res, HemicubeFace::NegU, 0, 0) == glm::dvec3(-1, -0.875, 0.125));
+    CHECK(pixelDirection(fr, res, HemicubeFace::PosV, 0, 3) == glm::dvec3(-0.875, 1, 0.875));
+    CHECK(pixelDirection(fr, res, HemicubeFace::NegV, 7, 0) == glm::dvec3(-0.875, -1, 0.125));
+    // GL's right = look × up for the sides: +U looks along u with up n: right = −v.
+    CHECK(glm::cross(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1)) == glm::dvec3(0, -1, 0));
+    CHECK(faceHeight(res, HemicubeFace::Top) == 8);
+    CHECK(faceHeight(res, HemicubeFace::NegV) == 4);
+}
+
+TEST_CASE("hemicube row from a patch centre against the exact point-to-polygon value") {
+    // Two unit squares one apart, each one patch: the hemicube measures F from the emitter's
+    // centre point (it is a point method), so the reference is pointToPolygon from there.
+    const PatchMesh m = meshScene(parallelPlates(1, 1, 1), {2.0});
+    REQUIRE(m.patches.size() == 2);
+    const PatchBvh bvh(m);
+    const double exact = pointToPolygon(m.patches[0].centre, m.patches[0].normal, m.cornersOf(1));
+    double last = 1.0;
+    for (int res : {16, 64, 256, 1024}) {
+        std::vector<float> row;
+        hemicubeRow(m, bvh, deltaFormFactors(res), 0, row);
+        const double err = std::abs(row[1] - exact) / exact;
+        // The square's edges run along pixel rows/columns here; the error is the midpoint
+        // rule's O(1/res²) plus the edge pixels: measured 2.6e-2 (16²), 1.6e-3 (64²);
+        // bound 7/res².
+        CHECK(err < 7.0 / (res * res));
+        CHECK(row[0] == 0.0f); // F_ii = 0
+        last = err;
+    }
+    CHECK(last < 1e-5);
+}
+
+TEST_CASE("hemicube rows of a closed room sum to the table's sum") {
+    const PatchMesh m = meshScene(furnace(0.5, 1.0), {0.25});
+    const PatchBvh bvh(m);
+    for (int res : {16, 64, 256}) {
+        const DeltaFormFactors t = deltaFormFactors(res);
+        for (int i : {0, 5, 37, 95}) {
+            std::vector<float> row;
+            hemicubeRow(m, bvh, t, i, row);
+            double sum = 0.0;
+            for (float f : row) sum += f;
+            // Every pixel sees a wall (closed, convex room): the row sum is the table's sum up to
+            // float storage of the row (96 entries × 6e-8).
+            CHECK(sum == Approx(t.sum).epsilon(1e-6));
+        }
+    }
+}
+
+TEST_CASE("accumulate: GL-style item buffer, bad ids skipped, mismatched resolution refused") {
+    const DeltaFormFactors t = deltaFormFactors(4);
+    ItemBuffer items;
+    items.resize(4);
+    for (auto& f : items.faces) std::fill(f.begin(), f.end(), 1);
+    items.faces[0][0] = 7;  // beyond patchCount: skipped
+    items.faces[0][1] = -1; // nothing
+    items.faces[1][0] = 0;  // self: forced to 0
+    std::vector<float> row;
+    accumulate(items, t, 3, 0, row);
+    REQUIRE(row.size() == 3);
+    CHECK(row[0] == 0.0f);
+    CHECK(row[2] == 0.0f);
+    CHECK(row[1] == Approx(t.sum - t.faces[0][0] - t.faces[0][1] - t.faces[1][0]).epsilon(1e-7));
+    ItemBuffer other;
+    other.resize(8);
+    CHECK_THROWS_AS(accumulate(other, t, 3, 0, row), std::invalid_argument);
+}
