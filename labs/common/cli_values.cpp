@@ -21,7 +21,8 @@ bool parseSize(const std::string& s, int maxSide, int& width, int& height) {
     const auto x = s.find('x');
     if (x == std::string::npos) return false;
     int w = 0, h = 0;
-    if (!parseInt(s.substr(0, x), 1, maxSide, w) || !parseInt(s.substr(x + 1), 1, maxSide, h)) return false;
+    if (!parseInt(s.substr(0, x), 1, maxSide, w) || !parseInt(s.substr(x + 1), 1, maxSide, h))
+        return false;
     width = w;
     height = h;
     return true;
@@ -33,38 +34,45 @@ std::string sizeError(const std::string& flag, const std::string& value, int max
 
 bool parseThreads(const std::string& flag, const std::string& s, int& threads, std::string& error) {
     if (parseInt(s, 0, kMaxThreads, threads)) return true;
-    error = flag + " '" + s + "': expected a thread count 0.." + std::to_string(kMaxThreads) + " (0 = all cores)";
+    error = flag + " '" + s + "': expected a thread count 0.." + std::to_string(kMaxThreads) +
+            " (0 = all cores)";
     return false;
 }
 
-CLI::Option* addSizeOption(CLI::App& app, const std::string& flag, int maxSide, int& width, int& height,
-                           std::string& error, const std::string& help) {
-    return app.add_option_function<std::string>(
-        flag,
-        [flag, maxSide, &width, &height, &error](const std::string& v) {
-            if (!parseSize(v, maxSide, width, height)) {
-                error = sizeError(flag, v, maxSide);
-                throw CLI::ValidationError(flag, error);
-            }
-        },
-        help)->type_name("WxH");
+CLI::Option* addSizeOption(CLI::App& app, const std::string& flag, int maxSide, int& width,
+                           int& height, std::string& error, const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            flag,
+            [flag, maxSide, &width, &height, &error](const std::string& v) {
+                if (!parseSize(v, maxSide, width, height)) {
+                    error = sizeError(flag, v, maxSide);
+                    throw CLI::ValidationError(flag, error);
+                }
+            },
+            help)
+        ->type_name("WxH");
 }
 
-CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threads, std::string& error,
-                              const std::string& help) {
-    return app.add_option_function<std::string>(
-        flag,
-        [flag, &threads, &error](const std::string& v) {
-            if (!parseThreads(flag, v, threads, error)) throw CLI::ValidationError(flag, error);
-        },
-        help)->type_name("N");
+CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threads,
+                              std::string& error, const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            flag,
+            [flag, &threads, &error](const std::string& v) {
+                if (!parseThreads(flag, v, threads, error)) throw CLI::ValidationError(flag, error);
+            },
+            help)
+        ->type_name("N");
 }
 
-std::vector<std::string> joinValues(int argc, const char* const* argv, const std::vector<std::string>& valueFlags) {
+std::vector<std::string> joinValues(int argc, const char* const* argv,
+                                    const std::vector<std::string>& valueFlags) {
     std::vector<std::string> args;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (i + 1 < argc && std::find(valueFlags.begin(), valueFlags.end(), a) != valueFlags.end()) {
+        if (i + 1 < argc &&
+            std::find(valueFlags.begin(), valueFlags.end(), a) != valueFlags.end()) {
             args.push_back(a + "=" + argv[++i]);
             continue;
         }

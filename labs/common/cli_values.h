@@ -21,7 +21,8 @@ bool parseInt(const std::string& s, int lo, int hi, int& out);
 // "WxH", each side a decimal integer in [1, maxSide]; nothing before, between or after.
 bool parseSize(const std::string& s, int maxSide, int& width, int& height);
 
-// The message for a refused --size value, e.g. "--size '10x10junk': expected WxH with 1 <= W,H <= 8192".
+// The message for a refused --size value, e.g. "--size '10x10junk': expected WxH with 1 <= W,H <=
+// 8192".
 std::string sizeError(const std::string& flag, const std::string& value, int maxSide);
 
 // --threads N: 0 = all cores, else 1..kMaxThreads; false with a message naming the flag.
@@ -29,14 +30,15 @@ bool parseThreads(const std::string& flag, const std::string& s, int& threads, s
 
 // CLI11 glue: declares `flag` taking WxH / a thread count. A refused value sets `error` to
 // the message above and makes CLI11 throw CLI::ValidationError; the caller prints `error`.
-CLI::Option* addSizeOption(CLI::App& app, const std::string& flag, int maxSide, int& width, int& height,
-                           std::string& error, const std::string& help);
-CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threads, std::string& error,
-                              const std::string& help);
+CLI::Option* addSizeOption(CLI::App& app, const std::string& flag, int maxSide, int& width,
+                           int& height, std::string& error, const std::string& help);
+CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threads,
+                              std::string& error, const std::string& help);
 
 // CLI11 reads a value that starts with '-' (e.g. `--keys -+`) as the next flag; the old
 // hand-written parsers took the next argument whatever it was. Joins "--flag VALUE" into
 // "--flag=VALUE" for every flag in `valueFlags`, so values keep that meaning.
-std::vector<std::string> joinValues(int argc, const char* const* argv, const std::vector<std::string>& valueFlags);
+std::vector<std::string> joinValues(int argc, const char* const* argv,
+                                    const std::vector<std::string>& valueFlags);
 
 } // namespace wb::cli

@@ -29,7 +29,8 @@ int modifierBit(int key) {
     }
 }
 
-// GLUT turns Ctrl+A..Ctrl+Z into 1..26; ImGui's shortcuts look for the letter (as the backend does).
+// GLUT turns Ctrl+A..Ctrl+Z into 1..26; ImGui's shortcuts look for the letter (as the backend
+// does).
 int keyIndex(unsigned char c) {
     if (c >= 1 && c <= 26) return 'A' + c - 1;
     if (c >= 'a' && c <= 'z') return c - 'a' + 'A';
@@ -51,7 +52,10 @@ void ImGuiInput::special(int key, bool down, int mods) {
 }
 
 void ImGuiInput::mouse(int button, int state, int x, int y, int mods) {
-    int b = button == GLUT_LEFT_BUTTON ? 0 : button == GLUT_RIGHT_BUTTON ? 1 : button == GLUT_MIDDLE_BUTTON ? 2 : -1;
+    int b = button == GLUT_LEFT_BUTTON     ? 0
+            : button == GLUT_RIGHT_BUTTON  ? 1
+            : button == GLUT_MIDDLE_BUTTON ? 2
+                                           : -1;
     if (b < 0) return;
     push({Type::Button, b, state == GLUT_DOWN, x, y, 0.0f, mods});
 }
@@ -60,10 +64,13 @@ void ImGuiInput::wheel(int direction, int x, int y, int mods) {
     push({Type::Wheel, 0, false, x, y, direction > 0 ? 1.0f : -1.0f, mods});
 }
 
-void ImGuiInput::motion(int x, int y) { push({Type::Motion, 0, false, x, y, 0.0f, -1}); }
+void ImGuiInput::motion(int x, int y) {
+    push({Type::Motion, 0, false, x, y, 0.0f, -1});
+}
 
 void ImGuiInput::applyToFrame(ImGuiIO& io) {
-    // What this frame already changed; an event that would change it again waits for the next frame.
+    // What this frame already changed; an event that would change it again waits for the next
+    // frame.
     std::bitset<512> keys;
     std::bitset<5> buttons;
     bool anyButton = false, wheeled = false;
@@ -99,7 +106,8 @@ void ImGuiInput::applyToFrame(ImGuiIO& io) {
             io.MouseDown[e.code] = e.down;
             break;
         case Type::Wheel:
-            // Clicked where it was: a wheel or motion after a press waits for the frame that sees the press.
+            // Clicked where it was: a wheel or motion after a press waits for the frame that sees
+            // the press.
             if (anyButton && (io.MousePos.x != float(e.x) || io.MousePos.y != float(e.y))) return;
             io.MousePos = ImVec2(float(e.x), float(e.y));
             io.MouseWheel += e.wheel;

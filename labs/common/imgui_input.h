@@ -17,7 +17,7 @@ struct ImGuiIO;
 namespace wb {
 
 class ImGuiInput {
-public:
+  public:
     // The GLUT callbacks' arguments; `mods` is glutGetModifiers() (GLUT_ACTIVE_* bits).
     void keyboard(unsigned char c, bool down, int mods);
     void special(int key, bool down, int mods);
@@ -30,11 +30,11 @@ public:
     // Events still waiting for a frame (the shell then draws another one).
     bool pending() const { return !queue_.empty(); }
 
-private:
+  private:
     enum class Type { Char, Key, Button, Wheel, Motion };
     struct Event {
         Type type;
-        int code = 0;       // Char: character; Key: io.KeysDown index; Button: 0 left, 1 right, 2 middle
+        int code = 0; // Char: character; Key: io.KeysDown index; Button: 0 left, 1 right, 2 middle
         bool down = false;  // Key, Button
         int x = 0, y = 0;   // Button, Wheel, Motion
         float wheel = 0.0f; // Wheel: +1 up, -1 down

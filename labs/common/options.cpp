@@ -14,8 +14,8 @@ namespace {
 constexpr int kMaxSide = 8192;
 
 // The flags the shell declares that take a value (see cli::joinValues).
-const std::vector<std::string> kValueFlags = {"--out", "--size", "--keys", "--root", "--frames", "--screenshot",
-                                              "--ui-scale"};
+const std::vector<std::string> kValueFlags = {"--out",    "--size",       "--keys",    "--root",
+                                              "--frames", "--screenshot", "--ui-scale"};
 
 bool parseScale(const std::string& s, float& out) {
     char* end = nullptr;
@@ -32,8 +32,10 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     CLI::App app{"lab"};
     app.set_help_flag(); // --help prints usageText(), our own format with the lab's keys
     app.allow_extras();  // unknown flags and stray words are reported below, in our words
-    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast); // as before: the last wins
-    std::string valueError; // set by a value check before it throws, so our message is the one shown
+    app.option_defaults()->multi_option_policy(
+        CLI::MultiOptionPolicy::TakeLast); // as before: the last wins
+    std::string
+        valueError; // set by a value check before it throws, so our message is the one shown
     auto check = [&valueError](const std::string& flag, bool ok, const std::string& message) {
         if (ok) return;
         valueError = message;
@@ -54,7 +56,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     });
     app.add_option("--root", o.root);
     app.add_option_function<std::string>("--frames", [&](const std::string& v) {
-        check("--frames", cli::parseInt(v, 1, 1000000, o.frames), "--frames '" + v + "': expected a positive count");
+        check("--frames", cli::parseInt(v, 1, 1000000, o.frames),
+              "--frames '" + v + "': expected a positive count");
     });
     app.add_flag("--smoke", o.smoke);
     app.add_option("--screenshot", o.screenshot);
@@ -72,9 +75,11 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
         for (size_t i = 0; i < labOptions.size(); ++i) {
             const std::string flag = "--" + labOptions[i].name;
             if (labOptions[i].argument.empty()) {
-                labFlags[i] = app.add_flag(flag)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+                labFlags[i] =
+                    app.add_flag(flag)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
             } else {
-                labFlags[i] = app.add_option(flag, labValues[i])->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+                labFlags[i] = app.add_option(flag, labValues[i])
+                                  ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
                 valueFlags.push_back(flag);
             }
         }
@@ -85,7 +90,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
 
     const std::vector<std::string> args = cli::joinValues(argc, argv, valueFlags);
     try {
-        app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
+        app.parse(
+            std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
     } catch (const CLI::ParseError& e) {
         if (!valueError.empty()) {
             error = valueError;
@@ -109,8 +115,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
         for (size_t i = 0; i < labOptions.size(); ++i)
             if (opt == labFlags[i]) {
                 const size_t k = seen[i]++;
-                o.labOptions.emplace_back(labOptions[i].name,
-                                          labOptions[i].argument.empty() ? "1" : labValues[i].at(k));
+                o.labOptions.emplace_back(
+                    labOptions[i].name, labOptions[i].argument.empty() ? "1" : labValues[i].at(k));
             }
     if (o.headless && o.out.empty() && !o.help && !o.checkPanel) {
         error = "--headless needs --out FILE.png";
@@ -121,9 +127,9 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
 
 bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& error) {
     static const std::pair<const char*, int> named[] = {
-        {"left", kKeyLeft}, {"right", kKeyRight},   {"up", kKeyUp},     {"down", kKeyDown},
+        {"left", kKeyLeft},   {"right", kKeyRight},   {"up", kKeyUp},     {"down", kKeyDown},
         {"pgup", kKeyPageUp}, {"pgdn", kKeyPageDown}, {"home", kKeyHome}, {"end", kKeyEnd},
-        {"esc", 27},        {"space", ' '},         {"{", '{'},
+        {"esc", 27},          {"space", ' '},         {"{", '{'},
     };
     codes.clear();
     for (size_t i = 0; i < keys.size(); ++i) {
@@ -147,7 +153,8 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
         for (const auto& [n, k] : named)
             if (name == n) code = k;
         int f = 0;
-        if (code < 0 && name.size() >= 2 && name[0] == 'f' && cli::parseInt(name.substr(1), 1, 12, f))
+        if (code < 0 && name.size() >= 2 && name[0] == 'f' &&
+            cli::parseInt(name.substr(1), 1, 12, f))
             code = kKeyF1 + f - 1;
         if (code < 0) {
             error = "--keys: unknown key name {" + name + "}";
@@ -167,7 +174,8 @@ std::string usageText(const std::string& program, const Lab& lab) {
     const bool fills = lab.panelFillsWindow();
     ShellOptions defaults;
     const std::string image = std::to_string(kDefaultWidth) + "x" + std::to_string(kDefaultHeight);
-    const std::string window = std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
+    const std::string window =
+        std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
     std::ostringstream s;
     s << lab.title() << "\n\n"
       << "usage: " << program << " [options]\n\n"
@@ -176,8 +184,10 @@ std::string usageText(const std::string& program, const Lab& lab) {
     if (fills)
         s << "  --size WxH            window size in pixels (default " << window << ")\n";
     else
-        s << "  --size WxH            headless: image size (default " << image << "); windowed: the scene's\n"
-          << "                        size, the panel (" << kPanelWidth << " px at --ui-scale 1) is added beside it:\n"
+        s << "  --size WxH            headless: image size (default " << image
+          << "); windowed: the scene's\n"
+          << "                        size, the panel (" << kPanelWidth
+          << " px at --ui-scale 1) is added beside it:\n"
           << "                        the window opens at " << window << " by default\n";
     s << "  --ui-scale X          panel text and widgets X times larger, 0.5..4 (projector: 2);\n"
       << "                        in the window also Ctrl+= / Ctrl+- or the panel's View slider\n"
@@ -186,17 +196,23 @@ std::string usageText(const std::string& program, const Lab& lab) {
       << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
       << "  --frames N            windowed: quit after N frames (smoke tests)\n"
       << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
-      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame apart\n"
-      << "  --check-panel         headless: lay the panel out at the default size (after --keys, then\n"
+      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame "
+         "apart\n"
+      << "  --check-panel         headless: lay the panel out at the default size (after --keys, "
+         "then\n"
       << "                        after each one-letter key) and fail if any text is clipped\n";
     for (const auto& o : lab.options()) {
         std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
-        s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what << "\n";
+        s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what
+          << "\n";
     }
     s << "\nKeys:\n";
     for (const auto& k : lab.keys())
-        s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what << "\n";
-    if (!fills) s << "  h         hide/show the panel\n  +/-       zoom (also the wheel)\n  drag      rotate the scene\n";
+        s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what
+          << "\n";
+    if (!fills)
+        s << "  h         hide/show the panel\n  +/-       zoom (also the wheel)\n  drag      "
+             "rotate the scene\n";
     s << "  Ctrl+= / Ctrl+-  larger / smaller panel text\n  Esc       quit\n";
     return s.str();
 }

@@ -27,7 +27,9 @@ bool isFile(const char* path) {
 
 } // namespace
 
-float defaultPanelWidth(float scale) { return std::floor(float(kPanelWidth) * scale + 0.5f); }
+float defaultPanelWidth(float scale) {
+    return std::floor(float(kPanelWidth) * scale + 0.5f);
+}
 
 float stepUiScale(float scale, int direction) {
     if (direction == 0) return 1.0f;
@@ -47,7 +49,8 @@ std::string setupImGuiFonts(float scale) {
     if (isFile(kSansPath) && io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &config)) {
         if (isFile(kMonoPath)) g_mono = io.Fonts->AddFontFromFileTTF(kMonoPath, pixels, &config);
     } else {
-        message = std::string(kSansPath) + " not found (Debian package fonts-dejavu-core): using ImGui's built-in font";
+        message = std::string(kSansPath) +
+                  " not found (Debian package fonts-dejavu-core): using ImGui's built-in font";
         ImFontConfig builtIn;
         builtIn.SizePixels = std::round(13.0f * scale);
         io.Fonts->AddFontDefault(&builtIn);
@@ -60,7 +63,9 @@ std::string setupImGuiFonts(float scale) {
     return message;
 }
 
-ImFont* panelMonoFont() { return g_mono ? g_mono : ImGui::GetFont(); }
+ImFont* panelMonoFont() {
+    return g_mono ? g_mono : ImGui::GetFont();
+}
 
 namespace {
 
@@ -81,7 +86,8 @@ void keyTable(const std::vector<KeyHelp>& keys) {
 
 } // namespace
 
-void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, bool alwaysScrollbar) {
+void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
+               bool alwaysScrollbar) {
     const bool fills = lab.panelFillsWindow();
     ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
     if (alwaysScrollbar) flags |= ImGuiWindowFlags_AlwaysVerticalScrollbar;
@@ -94,9 +100,11 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, b
         // never so wide that the scene disappears.
         const float minWidth = std::min(defaultPanelWidth(p.uiScale * 0.5f), windowWidth);
         const float maxWidth = std::max(minWidth, windowWidth - 64.0f);
-        ImGui::SetNextWindowSizeConstraints(ImVec2(minWidth, windowHeight), ImVec2(maxWidth, windowHeight));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(minWidth, windowHeight),
+                                            ImVec2(maxWidth, windowHeight));
         if (p.width <= 0.0f || p.resetWidth) {
-            p.width = std::clamp(p.width > 0.0f ? p.width : defaultPanelWidth(p.uiScale), minWidth, maxWidth);
+            p.width = std::clamp(p.width > 0.0f ? p.width : defaultPanelWidth(p.uiScale), minWidth,
+                                 maxWidth);
             p.resetWidth = false;
             ImGui::SetNextWindowSize(ImVec2(p.width, windowHeight), ImGuiCond_Always);
         }
@@ -105,13 +113,15 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, b
     if (!fills) p.width = ImGui::GetWindowWidth();
 
     if (p.measureFps)
-        ImGui::Text("%.2f ms/frame (%.0f fps)", p.frameMs, p.frameMs > 0 ? 1000.0 / p.frameMs : 0.0);
+        ImGui::Text("%.2f ms/frame (%.0f fps)", p.frameMs,
+                    p.frameMs > 0 ? 1000.0 / p.frameMs : 0.0);
     else
         ImGui::Text("%.2f ms/frame", p.frameMs);
     ImGui::SameLine();
     ImGui::Checkbox("measure fps", &p.measureFps);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Redraw continuously (one core busy); off, the window redraws only on a change");
+        ImGui::SetTooltip(
+            "Redraw continuously (one core busy); off, the window redraws only on a change");
     if (ImGui::Button("Screenshot (PNG)")) p.screenshotRequested = true;
     if (!p.lastScreenshot.empty()) ImGui::TextWrapped("%s", p.lastScreenshot.c_str());
 
@@ -123,8 +133,11 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight, b
         ImGui::TextUnformatted("UI scale (Ctrl+= / Ctrl+-)");
         ImGui::SetNextItemWidth(-1.0f);
         ImGui::SliderFloat("##uiscale", &p.requestedScale, kMinUiScale, kMaxUiScale, "%.2f");
-        p.scaleSliderActive = ImGui::IsItemActive(); // the shell applies the scale when it is let go
-        if (!fills) ImGui::TextWrapped("Drag the panel's left edge to make it wider (now %.0f px).", p.width);
+        p.scaleSliderActive =
+            ImGui::IsItemActive(); // the shell applies the scale when it is let go
+        if (!fills)
+            ImGui::TextWrapped("Drag the panel's left edge to make it wider (now %.0f px).",
+                               p.width);
     }
     // The launcher's keys are the numbers on its cards: its list starts closed.
     if (ImGui::CollapsingHeader("Keys", fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {

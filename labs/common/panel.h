@@ -13,16 +13,18 @@ namespace wb {
 
 // What the panel shows besides the lab and what the user set in it.
 struct PanelState {
-    float width = 0.0f;             // current width in window pixels (0: the default for the scale)
-    bool resetWidth = false;        // apply `width` to the panel on the next frame (after a new UI scale)
-    float uiScale = 1.0f;           // the scale the fonts and style are built for
-    float requestedScale = 1.0f;    // set by the slider / Ctrl+= Ctrl+-; the shell rebuilds between frames
-    bool scaleSliderActive = false; // the UI scale slider is being dragged (rebuilding fonts would jump)
-    bool measureFps = false;        // redraw continuously so the frame time means frames per second
-    double frameMs = 0.0;           // CPU time of the last frame (smoothed while measuring fps), milliseconds
-    std::string lastScreenshot;     // path or error of the last screenshot
+    float width = 0.0f;      // current width in window pixels (0: the default for the scale)
+    bool resetWidth = false; // apply `width` to the panel on the next frame (after a new UI scale)
+    float uiScale = 1.0f;    // the scale the fonts and style are built for
+    float requestedScale =
+        1.0f; // set by the slider / Ctrl+= Ctrl+-; the shell rebuilds between frames
+    bool scaleSliderActive =
+        false;               // the UI scale slider is being dragged (rebuilding fonts would jump)
+    bool measureFps = false; // redraw continuously so the frame time means frames per second
+    double frameMs = 0.0; // CPU time of the last frame (smoothed while measuring fps), milliseconds
+    std::string lastScreenshot; // path or error of the last screenshot
     bool screenshotRequested = false;
-    bool keysLikeShell = true;      // false for the launcher: no drag / zoom / h lines
+    bool keysLikeShell = true; // false for the launcher: no drag / zoom / h lines
 };
 
 // Loads DejaVu Sans (and DejaVu Sans Mono for tables of numbers) at `scale` into ImGui's
@@ -31,7 +33,8 @@ struct PanelState {
 // window path re-creates the font texture afterwards.
 std::string setupImGuiFonts(float scale);
 
-// DejaVu Sans Mono when loaded (for aligned numbers: ImGui::PushFont(panelMonoFont())), else the default font.
+// DejaVu Sans Mono when loaded (for aligned numbers: ImGui::PushFont(panelMonoFont())), else the
+// default font.
 ImFont* panelMonoFont();
 
 // The panel's width for a scale, window pixels (kPanelWidth at 1).
@@ -40,7 +43,8 @@ float defaultPanelWidth(float scale);
 // Draws the panel docked at the right edge of a windowWidth x windowHeight window (or
 // filling it when the lab asks). alwaysScrollbar keeps the vertical scrollbar's room
 // reserved (the check lays out a tall panel but must see the width a short one has).
-void drawPanel(Lab& lab, PanelState& state, float windowWidth, float windowHeight, bool alwaysScrollbar = false);
+void drawPanel(Lab& lab, PanelState& state, float windowWidth, float windowHeight,
+               bool alwaysScrollbar = false);
 
 // Ctrl+= / Ctrl+- / Ctrl+0 steps of the UI scale, clamped to kMinUiScale..kMaxUiScale.
 float stepUiScale(float scale, int direction);

@@ -16,7 +16,7 @@ struct ClippedText {
     float overflow;     // pixels of it beyond the visible edge (right or left)
 };
 
-void start();                     // from now on, record clipped text
-std::vector<ClippedText> stop();  // stop recording; what was clipped, each string once
+void start();                    // from now on, record clipped text
+std::vector<ClippedText> stop(); // stop recording; what was clipped, each string once
 
 } // namespace wb::panelcheck

@@ -15,8 +15,15 @@ namespace wb {
 bool renderHeadless(Lab& lab, int width, int height, const std::vector<int>& keys, Image& out,
                     std::string& error) {
     // A compatibility profile: the labs use the fixed-function pipeline next to GLSL.
-    const int attribs[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                           OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_STENCIL_BITS,
+                           8,
+                           OSMESA_PROFILE,
+                           OSMESA_COMPAT_PROFILE,
+                           0};
     OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!ctx) {
         error = "OSMesa: cannot create a context";
@@ -54,10 +61,18 @@ namespace {
 // --check-panel: the lab in an OSMesa context of the scene's size, its panel laid out by
 // ImGui (no GL drawing) at the window's default size and scale, once after --keys and once
 // after each one-letter key of the lab; every clipped text is printed. Exit 0 when none.
-int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const std::vector<int>& keys) {
+int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
+               const std::vector<int>& keys) {
     const int width = opts.width, height = opts.height;
-    const int attribs[] = {OSMESA_FORMAT,  OSMESA_RGBA,           OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
-                           OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           24,
+                           OSMESA_STENCIL_BITS,
+                           8,
+                           OSMESA_PROFILE,
+                           OSMESA_COMPAT_PROFILE,
+                           0};
     OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
     std::vector<uint8_t> buffer(size_t(width) * size_t(height) * 4);
     if (!ctx || !OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
@@ -96,7 +111,8 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const st
     auto check = [&](const std::string& state) {
         glViewport(0, 0, width, height);
         lab.draw(view);
-        // Three frames: the first sizes the window, the second adds the scrollbar, the third is checked.
+        // Three frames: the first sizes the window, the second adds the scrollbar, the third is
+        // checked.
         for (int frame = 0; frame < 3; ++frame) {
             io.DeltaTime = 1.0f / 60.0f;
             ImGui::NewFrame();
@@ -107,8 +123,8 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const st
         for (const auto& c : panelcheck::stop()) {
             if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
             reported.push_back(c.text);
-            std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n", program, state.c_str(),
-                        c.text.c_str(), double(c.overflow), c.window.c_str());
+            std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n", program,
+                        state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str());
             ++clipped;
         }
     };
@@ -122,8 +138,9 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts, const st
     ImGui::DestroyContext();
     glFinish();
     OSMesaDestroyContext(ctx);
-    std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program, double(windowW),
-                opts.height, double(opts.uiScale), clipped, clipped == 1 ? "" : "s");
+    std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program,
+                double(windowW), opts.height, double(opts.uiScale), clipped,
+                clipped == 1 ? "" : "s");
     return clipped ? 1 : 0;
 }
 
@@ -160,7 +177,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 2;
     }
     Image img;
-    if (!renderHeadless(*lab, opts.width, opts.height, keys, img, error) || !writePng(opts.out, img, &error)) {
+    if (!renderHeadless(*lab, opts.width, opts.height, keys, img, error) ||
+        !writePng(opts.out, img, &error)) {
         std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
         return 1;
     }

@@ -13,8 +13,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -28,19 +28,20 @@ struct WindowState {
     std::unique_ptr<Lab> lab;
     ShellOptions opts;
     std::string program;
-    View view;                    // the scene's part of the window (left of the panel)
+    View view; // the scene's part of the window (left of the panel)
     int windowWidth = kDefaultWidth + kPanelWidth; // whole window, pixels
     int windowHeight = kDefaultHeight;
     bool panelVisible = true;
-    PanelState panel;             // the panel's own settings (width, UI scale, measure fps)
-    ImGuiInput input;             // GLUT events queued for ImGui, see imgui_input.h
+    PanelState panel; // the panel's own settings (width, UI scale, measure fps)
+    ImGuiInput input; // GLUT events queued for ImGui, see imgui_input.h
     int frame = 0;
-    std::vector<int> smokeKeys;   // --smoke: keys still to press, one per frame
-    int settleFrames = 0;         // frames still to draw after an event (ImGui shows hover/press a frame late)
-    bool timerPending = false;    // a glutTimerFunc redraw is on its way (busy lab)
+    std::vector<int> smokeKeys; // --smoke: keys still to press, one per frame
+    int settleFrames =
+        0; // frames still to draw after an event (ImGui shows hover/press a frame late)
+    bool timerPending = false; // a glutTimerFunc redraw is on its way (busy lab)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
-    bool dragging = false;        // left button down outside the panel
-    bool moved = false;           // the drag moved far enough to be a rotation, not a click
+    bool dragging = false;     // left button down outside the panel
+    bool moved = false;        // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
@@ -61,7 +62,9 @@ void layout() {
     g->view.height = g->windowHeight > 1 ? g->windowHeight : 1;
 }
 
-void quit() { glutLeaveMainLoop(); }
+void quit() {
+    glutLeaveMainLoop();
+}
 
 // Something changed: draw this frame and a couple more for ImGui to catch up.
 void changed() {
@@ -69,7 +72,9 @@ void changed() {
     glutPostRedisplay();
 }
 
-void setUiScale(float scale) { g->panel.requestedScale = scale; }
+void setUiScale(float scale) {
+    g->panel.requestedScale = scale;
+}
 
 void labKey(int code) {
     if (code == 27) return quit();
@@ -115,13 +120,26 @@ void applyUiScale() {
 void updateCursor() {
     int cursor = GLUT_CURSOR_LEFT_ARROW;
     switch (ImGui::GetMouseCursor()) {
-    case ImGuiMouseCursor_ResizeEW: cursor = GLUT_CURSOR_LEFT_RIGHT; break;
-    case ImGuiMouseCursor_ResizeNS: cursor = GLUT_CURSOR_UP_DOWN; break;
-    case ImGuiMouseCursor_ResizeNWSE: cursor = GLUT_CURSOR_BOTTOM_RIGHT_CORNER; break;
-    case ImGuiMouseCursor_ResizeNESW: cursor = GLUT_CURSOR_BOTTOM_LEFT_CORNER; break;
-    case ImGuiMouseCursor_TextInput: cursor = GLUT_CURSOR_TEXT; break;
-    case ImGuiMouseCursor_Hand: cursor = GLUT_CURSOR_INFO; break;
-    default: break;
+    case ImGuiMouseCursor_ResizeEW:
+        cursor = GLUT_CURSOR_LEFT_RIGHT;
+        break;
+    case ImGuiMouseCursor_ResizeNS:
+        cursor = GLUT_CURSOR_UP_DOWN;
+        break;
+    case ImGuiMouseCursor_ResizeNWSE:
+        cursor = GLUT_CURSOR_BOTTOM_RIGHT_CORNER;
+        break;
+    case ImGuiMouseCursor_ResizeNESW:
+        cursor = GLUT_CURSOR_BOTTOM_LEFT_CORNER;
+        break;
+    case ImGuiMouseCursor_TextInput:
+        cursor = GLUT_CURSOR_TEXT;
+        break;
+    case ImGuiMouseCursor_Hand:
+        cursor = GLUT_CURSOR_INFO;
+        break;
+    default:
+        break;
     }
     static int current = -1;
     if (cursor != current) glutSetCursor(current = cursor);
@@ -158,7 +176,8 @@ void display() {
     if (g->panelVisible) {
         const float before = g->panel.width;
         drawPanel(*g->lab, g->panel, float(g->windowWidth), float(g->windowHeight));
-        if (g->panel.width != before) g->settleFrames = std::max(g->settleFrames, 1); // dragged: scene follows
+        if (g->panel.width != before)
+            g->settleFrames = std::max(g->settleFrames, 1); // dragged: scene follows
     }
     ImGui::Render();
     updateCursor();
@@ -166,7 +185,8 @@ void display() {
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
     layout();
     // The whole window starts black: a lab may clear only its own part (lab 07 draws its
-    // traced image), and the panel's background is translucent, so earlier frames would show through it.
+    // traced image), and the panel's background is translucent, so earlier frames would show
+    // through it.
     glPushAttrib(GL_COLOR_BUFFER_BIT | GL_SCISSOR_BIT);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0, 0, 0, 1);
@@ -192,7 +212,8 @@ void display() {
         saveScreenshot(timestampedName());
     }
     glutSwapBuffers();
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     // Smoothed while measuring (continuous frames); else the last frame alone, since frames
     // drawn on change are few and the first ones (shaders, meshes) are slow.
     g->panel.frameMs = g->panel.measureFps && g->frame > 0 ? 0.9 * g->panel.frameMs + 0.1 * ms : ms;
@@ -236,7 +257,8 @@ void special(int key, int, int) {
     g->input.special(key, true, glutGetModifiers());
     changed();
     if (ImGui::GetIO().WantCaptureKeyboard) return;
-    if (key >= GLUT_KEY_SHIFT_L && key <= GLUT_KEY_ALT_R) return; // modifiers alone are not lab keys
+    if (key >= GLUT_KEY_SHIFT_L && key <= GLUT_KEY_ALT_R)
+        return; // modifiers alone are not lab keys
     labKey(kKeySpecial + key);
 }
 
@@ -320,7 +342,9 @@ int runLab(int argc, char** argv, LabFactory factory) {
     if (state.opts.headless) return execHeadless(argv);
     const char* displayEnv = std::getenv("DISPLAY");
     if (!displayEnv || !*displayEnv) {
-        std::fprintf(stderr, "%s: no display (DISPLAY is not set); render to a file with --headless --out FILE.png\n",
+        std::fprintf(stderr,
+                     "%s: no display (DISPLAY is not set); render to a file with --headless --out "
+                     "FILE.png\n",
                      argv[0]);
         return 2;
     }
@@ -345,7 +369,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
     layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
-        std::fprintf(stderr, "%s: GLEW: %s\n", argv[0], reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
+        std::fprintf(stderr, "%s: GLEW: %s\n", argv[0],
+                     reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
         return 1;
     }
 
@@ -358,7 +383,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
     if (!fontMessage.empty()) std::fprintf(stderr, "%s: %s\n", argv[0], fontMessage.c_str());
     ImGui_ImplGLUT_Init(); // key map and frame timing only; events go through ImGuiInput
     ImGui_ImplOpenGL2_Init();
-    io.BackendFlags |= ImGuiBackendFlags_HasMouseCursors; // updateCursor(): the panel's edge can be dragged
+    io.BackendFlags |=
+        ImGuiBackendFlags_HasMouseCursors; // updateCursor(): the panel's edge can be dragged
     glutDisplayFunc(display);
     glutReshapeFunc(reshape);
     glutKeyboardFunc(keyboard);
@@ -371,11 +397,14 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutMouseWheelFunc(wheel);
 
     state.lab->init();
-    for (int k : keys) labKey(k);
+    for (int k : keys)
+        labKey(k);
     if (state.opts.smoke)
         for (const auto& k : state.lab->keys())
-            if (k.key.size() == 1 && k.key[0] != 27) // twice: a toggle shows its other state, then returns
-                state.smokeKeys.insert(state.smokeKeys.end(), 2, static_cast<unsigned char>(k.key[0]));
+            if (k.key.size() == 1 &&
+                k.key[0] != 27) // twice: a toggle shows its other state, then returns
+                state.smokeKeys.insert(state.smokeKeys.end(), 2,
+                                       static_cast<unsigned char>(k.key[0]));
     glutMainLoop();
 
     ImGui_ImplOpenGL2_Shutdown();

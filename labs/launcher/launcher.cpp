@@ -28,11 +28,10 @@ std::string binDir() {
 
 namespace {
 
-int labCount() {
-    int n = 0;
-    while (kLabs[n].executable) ++n;
-    return n;
-}
+// The labs in kLabs (its last entry is the null terminator). A constant, so the compiler
+// sees every kLabs[i] in bounds (GCC's -Warray-bounds under the sanitizers could not).
+constexpr int kLabCount = int(sizeof kLabs / sizeof kLabs[0]) - 1;
+int labCount() { return kLabCount; }
 
 // Modification time of a file, 0 when it does not exist.
 long long mtime(const std::string& path) {
@@ -43,7 +42,8 @@ long long mtime(const std::string& path) {
 // Starts argv without waiting; -1 when it could not start.
 pid_t spawn(const std::vector<std::string>& args, bool quiet) {
     std::vector<char*> argv;
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    for (const auto& a : args)
+        argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     pid_t pid = fork();
     if (pid == 0) {
@@ -71,20 +71,22 @@ int runAndWait(const std::vector<std::string>& args) {
 std::string cacheDir() {
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
-    std::string dir = xdg && *xdg ? std::string(xdg) : home && *home ? std::string(home) + "/.cache" : "/tmp";
+    std::string dir = xdg && *xdg     ? std::string(xdg)
+                      : home && *home ? std::string(home) + "/.cache"
+                                      : "/tmp";
     return dir + "/workbench-thumbs";
 }
 
 // One lab's card: its thumbnail as a GL texture once loaded.
 struct Card {
     GLuint texture = 0;
-    std::string status; // "rendering the picture..." or why there is none
+    std::string status;  // "rendering the picture..." or why there is none
     pid_t renderer = -1; // a headless render of the thumbnail in progress
     std::string renderPath;
 };
 
 class Launcher : public Lab {
-public:
+  public:
     std::string title() const override { return "Graphics lab workbench"; }
     std::vector<KeyHelp> keys() const override {
         std::vector<KeyHelp> k;
@@ -95,7 +97,8 @@ public:
     bool panelFillsWindow() const override { return true; }
     void init() override {
         cards_.resize(size_t(labCount()));
-        for (int i = 0; i < labCount(); ++i) loadThumbnail(i);
+        for (int i = 0; i < labCount(); ++i)
+            loadThumbnail(i);
     }
     ~Launcher() override {
         for (auto& c : cards_) {
@@ -110,7 +113,8 @@ public:
     }
     // While a thumbnail renders in the background, the shell keeps drawing (and we poll).
     bool busy() const override {
-        return std::any_of(cards_.begin(), cards_.end(), [](const Card& c) { return c.renderer > 0; });
+        return std::any_of(cards_.begin(), cards_.end(),
+                           [](const Card& c) { return c.renderer > 0; });
     }
     bool key(int code) override {
         int i = code - '1';
@@ -120,11 +124,15 @@ public:
     }
     void gui() override {
         pollRenderers(false);
-        ImGui::TextWrapped("Choose a lab (click its picture or press its number); it opens in its own window.");
-        const float scale = ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
+        ImGui::TextWrapped(
+            "Choose a lab (click its picture or press its number); it opens in its own window.");
+        const float scale =
+            ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
         const ImVec2 thumb(float(kThumbWidth) * 0.5f * scale, float(kThumbHeight) * 0.5f * scale);
-        const int columns = ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 260.0f * scale) ? 2 : 1;
-        if (ImGui::BeginTable("labs", columns, ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_PadOuterX)) {
+        const int columns =
+            ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 260.0f * scale) ? 2 : 1;
+        if (ImGui::BeginTable("labs", columns,
+                              ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_PadOuterX)) {
             for (int i = 0; i < labCount(); ++i) {
                 ImGui::TableNextColumn();
                 card(i, thumb);
@@ -134,14 +142,15 @@ public:
         if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
     }
 
-private:
+  private:
     void card(int i, ImVec2 thumb) {
         const LabEntry& lab = kLabs[i];
         Card& c = cards_[size_t(i)];
         ImGui::PushID(i);
         bool clicked = false;
         if (c.texture) {
-            clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
+            clicked = ImGui::ImageButton(
+                reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
         } else {
             clicked = ImGui::Button(c.status.empty() ? "(no picture)" : c.status.c_str(), thumb);
         }
@@ -203,13 +212,15 @@ private:
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.data.data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                     img.data.data());
         glBindTexture(GL_TEXTURE_2D, 0);
         c.status.clear();
         return true;
     }
 
-    // The lab runs on its own: a double fork, so it is never our zombie and we need no SIGCHLD handler.
+    // The lab runs on its own: a double fork, so it is never our zombie and we need no SIGCHLD
+    // handler.
     void start(int i) {
         std::string exe = binDir() + "/" + kLabs[i].executable;
 #if defined(WB_HEADLESS)
@@ -236,7 +247,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<Lab> makeLauncher() { return std::make_unique<Launcher>(); }
+std::unique_ptr<Lab> makeLauncher() {
+    return std::make_unique<Launcher>();
+}
 
 int renderAllHeadless(const std::string& outDir, const std::string& size) {
     mkdir(outDir.c_str(), 0755);
@@ -247,7 +260,8 @@ int renderAllHeadless(const std::string& outDir, const std::string& size) {
         std::string exe = binDir() + "/" + kLabs[i].executable + "-headless";
         std::string out = dir + "/" + kLabs[i].executable + ".png";
         int rc = runAndWait({exe, "--out", out, "--size", size});
-        std::printf("%-16s %s  %s\n", kLabs[i].executable, rc == 0 ? "ok    " : "FAILED", out.c_str());
+        std::printf("%-16s %s  %s\n", kLabs[i].executable, rc == 0 ? "ok    " : "FAILED",
+                    out.c_str());
         if (rc != 0) ++failed;
     }
     return failed;

@@ -21,7 +21,8 @@ struct PanelFixture {
     std::unique_ptr<wb::Lab> lab = wb::test::makeTestLab(&state);
     wb::PanelState panel;
     wb::ImGuiInput input;
-    const float width = float(wb::kDefaultWidth + wb::kPanelWidth), height = float(wb::kDefaultHeight);
+    const float width = float(wb::kDefaultWidth + wb::kPanelWidth),
+                height = float(wb::kDefaultHeight);
 
     PanelFixture() {
         ImGui::CreateContext();
@@ -45,7 +46,8 @@ struct PanelFixture {
     }
     // Frames until the queue is empty, and two more (the shell draws these after any event).
     void settle() {
-        for (int i = 0; i < 100 && input.pending(); ++i) frame();
+        for (int i = 0; i < 100 && input.pending(); ++i)
+            frame();
         frame();
         frame();
     }
@@ -77,7 +79,8 @@ TEST_CASE("Shift+letter then the wheel scrolls the panel down, not sideways", "[
     f.input.keyboard('N', true, GLUT_ACTIVE_SHIFT);
     f.input.keyboard('N', false, GLUT_ACTIVE_SHIFT);
     f.input.special(GLUT_KEY_SHIFT_L, false, GLUT_ACTIVE_SHIFT);
-    for (int i = 0; i < 3; ++i) f.input.wheel(-1, x, y, 0);
+    for (int i = 0; i < 3; ++i)
+        f.input.wheel(-1, x, y, 0);
     f.settle();
     CHECK(w->Scroll.x == 0.0f);
     CHECK(w->Scroll.y > 0.0f); // the wheel did scroll, downwards
@@ -89,7 +92,8 @@ TEST_CASE("Shift+letter then the wheel scrolls the panel down, not sideways", "[
     CHECK(w->Scroll.x > 0.0f);
 }
 
-TEST_CASE("a click whose press and release arrive before one frame still clicks", "[shell][input]") {
+TEST_CASE("a click whose press and release arrive before one frame still clicks",
+          "[shell][input]") {
     PanelFixture f;
     f.settle();
     const int x = int(f.state.buttonX), y = int(f.state.buttonY);
