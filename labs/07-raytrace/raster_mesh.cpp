@@ -43,7 +43,7 @@ constexpr int kCoarsestSegments = 4; // around a circle once the budget forces c
 struct Builder {
     std::map<int, MeshBatch> batches;
     long long triangles = 0;
-    bool countOnly = false;             // count the triangles a primitive makes, store nothing
+    bool countOnly = false;               // count the triangles a primitive makes, store nothing
     std::map<int, long long> perMaterial; // count mode: triangles per material
 
     // Adds a triangle wound counter-clockwise as seen from the side its normals point to
@@ -155,9 +155,9 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             kPi * std::sqrt(std::max(radiusPixels, 0.0) / opt.maxErrorPixels) * std::sqrt(level);
         // The floor coarsens with the level too (smoothly: a jump from 8 to 4 segments
         // would halve a scene of small spheres at the first step below 1).
-        const int lo = std::min(
-            opt.minSegments,
-            std::max(kCoarsestSegments, int(std::ceil(opt.minSegments * std::sqrt(level)))));
+        const int lo =
+            std::min(opt.minSegments, std::max(kCoarsestSegments,
+                                               int(std::ceil(opt.minSegments * std::sqrt(level)))));
         return std::clamp(int(std::ceil(n)), lo, opt.maxSegments);
     };
     auto cells = [&](double lengthPixels) {
@@ -363,7 +363,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
     counter.perMaterial.clear();
     counter.triangles = 0;
     size_t cut = scene.primitives.size(); // primitives [cut, end) go into the stand-in
-    Builder one; // one primitive's count
+    Builder one;                          // one primitive's count
     one.countOnly = true;
     for (size_t i = 0; i < scene.primitives.size(); ++i) {
         one.triangles = 0;
