@@ -23,6 +23,11 @@ using Catch::Matchers::StartsWith;
 
 namespace {
 
+// The bytes of a string literal with its embedded NULs, without the terminator.
+template <std::size_t N> std::string bytes(const char (&s)[N]) {
+    return std::string(s, N - 1);
+}
+
 std::string tempPath(const std::string& name) {
     return std::string(WB_TEST_TMP) + "/" + name;
 }
@@ -189,10 +194,9 @@ TEST_CASE("rt_nff: messages for line ends, BOM, control bytes, NUL and cut comma
     CHECK(esc == "t.nff:1: unknown command '\\x1b]0;owned\\x07'");
     CHECK(esc.find('\x1b') == std::string::npos);
     // A NUL inside a number is not ignored, one in a command does not cut the message.
-    CHECK(nffError(std::string("s 0 0 0 1\0"
-                               "2\n",
-                               12)) == "t.nff:1: expected a number (sphere radius), got '1\\x002'");
-    CHECK(nffError(std::string("s\0x 0 0 0 1\n", 12)) == "t.nff:1: unknown command 's\\x00x'");
+    CHECK(nffError(bytes("s 0 0 0 1\0"
+                         "2\n")) == "t.nff:1: expected a number (sphere radius), got '1\\x002'");
+    CHECK(nffError(bytes("s\0x 0 0 0 1\n")) == "t.nff:1: unknown command 's\\x00x'");
     // A long token is cut in the message.
     CHECK(nffError(std::string(100000, 'z')).size() < 100);
     // Truncated l / f / b name their own line, not the next one.
@@ -293,9 +297,8 @@ TEST_CASE("rt_obj: numbers, indices and .mtl values are checked with their line"
                StartsWith(p + ":1: vertex coordinate 1e+300 is beyond the limit ±1e38"));
     CHECK_THAT(objError("v 0 nan 0\n"), StartsWith(p + ":1: non-finite vertex coordinate 'nan'"));
     CHECK_THAT(objError("v 0 0x10 0\n"), StartsWith(p + ":1: bad number '0x10'"));
-    CHECK_THAT(objError(std::string("v 0 1\0"
-                                    "5 0\n",
-                                    12)),
+    CHECK_THAT(objError(bytes("v 0 1\0"
+                              "5 0\n")),
                StartsWith(p + ":1: NUL byte"));
     // Index 0 reported line 0; a huge index wrapped and drew a triangle.
     CHECK_THAT(objError(tri + "f 1 2 3\nf 0 1 2\n"), StartsWith(p + ":5: index 0 in a face"));
