@@ -96,7 +96,9 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
     //    flush it to the disk, then rename it over the real name. A failed or short write
     //    removes the temporary file and leaves whatever was under the real name untouched.
     const size_t slash = target.rfind('/');
-    const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : target.substr(0, slash);
+    const std::string dir = slash == std::string::npos ? "."
+                            : slash == 0               ? "/"
+                                                       : target.substr(0, slash);
     const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
     std::string tmp = (slash == std::string::npos ? std::string() : target.substr(0, slash + 1)) +
                       "." + base + ".tmp-XXXXXX";
@@ -142,8 +144,9 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
 bool readImage(const std::string& path, Image& img, int channels, std::string* error) {
     // Through readRegularFile (issue 12): a FIFO, device or directory is refused and the
     // file is capped, and so is the decoded size a small header may claim.
-    constexpr std::size_t kMaxFileBytes = std::size_t(256) << 20; // 16384² RGBA is 1 GiB raw; PNGs compress
-    constexpr long long kMaxPixels = 16384LL * 16384;              // the largest GL texture we use
+    constexpr std::size_t kMaxFileBytes = std::size_t(256)
+                                          << 20;      // 16384² RGBA is 1 GiB raw; PNGs compress
+    constexpr long long kMaxPixels = 16384LL * 16384; // the largest GL texture we use
     std::string bytes, err;
     if (!readRegularFile(path, kMaxFileBytes, bytes, err)) {
         if (error) *error = err;
@@ -176,7 +179,8 @@ bool readImage(const std::string& path, Image& img, int channels, std::string* e
 
 ImageDiff compareImages(const Image& a, const Image& b) {
     ImageDiff d;
-    if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.empty()) return d;
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels || a.empty())
+        return d;
     d.sameSize = true;
     double sum = 0;
     for (size_t i = 0; i < a.data.size(); ++i) {

@@ -256,8 +256,7 @@ std::vector<std::string> warningLines(const LabScene& s) {
     for (const std::string& w : s.warnings)
         out.push_back("  " + w);
     if (s.warningCount > s.warnings.size())
-        out.push_back("  ... and " + std::to_string(s.warningCount - s.warnings.size()) +
-                      " more");
+        out.push_back("  ... and " + std::to_string(s.warningCount - s.warnings.size()) + " more");
     return out;
 }
 

@@ -43,7 +43,7 @@ constexpr int kCoarsestSegments = 4; // around a circle once the budget forces c
 struct Builder {
     std::map<int, MeshBatch> batches;
     long long triangles = 0;
-    bool countOnly = false;             // count the triangles a primitive makes, store nothing
+    bool countOnly = false;               // count the triangles a primitive makes, store nothing
     std::map<int, long long> perMaterial; // count mode: triangles per material
 
     // Adds a triangle wound counter-clockwise as seen from the side its normals point to
@@ -155,9 +155,9 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
             kPi * std::sqrt(std::max(radiusPixels, 0.0) / opt.maxErrorPixels) * std::sqrt(level);
         // The floor coarsens with the level too (smoothly: a jump from 8 to 4 segments
         // would halve a scene of small spheres at the first step below 1).
-        const int lo = std::min(
-            opt.minSegments,
-            std::max(kCoarsestSegments, int(std::ceil(opt.minSegments * std::sqrt(level)))));
+        const int lo =
+            std::min(opt.minSegments, std::max(kCoarsestSegments,
+                                               int(std::ceil(opt.minSegments * std::sqrt(level)))));
         return std::clamp(int(std::ceil(n)), lo, opt.maxSegments);
     };
     auto cells = [&](double lengthPixels) {
@@ -170,14 +170,36 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
         if (auto* s = dynamic_cast<const rt::Sphere*>(p)) {
             if (!(s->radius > 0)) return;
             const int n = segments(pixels(s->radius, s->centre, s->radius));
+            if (b.countOnly) {
+                // What the build keeps: each pole ring's n triangles with two vertices at
+                // the pole are degenerate and dropped (counting them overstated a scene
+                // of small spheres by 25% and coarsened balls 4 under the budget).
+                const long long kept = 2LL * n * std::max(n / 2, 4) - 2LL * n;
+                b.triangles += kept;
+                b.perMaterial[mat] += kept;
+                return;
+            }
             const dvec3 c = s->centre;
             const double r = s->radius;
             auto normal = [](double u, double v) {
                 return dvec3(std::cos(v) * std::cos(u), std::cos(v) * std::sin(u), std::sin(v));
             };
-            b.surface(
-                mat, [&](double u, double v) { return c + r * normal(u, v); }, normal, 0, 2 * kPi,
-                -kPi / 2, kPi / 2, n, std::max(n / 2, 4));
+            auto at = [&](double u, double v) { return c + r * normal(u, v); };
+            // As Builder::surface, without the triangle of each pole cell that has two
+            // corners at the pole (cos(±π/2) is 6e-17, not 0, so they were not always
+            // recognised as degenerate): exactly the count above.
+            const int nv = std::max(n / 2, 4);
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; j < nv; ++j) {
+                    const double ua = 2 * kPi * i / n, ub = 2 * kPi * (i + 1) / n;
+                    const double va = -kPi / 2 + kPi * j / nv, vb = -kPi / 2 + kPi * (j + 1) / nv;
+                    if (j != 0)
+                        b.tri(mat, at(ua, va), at(ub, va), at(ub, vb), normal(ua, va),
+                              normal(ub, va), normal(ub, vb));
+                    if (j != nv - 1)
+                        b.tri(mat, at(ua, va), at(ub, vb), at(ua, vb), normal(ua, va),
+                              normal(ub, vb), normal(ua, vb));
+                }
         } else if (auto* rc = dynamic_cast<const rt::Rectangle*>(p)) {
             const dvec3 c = rc->loc + 0.5 * (rc->e1 + rc->e2);
             const double r = 0.5 * glm::length(rc->e1 + rc->e2);
@@ -363,7 +385,7 @@ std::vector<MeshBatch> tessellate(const rt::Scene& scene, const ViewCamera& cam,
     counter.perMaterial.clear();
     counter.triangles = 0;
     size_t cut = scene.primitives.size(); // primitives [cut, end) go into the stand-in
-    Builder one; // one primitive's count
+    Builder one;                          // one primitive's count
     one.countOnly = true;
     for (size_t i = 0; i < scene.primitives.size(); ++i) {
         one.triangles = 0;

@@ -20,8 +20,8 @@ struct MeshBatch {
 
 struct TessellationStats {
     long long triangles = 0;
-    int skipped = 0;       // primitives the rasterizer cannot draw (counted, not hidden)
-    double level = 1.0;    // < 1: tessellated coarser than maxErrorPixels to fit the budget
+    int skipped = 0;        // primitives the rasterizer cannot draw (counted, not hidden)
+    double level = 1.0;     // < 1: tessellated coarser than maxErrorPixels to fit the budget
     long long standIns = 0; // primitives beyond the budget, drawn as one bounding box
     long long budget = 0;   // the triangle budget used
 };

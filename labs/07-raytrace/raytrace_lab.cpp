@@ -9,9 +9,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
-#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -439,7 +439,8 @@ class RaytraceLab : public Lab {
             "%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
             "%lld rays; %.2f M rays/s\n",
             job_.camera().width, job_.camera().height, st.threads, st.seconds * 1e3, st.primaryRays,
-            st.shadowRays, st.secondaryRays, st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
+            st.shadowRays, st.secondaryRays,
+            st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
         if (st.nonFinitePixels) {
             // Written black, the picture would pass for fine: main() exits non-zero.
             std::fprintf(stderr,
@@ -470,15 +471,15 @@ class RaytraceLab : public Lab {
     struct Experiment {
         bool active = false;
         bool cancelled = false;
-        size_t next = 0;  // row being measured
-        int column = 0;   // 0: with the BVH, 1: without
+        size_t next = 0; // row being measured
+        int column = 0;  // 0: with the BVH, 1: without
         std::vector<std::string> scenes;
         LabScene scene;
         bool tracing = false;
         TimingRow row;
-        TraceRequest request;    // the trace being timed
-        int run = 0;             // traces of this cell so far
-        double cellSeconds = 0;  // their total wall time
+        TraceRequest request;   // the trace being timed
+        int run = 0;            // traces of this cell so far
+        double cellSeconds = 0; // their total wall time
         std::chrono::steady_clock::time_point start;
     } experiment_;
     std::vector<std::string> experimentScenes_ = {"one-sphere", "two-spheres", "balls:1",
@@ -952,8 +953,10 @@ void RaytraceLab::stepExperiment(const View& view) {
                     e.row.bruteSeconds = estimate;
                     e.row.bruteEstimated = true;
                     if (view.headless)
-                        std::fprintf(stderr, "experiment: %s without the BVH: about %.0f s, "
-                                             "not run\n", e.row.scene.c_str(), estimate);
+                        std::fprintf(stderr,
+                                     "experiment: %s without the BVH: about %.0f s, "
+                                     "not run\n",
+                                     e.row.scene.c_str(), estimate);
                     timings_.push_back(e.row);
                     e.column = 0;
                     ++e.next;
@@ -984,8 +987,8 @@ void RaytraceLab::stepExperiment(const View& view) {
     double& rate = brute ? e.row.bruteRaysPerSecond : e.row.raysPerSecond;
     if (best < 0 || st.seconds < best) {
         best = st.seconds;
-        rate = double(st.primaryRays + st.secondaryRays + st.shadowRays) /
-               std::max(st.seconds, 1e-9);
+        rate =
+            double(st.primaryRays + st.secondaryRays + st.shadowRays) / std::max(st.seconds, 1e-9);
     }
     e.cellSeconds += st.seconds;
     if (++e.run < kExperimentRuns && e.cellSeconds < kRepeatBelowSeconds) {
@@ -1083,8 +1086,8 @@ void heatBar() {
     for (int i = 0; i < 5; ++i) {
         const float tw = ImGui::CalcTextSize(labels[i]).x;
         const float x = std::clamp(p.x + w * float(i) / 4 - tw / 2, p.x, p.x + w - tw);
-        dl->AddLine(ImVec2(p.x + w * float(i) / 4, p.y + h), ImVec2(p.x + w * float(i) / 4, p.y + h + 3),
-                    IM_COL32(220, 220, 220, 255));
+        dl->AddLine(ImVec2(p.x + w * float(i) / 4, p.y + h),
+                    ImVec2(p.x + w * float(i) / 4, p.y + h + 3), IM_COL32(220, 220, 220, 255));
         dl->AddText(ImVec2(x, q.y + 2), ImGui::GetColorU32(ImGuiCol_Text), labels[i]);
     }
     ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
@@ -1204,8 +1207,7 @@ void RaytraceLab::gui() {
     const std::vector<std::string> warns = warningLines(scene_);
     for (size_t i = 0; i < warns.size() && i < 6; ++i)
         wrapText(warns[i]);
-    if (warns.size() > 6)
-        wrapf("  ... (%zu more lines on stderr)", warns.size() - 6);
+    if (warns.size() > 6) wrapf("  ... (%zu more lines on stderr)", warns.size() - 6);
     wrapf("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
           meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
     if (meshStats_.level < 1.0 || meshStats_.standIns > 0)
@@ -1354,8 +1356,7 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::Text("%.1fms", r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0)
-                ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0) ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
                 ImGui::Text(r.bruteEstimated ? "~%.0fs" : "%.3fs", r.bruteSeconds);

@@ -34,23 +34,23 @@ struct RaytraceState {
 struct TimingRow {
     std::string scene;
     long long primitives = 0, triangles = 0;
-    double rasterMs = 0;          // mean of several frames, glFinish included
-    double traceSeconds = -1;     // BVH column: best wall time of the trace (-1: not run)
-    double bruteSeconds = -1;     // no-BVH column (-1: not run or cancelled)
-    bool bruteEstimated = false;  // bruteSeconds is an estimate (too slow to run: see panel)
-    bool bvhBuilt = false;        // false: too few objects, the "BVH" trace was brute force too
-    double accelSeconds = 0;      // BVH build
-    double raysPerSecond = 0;     // BVH column: all rays / trace time
+    double rasterMs = 0;           // mean of several frames, glFinish included
+    double traceSeconds = -1;      // BVH column: best wall time of the trace (-1: not run)
+    double bruteSeconds = -1;      // no-BVH column (-1: not run or cancelled)
+    bool bruteEstimated = false;   // bruteSeconds is an estimate (too slow to run: see panel)
+    bool bvhBuilt = false;         // false: too few objects, the "BVH" trace was brute force too
+    double accelSeconds = 0;       // BVH build
+    double raysPerSecond = 0;      // BVH column: all rays / trace time
     double bruteRaysPerSecond = 0; // no-BVH column
     int width = 0, height = 0;
 };
 // Timing experiment progress, for the panel and tests.
 struct ExperimentStatus {
     bool active = false;
-    bool cancelled = false;  // `x` stopped it; finished rows stay
-    double fraction = 0;     // 0..1 of the planned traces
-    std::string current;     // "balls:3, no BVH, run 1"
-    double seconds = 0;      // since the start
+    bool cancelled = false; // `x` stopped it; finished rows stay
+    double fraction = 0;    // 0..1 of the planned traces
+    std::string current;    // "balls:3, no BVH, run 1"
+    double seconds = 0;     // since the start
 };
 
 class RaytraceLab;

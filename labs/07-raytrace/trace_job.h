@@ -31,12 +31,12 @@ struct TraceStatus {
     double seconds = 0.0;     // since the start (the whole trace once finished)
     double secondsLeft = 0.0; // estimate from the tiles done so far
     bool running = false;
-    bool finished = false;  // every tile traced
-    bool cancelled = false; // stopped before the end
+    bool finished = false;                                        // every tile traced
+    bool cancelled = false;                                       // stopped before the end
     long long primaryRays = 0, secondaryRays = 0, shadowRays = 0; // so far while running
-    long long nonFinitePixels = 0; // must stay 0
-    int threads = 1;               // threads that traced
-    uint64_t frame = 0;            // counts start() calls
+    long long nonFinitePixels = 0;                                // must stay 0
+    int threads = 1;                                              // threads that traced
+    uint64_t frame = 0;                                           // counts start() calls
 };
 
 class TraceJob {

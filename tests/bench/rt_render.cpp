@@ -1,6 +1,8 @@
-// Renders an NFF or OBJ scene to PNG on all cores with a terminal progress bar and
-// prints the time and the ray counts (the command-line front end of issue 6 until
-// lab 07's --scene flag takes over; both call the same core functions).
+// Renders an NFF or OBJ scene to PNG on all cores with a progress bar (redrawn in place
+// on a terminal, one line at the end when stderr is piped) and prints the time and the
+// ray counts (the command-line front end of issue 6 next to lab 07's --scene flag; both
+// call the same core functions). The reader's warnings go to stderr, counted; non-finite
+// pixels and a failed PNG write are errors (exit 1, no image under the name).
 //
 // Usage: rt_render SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N]
 //                  [--depth D] [--spd] [--no-bvh]

@@ -87,9 +87,9 @@ TEST_CASE("file_read: readImage refuses a FIFO and a device and names the path",
     // A PNG header that claims 100000 x 100000 pixels is refused before decoding.
     const std::string big = tempDir() + "/big.png";
     {
-        const unsigned char png[] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13,
-                                     'I', 'H', 'D', 'R', 0, 1, 0x86, 0xa0, 0, 1, 0x86, 0xa0,
-                                     8, 2, 0, 0, 0, 0, 0, 0, 0};
+        const unsigned char png[] = {0x89, 'P',  'N', 'G', '\r', '\n', 0x1a, '\n', 0,    0, 0,
+                                     13,   'I',  'H', 'D', 'R',  0,    1,    0x86, 0xa0, 0, 1,
+                                     0x86, 0xa0, 8,   2,   0,    0,    0,    0,    0,    0, 0};
         std::ofstream f(big, std::ios::binary);
         f.write(reinterpret_cast<const char*>(png), sizeof png);
     }

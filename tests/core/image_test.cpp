@@ -15,7 +15,8 @@ using wb::Image;
 
 TEST_CASE("PNG round trip keeps every byte", "[image]") {
     Image img(7, 5, 3); // odd sizes catch row-stride mistakes
-    for (size_t i = 0; i < img.data.size(); ++i) img.data[i] = uint8_t(i * 37 % 256);
+    for (size_t i = 0; i < img.data.size(); ++i)
+        img.data[i] = uint8_t(i * 37 % 256);
     std::string path = std::string(WB_TEST_OUT_DIR) + "/image_roundtrip.png", err;
     REQUIRE(wb::writePng(path, img, &err));
     Image back;
@@ -106,7 +107,8 @@ TEST_CASE("a write cut short keeps the old PNG under the real name and no tempor
     // same path a full disk takes. The noise image does not compress below 4 KiB.
     Image big(64, 64, 3);
     std::mt19937 rng(12);
-    for (auto& b : big.data) b = uint8_t(rng() >> 24); // 12 KiB of noise: PNG cannot shrink it
+    for (auto& b : big.data)
+        b = uint8_t(rng() >> 24); // 12 KiB of noise: PNG cannot shrink it
     struct rlimit old {};
     REQUIRE(::getrlimit(RLIMIT_FSIZE, &old) == 0);
     REQUIRE(oldSize < 4096);

@@ -19,9 +19,15 @@ struct Context {
     OSMesaContext ctx = nullptr;
     std::vector<uint8_t> buffer;
     Context(int w, int h) : buffer(size_t(w) * h * 4) {
-        const int attribs[] = {OSMESA_FORMAT,       OSMESA_RGBA, OSMESA_DEPTH_BITS,
-                               24,                  OSMESA_STENCIL_BITS, 8,
-                               OSMESA_PROFILE,      OSMESA_COMPAT_PROFILE, 0};
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               24,
+                               OSMESA_STENCIL_BITS,
+                               8,
+                               OSMESA_PROFILE,
+                               OSMESA_COMPAT_PROFILE,
+                               0};
         ctx = OSMesaCreateContextAttribs(attribs, nullptr);
         REQUIRE(ctx);
         REQUIRE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
@@ -41,8 +47,7 @@ wb::View windowView() {
 
 } // namespace
 
-TEST_CASE("lab 07 experiment: every scene with and without the BVH, G stays selected",
-          "[gl]") {
+TEST_CASE("lab 07 experiment: every scene with and without the BVH, G stays selected", "[gl]") {
     auto lab = wb::makeRaytraceLab();
     wb::raytraceSetExperiment(*lab, {"one-sphere", "balls:1"}, 1e9);
     // G first, then t: the experiment must not flip the view to the raster.
@@ -148,8 +153,8 @@ TEST_CASE("lab 07: the ray counters move while a trace runs", "[gl]") {
     REQUIRE(end.finished);
     if (!midway) WARN("the trace finished before a midway status was seen");
     if (midway) {
-        CHECK(seen > 0);                     // was 0 until the end
-        CHECK(seen < end.primaryRays);       // a part of the frame
+        CHECK(seen > 0);               // was 0 until the end
+        CHECK(seen < end.primaryRays); // a part of the frame
     }
     CHECK(end.primaryRays == 400 * 300);
 }

@@ -30,9 +30,10 @@ bool readImage(const std::string& path, Image& img, int channels, std::string* e
 
 // Per-pixel absolute channel difference of two same-sized images.
 struct ImageDiff {
-    int maxDiff = 0;        // largest |a-b| over all channels, 0..255
-    double meanDiff = 0.0;  // mean |a-b| over all channels, 0..255
-    bool sameSize = false;  // false: sizes or channel counts differ, the other fields are meaningless
+    int maxDiff = 0;       // largest |a-b| over all channels, 0..255
+    double meanDiff = 0.0; // mean |a-b| over all channels, 0..255
+    bool sameSize =
+        false; // false: sizes or channel counts differ, the other fields are meaningless
 };
 ImageDiff compareImages(const Image& a, const Image& b);
 

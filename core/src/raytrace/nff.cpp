@@ -78,8 +78,8 @@ class Tokens {
         if (end == s || end != s + tok.size())
             unexpected(tok, line, std::string("a number (") + what + ")");
         if (std::isnan(v) || (std::isinf(v) && errno != ERANGE))
-            fail(line, std::string("non-finite number '") + escapeForMessage(tok) + "' for " +
-                           what);
+            fail(line,
+                 std::string("non-finite number '") + escapeForMessage(tok) + "' for " + what);
         if (std::isinf(v))
             fail(line, std::string("number '") + escapeForMessage(tok) + "' for " + what +
                            " is beyond the range of a double");
@@ -155,8 +155,7 @@ class Tokens {
             const std::string_view text = text_.substr(at_, e - at_);
             at_ = e;
             if (at_ < text_.size()) { // the line end: LF, CR LF or CR
-                if (text_[at_] == '\r' && at_ + 1 < text_.size() && text_[at_ + 1] == '\n')
-                    ++at_;
+                if (text_[at_] == '\r' && at_ + 1 < text_.size() && text_[at_ + 1] == '\n') ++at_;
                 ++at_;
             }
             ++line_;
@@ -361,9 +360,9 @@ NffDocument readNff(std::istream& in, const std::string& name) {
 NffDocument readNffFile(const std::string& path) {
     std::string text, error;
     if (!readRegularFile(path, kNffMaxBytes, text, error))
-        throw SceneFileError(path + ":0: " + (error.rfind(path + ": ", 0) == 0
-                                                  ? error.substr(path.size() + 2)
-                                                  : error));
+        throw SceneFileError(
+            path +
+            ":0: " + (error.rfind(path + ": ", 0) == 0 ? error.substr(path.size() + 2) : error));
     return readNffText(text, path);
 }
 

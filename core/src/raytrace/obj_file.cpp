@@ -6,8 +6,8 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
@@ -48,8 +48,7 @@ std::string_view skipBom(std::string_view t) {
 
 // Calls f(lineNumber, line) for every line; lines end at LF, CR LF or CR, as in
 // tinyobjloader's safeGetline, so both count lines alike.
-template <class F>
-void forEachLine(std::string_view t, F&& f) {
+template <class F> void forEachLine(std::string_view t, F&& f) {
     std::size_t at = 0;
     int line = 0;
     while (at < t.size()) {
@@ -98,10 +97,11 @@ class FileErrors {
         std::transform(lower.begin(), lower.end(), lower.begin(),
                        [](unsigned char c) { return char(std::tolower(c)); });
         const auto sign = lower.find_first_not_of("+-");
-        if (sign != std::string::npos && (lower.compare(sign, 3, "nan") == 0 ||
-                                          lower.compare(sign, 3, "inf") == 0))
+        if (sign != std::string::npos &&
+            (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0))
             fail(line, std::string("non-finite ") + what + " '" + escapeForMessage(s) + "'");
-        const bool decimal = !s.empty() && s.find_first_not_of("0123456789+-.eE") == std::string::npos;
+        const bool decimal =
+            !s.empty() && s.find_first_not_of("0123456789+-.eE") == std::string::npos;
         char* end = nullptr;
         errno = 0;
         const double v = decimal ? std::strtod(s.c_str(), &end) : 0.0;
@@ -194,8 +194,9 @@ ObjScan scanObj(std::string_view text, const std::string& path) {
                         if (ix == 0) err.fail(line, "index 0 in a face (OBJ indices start at 1)");
                         if (ix < 0 && -ix > counts[k])
                             err.fail(line, "relative index " + part + " points before the first " +
-                                               (k == 0 ? "vertex" : k == 1 ? "texture coordinate"
-                                                                           : "normal"));
+                                               (k == 0   ? "vertex"
+                                                : k == 1 ? "texture coordinate"
+                                                         : "normal"));
                     }
                     if (slash == std::string_view::npos) break;
                     rest = rest.substr(slash + 1);
@@ -243,8 +244,7 @@ void checkMtl(std::string_view text, const std::string& path) {
         }
         for (std::size_t i = 1; i < w.size(); ++i) {
             const double v = err.number(w[i], line, (cmd + " value").c_str());
-            if (!(v >= lo && v <= hi))
-                err.fail(line, cmd + " " + fmt(v) + " outside " + range);
+            if (!(v >= lo && v <= hi)) err.fail(line, cmd + " " + fmt(v) + " outside " + range);
         }
     });
 }
@@ -308,8 +308,8 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     //    and its arrays in memory anyway).
     std::string raw, why;
     if (!readRegularFile(path, kObjMaxBytes, raw, why))
-        throw SceneFileError(path + ":0: " +
-                             (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why));
+        throw SceneFileError(
+            path + ":0: " + (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why));
     const std::string_view text = skipBom(raw);
     // 2. Numbers, indices and the triangle cap, with line numbers.
     const ObjScan scan = scanObj(text, path);
@@ -344,7 +344,8 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
         std::string e = tinyErr;
         while (!e.empty() && (e.back() == '\n' || e.back() == '\r'))
             e.pop_back();
-        throw SceneFileError(path + ":0: " + (e.empty() ? "cannot parse" : escapeForMessage(e, 200)));
+        throw SceneFileError(path +
+                             ":0: " + (e.empty() ? "cannot parse" : escapeForMessage(e, 200)));
     }
     const std::size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3;
     std::vector<glm::dvec3> verts(nv), norms(nn);
@@ -394,7 +395,9 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     def.phongExp = 20;
     const int defaultMat = s.addMaterial(def);
 
-    auto faceLine = [&](std::size_t k) { return k < scan.faceLines.size() ? scan.faceLines[k] : 0; };
+    auto faceLine = [&](std::size_t k) {
+        return k < scan.faceLines.size() ? scan.faceLines[k] : 0;
+    };
     std::size_t faceNo = 0, dropped = 0;
     for (const tinyobj::shape_t& shape : shapes) {
         const auto& mesh = shape.mesh;
@@ -443,8 +446,10 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     if (rep.triangles == 0) {
         std::string what = "nothing to draw: no faces with 3 or more vertices";
         dropped += scan.droppedLines.size();
-        if (dropped) what += " (" + std::to_string(dropped) + " smaller faces dropped)";
-        else if (scan.faceLines.empty()) what += " (no `f` lines: is this an OBJ file?)";
+        if (dropped)
+            what += " (" + std::to_string(dropped) + " smaller faces dropped)";
+        else if (scan.faceLines.empty())
+            what += " (no `f` lines: is this an OBJ file?)";
         throw SceneFileError(path + ":0: " + what);
     }
     sf.hasView = false;

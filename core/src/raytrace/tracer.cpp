@@ -90,8 +90,7 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
 }
 
 template <bool kObserve>
-Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
-                       long& budget) const {
+Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget) const {
     if (ray.depth == 0)
         ++primaryRays;
     else
@@ -133,7 +132,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
         // Reflected ray: same side, same medium.
         const bool reflect = m.kr > 0 && ray.weight * m.kr / share >= settings_.minWeight;
         if (reflect && budget <= 0) {
-            if constexpr (kObserve) observer->childSkipped(RayKind::Reflected, SkipReason::RayBudget);
+            if constexpr (kObserve)
+                observer->childSkipped(RayKind::Reflected, SkipReason::RayBudget);
         } else if (reflect) {
             --budget;
             Ray r;
@@ -152,7 +152,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer,
         // body by formula (7) with the ratio of the indices on both sides.
         const bool transmit = m.kt > 0 && ray.weight * m.kt / share >= settings_.minWeight;
         if (transmit && budget <= 0) {
-            if constexpr (kObserve) observer->childSkipped(RayKind::Refracted, SkipReason::RayBudget);
+            if constexpr (kObserve)
+                observer->childSkipped(RayKind::Refracted, SkipReason::RayBudget);
         } else if (transmit) {
             std::optional<glm::dvec3> dir = ray.direction;
             Medium medium = ray.medium;

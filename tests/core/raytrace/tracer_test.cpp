@@ -242,8 +242,7 @@ TEST_CASE("textures: a plane bound by three points, a box face, an ellipsoid",
     CHECK(tracer2.trace(lat30) == glm::dvec3(1, 1, 1));
 }
 
-TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
-          "[raytrace][tracer]") {
+TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not", "[raytrace][tracer]") {
     // Issue 12 point 3: 30 stacked quads with kr = kt = 1 took 2^depth rays (depth 16
     // over 60 s at 160x120). Each hit spawns a reflected and a transmitted ray of weight
     // 1, so only the depth and the budget stop the tree.
@@ -291,7 +290,9 @@ TEST_CASE("tracer: the ray budget bounds a tree that kr + kt >= 1 does not",
     // The observer is told why a child was skipped.
     struct Count : TraceObserver {
         int budget = 0;
-        void childSkipped(RayKind, SkipReason why) override { budget += why == SkipReason::RayBudget; }
+        void childSkipped(RayKind, SkipReason why) override {
+            budget += why == SkipReason::RayBudget;
+        }
     } obs;
     TraceSettings ts;
     ts.maxDepth = 16;

@@ -23,6 +23,11 @@ using Catch::Matchers::StartsWith;
 
 namespace {
 
+// The bytes of a string literal with its embedded NULs, without the terminator.
+template <std::size_t N> std::string bytes(const char (&s)[N]) {
+    return std::string(s, N - 1);
+}
+
 std::string tempPath(const std::string& name) {
     return std::string(WB_TEST_TMP) + "/" + name;
 }
@@ -70,8 +75,8 @@ long long drawnPixels(const SceneFile& sf, int w, int h, ParallelRenderStats& st
     model.toRgb8(b, ref);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            n += img.at(x, y)[0] != ref[0] || img.at(x, y)[1] != ref[1] ||
-                 img.at(x, y)[2] != ref[2];
+            n +=
+                img.at(x, y)[0] != ref[0] || img.at(x, y)[1] != ref[1] || img.at(x, y)[2] != ref[2];
     return n;
 }
 
@@ -96,8 +101,9 @@ TEST_CASE("rt_scene_file: FIFO, directory and device as scene or .mtl are refuse
                                                          "v 0 1 0\nf 1 2 3\n");
     CHECK_THAT(loadError(obj), StartsWith(fifoMtl + ":0: is a FIFO"));
     for (const char* dev : {"/dev/zero", "/dev/urandom"}) {
-        const std::string o = writeFile("rt_dev_mtl.obj", std::string("mtllib ") + dev +
-                                                              "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        const std::string o =
+            writeFile("rt_dev_mtl.obj",
+                      std::string("mtllib ") + dev + "\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
         CHECK_THAT(loadError(o), StartsWith(std::string(dev) + ":0: is a device"));
     }
     std::remove(fifo.c_str());
@@ -155,14 +161,14 @@ TEST_CASE("rt_nff: material, light and background values outside their meaning a
     CHECK_THAT(nffError("f 1 1 1 0.5 0 -3 0 1\n"), StartsWith("t.nff:1: f Shine -3 outside"));
     CHECK_THAT(nffError("f 1 1 1 0.5 0 3 0 1e300\n"),
                StartsWith("t.nff:1: f index of refraction 1e+300 outside"));
-    CHECK_THAT(nffError("l 0 0 0 1 -1 1\n"), StartsWith("t.nff:1: light r g b -1 outside [0, 1e6]"));
+    CHECK_THAT(nffError("l 0 0 0 1 -1 1\n"),
+               StartsWith("t.nff:1: light r g b -1 outside [0, 1e6]"));
     CHECK_THAT(nffError("b 0 0 1e300\n"), StartsWith("t.nff:1: background r g b 1e+300 outside"));
     // The edges of each range are accepted.
     CHECK_NOTHROW(nff("f 1 1 1 1 1 0 1 0\nf 0 0 0 0 0 1e6 0 -1\nl 0 0 0 1e6 0 1e6\nb 1e6 0 0\n"));
 }
 
-TEST_CASE("rt_nff: too many lights are refused; the cap is reached exactly",
-          "[raytrace][nff]") {
+TEST_CASE("rt_nff: too many lights are refused; the cap is reached exactly", "[raytrace][nff]") {
     // Point 3: 200,000 `l` lines took 50 s at 160x120.
     std::string text;
     for (std::size_t i = 0; i < kNffMaxLights; ++i)
@@ -188,9 +194,9 @@ TEST_CASE("rt_nff: messages for line ends, BOM, control bytes, NUL and cut comma
     CHECK(esc == "t.nff:1: unknown command '\\x1b]0;owned\\x07'");
     CHECK(esc.find('\x1b') == std::string::npos);
     // A NUL inside a number is not ignored, one in a command does not cut the message.
-    CHECK(nffError(std::string("s 0 0 0 1\0" "2\n", 12)) ==
-          "t.nff:1: expected a number (sphere radius), got '1\\x002'");
-    CHECK(nffError(std::string("s\0x 0 0 0 1\n", 12)) == "t.nff:1: unknown command 's\\x00x'");
+    CHECK(nffError(bytes("s 0 0 0 1\0"
+                         "2\n")) == "t.nff:1: expected a number (sphere radius), got '1\\x002'");
+    CHECK(nffError(bytes("s\0x 0 0 0 1\n")) == "t.nff:1: unknown command 's\\x00x'");
     // A long token is cut in the message.
     CHECK(nffError(std::string(100000, 'z')).size() < 100);
     // Truncated l / f / b name their own line, not the next one.
@@ -201,7 +207,8 @@ TEST_CASE("rt_nff: messages for line ends, BOM, control bytes, NUL and cut comma
     CHECK_THAT(nffError("s 0 0 0 1\np 3\n0 0 0\n1 0 0\n1 1\ns 0 0 0 1\n"),
                StartsWith("t.nff:5: the line ends early: expected a number (polygon vertex)"));
     // A bad number in the middle of its own line is still reported on that line.
-    CHECK_THAT(nffError("l 1 x 2\n"), StartsWith("t.nff:1: expected a number (light x y z), got 'x'"));
+    CHECK_THAT(nffError("l 1 x 2\n"),
+               StartsWith("t.nff:1: expected a number (light x y z), got 'x'"));
 }
 
 TEST_CASE("rt_nff: view messages say what is wrong", "[raytrace][nff]") {
@@ -212,7 +219,8 @@ TEST_CASE("rt_nff: view messages say what is wrong", "[raytrace][nff]") {
     // `from 0 0 1e300` got "from == at, up along the view or angle".
     CHECK_THAT(nffError(view("0 0 1e300", "0 0 0", "0 1 0", "30")),
                StartsWith("t.nff:2: from x y z: 1e+300 is beyond the coordinate limit ±1e150"));
-    CHECK_THAT(nffError(view("0 0 1", "0 0 1", "0 1 0", "30")), StartsWith("t.nff:1: bad view: from == at"));
+    CHECK_THAT(nffError(view("0 0 1", "0 0 1", "0 1 0", "30")),
+               StartsWith("t.nff:1: bad view: from == at"));
     CHECK_THAT(nffError(view("0 0 1", "0 0 0", "0 0 5", "30")),
                StartsWith("t.nff:1: bad view: up is parallel"));
     CHECK_THAT(nffError(view("0 0 1", "0 0 0", "0 0 0", "30")),
@@ -233,8 +241,7 @@ TEST_CASE("rt_nff: geometry up to 1e150 renders, beyond it the limit is reported
     for (const char* text : {"s 0 0 0 1e150\n", "s 1e150 -1e150 1e150 1e150\n",
                              "p 3\n-1e150 -1e150 0\n1e150 -1e150 0\n0 1e150 0\n",
                              "pp 3\n-1e150 -1e150 0 0 0 1\n1e150 -1e150 0 0 0 1\n0 1e150 0 0 0 1\n",
-                             "c 0 0 -1e150 1e150 0 0 1e150 1e149\n",
-                             "s 0 0 0 1e-150\n"}) {
+                             "c 0 0 -1e150 1e150 0 0 1e150 1e149\n", "s 0 0 0 1e-150\n"}) {
         INFO(text);
         const SceneFile sf = toScene(nff(text));
         ParallelRenderStats st;
@@ -266,9 +273,11 @@ TEST_CASE("rt_nff: geometry up to 1e150 renders, beyond it the limit is reported
         CHECK(d.maxDiff == 0); // identical: exact power-of-ten scaling is not exact in
                                // binary, yet no pixel differs (measured); any acne would
     }
-    CHECK_THAT(nffError("s 0 0 0 1.0000001e150\n"),
-               StartsWith("t.nff:1: sphere radius: 1.0000001e+150 is beyond the coordinate limit ±1e150"));
-    CHECK_THAT(nffError("s 0 -1e160 0 1\n"), StartsWith("t.nff:1: sphere centre: -1e+160 is beyond"));
+    CHECK_THAT(
+        nffError("s 0 0 0 1.0000001e150\n"),
+        StartsWith("t.nff:1: sphere radius: 1.0000001e+150 is beyond the coordinate limit ±1e150"));
+    CHECK_THAT(nffError("s 0 -1e160 0 1\n"),
+               StartsWith("t.nff:1: sphere centre: -1e+160 is beyond"));
     CHECK_THAT(nffError("p 3\n0 0 0\n1 0 0\n0 1e308 0\n"),
                StartsWith("t.nff:4: polygon vertex: 1e+308 is beyond"));
     CHECK_THAT(nffError("l 1e200 0 0\n"), StartsWith("t.nff:1: light x y z: 1e+200 is beyond"));
@@ -288,23 +297,28 @@ TEST_CASE("rt_obj: numbers, indices and .mtl values are checked with their line"
                StartsWith(p + ":1: vertex coordinate 1e+300 is beyond the limit ±1e38"));
     CHECK_THAT(objError("v 0 nan 0\n"), StartsWith(p + ":1: non-finite vertex coordinate 'nan'"));
     CHECK_THAT(objError("v 0 0x10 0\n"), StartsWith(p + ":1: bad number '0x10'"));
-    CHECK_THAT(objError(std::string("v 0 1\0" "5 0\n", 12)), StartsWith(p + ":1: NUL byte"));
+    CHECK_THAT(objError(bytes("v 0 1\0"
+                              "5 0\n")),
+               StartsWith(p + ":1: NUL byte"));
     // Index 0 reported line 0; a huge index wrapped and drew a triangle.
     CHECK_THAT(objError(tri + "f 1 2 3\nf 0 1 2\n"), StartsWith(p + ":5: index 0 in a face"));
     CHECK_THAT(objError(tri + "f 1 2 99999999999999999999\n"),
                StartsWith(p + ":4: index 99999999999999999999 out of range"));
-    CHECK_THAT(objError(tri + "f 1 2 4294967299\n"), StartsWith(p + ":4: index 4294967299 out of range"));
+    CHECK_THAT(objError(tri + "f 1 2 4294967299\n"),
+               StartsWith(p + ":4: index 4294967299 out of range"));
     CHECK_THAT(objError(tri + "f 1 2 x\n"), StartsWith(p + ":4: bad index 'x'"));
     CHECK_THAT(objError(tri + "f 1 2 -4\n"), StartsWith(p + ":4: relative index -4 points before"));
     CHECK_THAT(objError(tri + "\n\nf 1 2 7\n"), StartsWith(p + ":6: vertex index out of range"));
     // CR-only line ends count lines like LF; a BOM is skipped.
-    CHECK_THAT(objError("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 9\r"), StartsWith(p + ":4: vertex index"));
+    CHECK_THAT(objError("v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 9\r"),
+               StartsWith(p + ":4: vertex index"));
     CHECK(loadSceneFile(writeFile("rt_bom.obj", "\xEF\xBB\xBF" + tri + "f 1 2 3\n"))
               .scene->primitives.size() == 1);
     CHECK(loadSceneFile(writeFile("rt_cr.obj", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r"))
               .scene->primitives.size() == 1);
     // Boundary: 1e38 loads.
-    CHECK(loadSceneFile(writeFile("rt_big.obj", "v -1e38 -1e38 0\nv 1e38 -1e38 0\nv 0 1e38 0\nf 1 2 3\n"))
+    CHECK(loadSceneFile(
+              writeFile("rt_big.obj", "v -1e38 -1e38 0\nv 1e38 -1e38 0\nv 0 1e38 0\nf 1 2 3\n"))
               .scene->primitives.size() == 1);
 
     // .mtl values (`d nan` hid the object), named by the .mtl's own line.
@@ -316,7 +330,8 @@ TEST_CASE("rt_obj: numbers, indices and .mtl values are checked with their line"
     CHECK_THAT(mtlError("newmtl a\nd nan\n"), StartsWith(mtl + ":2: non-finite d value 'nan'"));
     CHECK_THAT(mtlError("newmtl a\n\nKd 1 2 0\n"), StartsWith(mtl + ":3: Kd 2 outside [0, 1]"));
     CHECK_THAT(mtlError("newmtl a\nNs -1\n"), StartsWith(mtl + ":2: Ns -1 outside"));
-    CHECK_THAT(mtlError("newmtl a\nNi 1e999\n"), StartsWith(mtl + ":2: Ni value '1e999' is beyond"));
+    CHECK_THAT(mtlError("newmtl a\nNi 1e999\n"),
+               StartsWith(mtl + ":2: Ni value '1e999' is beyond"));
     CHECK_THAT(mtlError("newmtl a\nd 1.5\n"), StartsWith(mtl + ":2: d 1.5 outside [0, 1]"));
     CHECK_THAT(mtlError("newmtl a\rKs 1 1 x\r"), StartsWith(mtl + ":2: bad number 'x'"));
     CHECK(mtlError("newmtl a\nKd 1 0 0\nd 1\nNs 10\n") == "(no error)");
@@ -352,8 +367,9 @@ TEST_CASE("rt_obj: vn nan is repaired as documented; warnings are counted and ke
     CHECK(w.warnings[1] == q + ":6: face with fewer than 3 vertices dropped");
     CHECK(w.warnings[2] == q + ":7: face with fewer than 3 vertices dropped");
     // The mtllib name comes from the file: escaped (found by fuzz_obj).
-    const SceneFile e = loadSceneFile(writeFile("rt_warn2.obj", "mtllib a\x1b[2Jb.mtl\n"
-                                                                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    const SceneFile e =
+        loadSceneFile(writeFile("rt_warn2.obj", "mtllib a\x1b[2Jb.mtl\n"
+                                                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
     REQUIRE(e.warningCount == 1);
     CHECK_THAT(e.warnings[0], Contains("a\\x1b[2Jb.mtl: material file not found"));
 }

@@ -94,8 +94,8 @@ class Tracer {
     void sampleLights(const Hit& hit, std::vector<LightSample>& out) const;
     // Π kt of the blockers met by origin + t·dir for tMin < t <= dist (dist may be inf),
     // `self` (the flat primitive the feeler starts on, or null) not counted.
-    double transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                         double dist, const Primitive* self = nullptr) const;
+    double transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin, double dist,
+                         const Primitive* self = nullptr) const;
 
     // Counters for the bench and tests (relaxed atomics: cheap, thread-safe).
     mutable std::atomic<long long> primaryRays{0}, secondaryRays{0}, shadowRays{0};
