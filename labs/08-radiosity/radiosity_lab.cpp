@@ -438,7 +438,10 @@ class RadiosityLab : public Lab {
             fc.rowProvider = [this](int i, std::vector<float>& out) {
                 std::string err;
                 const rad::HemicubeFrame fr = rad::hemicubeFrame(model_->mesh, i);
-                if (!glHemicube_.render(fr, s.hemicubeRes, GlHemicube::kNearFraction * sceneRadius_,
+                // The table's resolution, not the panel's: a slider being dragged must not
+                // make item buffer and delta table disagree.
+                const int res = model_->ff->deltaTable().resolution;
+                if (!glHemicube_.render(fr, res, GlHemicube::kNearFraction * sceneRadius_,
                                         providerItems_, err))
                     throw std::runtime_error(err);
                 rad::accumulate(providerItems_, model_->ff->deltaTable(),
@@ -643,8 +646,8 @@ class RadiosityLab : public Lab {
         try {
             if (s.method == FfMethod::GlHemicube) {
                 std::string err;
-                if (!glHemicube_.render(frame, s.hemicubeRes, GlHemicube::kNearFraction * sceneRadius_, selectedItems_,
-                                        err)) {
+                if (!glHemicube_.render(frame, ff.deltaTable().resolution,
+                                        GlHemicube::kNearFraction * sceneRadius_, selectedItems_, err)) {
                     message_ = err;
                     selected_ = -1;
                     return;
@@ -652,7 +655,7 @@ class RadiosityLab : public Lab {
                 rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
                 selectedSource_ = "GL hemicube";
             } else {
-                rad::castItemBuffer(ff.bvh(), frame, s.hemicubeRes, selectedItems_);
+                rad::castItemBuffer(ff.bvh(), frame, ff.deltaTable().resolution, selectedItems_);
                 if (s.method == FfMethod::Rays) {
                     rad::RayFormFactorConfig rc;
                     rc.samples = s.raySamples;
