@@ -452,14 +452,37 @@ class RadiosityLab : public Lab {
         fc.hemicubeResolution = s.hemicubeRes;
         fc.threads = s.threads;
         model_->solver.reset();
-        model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
         rad::SolverConfig sc;
         sc.kind = s.solver == 1   ? rad::SolverKind::Jacobi
                   : s.solver == 2 ? rad::SolverKind::GaussSeidel
                                   : rad::SolverKind::Progressive;
         sc.ambient = s.ambient;
         sc.tolerance = s.tolerance;
-        model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        try {
+            model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
+            if (s.method == FfMethod::GlHemicube && sc.kind != rad::SolverKind::Progressive) {
+                // Jacobi and Gauss-Seidel gather F·B over rows on TBB threads, where no GL
+                // context is current: every GL row is drawn here first (computeAll calls the
+                // provider serially on this thread) and the sweeps read the stored matrix.
+                if (!model_->ff->stored())
+                    throw std::runtime_error("Jacobi / Gauss-Seidel with GL rows need F stored (at "
+                                             "most " + std::to_string(fc.maxStoredPatches) +
+                                             " patches); use progressive or the CPU hemicube");
+                model_->ff->computeAll();
+            }
+            model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        } catch (const std::exception& e) {
+            // Never leave the lab without a solver: progressive with the CPU hemicube.
+            message_ = e.what();
+            std::fprintf(stderr, "lab08: %s (progressive with the CPU hemicube instead)\n", e.what());
+            s.method = FfMethod::CpuHemicube;
+            s.solver = 0;
+            fc.method = rad::FormFactorMethod::Hemicube;
+            fc.rowProvider = nullptr;
+            sc.kind = rad::SolverKind::Progressive;
+            model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
+            model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        }
         publish();
         selectedDirty_ = selected_ >= 0;
     }
