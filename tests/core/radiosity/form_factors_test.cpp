@@ -100,6 +100,42 @@ TEST_CASE("F_ii = 0 and reciprocity on the lab's scenes (hemicube 32)") {
     }
 }
 
+TEST_CASE("F_ii = 0 and reciprocity on the lab's scenes (rays, k = 4)") {
+    for (const Scene& sc : {cornellBox(), classroom(), floorLamp()}) {
+        const double edge = sc.name == "Cornell box" ? 0.15 : 1.0;
+        const PatchMesh m = meshScene(sc, {edge});
+        FormFactors ff(m, rays(4, RayKernel::Auto));
+        const FfStats s = stats(m, ff);
+        INFO(sc.name << ": n " << m.patches.size() << " reciprocity " << s.reciprocity << " rows " << s.minRow << ".." << s.maxRow);
+        CHECK(s.maxDiag == 0.0);
+        // Measured 0.10–0.14 with 4 rays per pair on these coarse meshes (the near term samples
+        // P_i at 4 points, differently for F_ij and F_ji); bound 0.2.
+        CHECK(s.reciprocity < 0.2);
+        // Rows may exceed 1 by what (15.20) overestimates just beyond the near distance (7% at
+        // 3 patch sizes, §2.2 of docs/radiosity-core.md): measured 1.063; bound 1.1.
+        CHECK(s.maxRow < 1.1);
+    }
+}
+
+TEST_CASE("the floor lamp lights the room only through the ceiling") {
+    const PatchMesh m = meshScene(floorLamp(), {0.5});
+    FormFactors ff(m, cube(64));
+    std::vector<float> scratch;
+    double toCeiling = 0.0;
+    for (int i = 0; i < ff.size(); ++i) {
+        if (m.patches[static_cast<std::size_t>(i)].emission.x == 0.0) continue;
+        const float* row = ff.row(i, scratch);
+        for (int j = 0; j < ff.size(); ++j) {
+            if (row[j] == 0.0f) continue;
+            const std::string& name = m.surfaces[static_cast<std::size_t>(m.patches[static_cast<std::size_t>(j)].surface)].name;
+            INFO("the bulb sees " << name);
+            CHECK((name == "ceiling" || name.rfind("shade inside", 0) == 0));
+            if (name == "ceiling") toCeiling += row[j];
+        }
+    }
+    CHECK(toCeiling > 0.0);
+}
+
 TEST_CASE("rows on demand equal stored rows") {
     const PatchMesh m = meshScene(cornellBox(), {0.15});
     FormFactorConfig c = cube(32);
