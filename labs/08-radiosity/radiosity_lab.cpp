@@ -438,7 +438,10 @@ class RadiosityLab : public Lab {
             fc.rowProvider = [this](int i, std::vector<float>& out) {
                 std::string err;
                 const rad::HemicubeFrame fr = rad::hemicubeFrame(model_->mesh, i);
-                if (!glHemicube_.render(fr, s.hemicubeRes, GlHemicube::kNearFraction * sceneRadius_,
+                // The table's resolution, not the panel's: a slider being dragged must not
+                // make item buffer and delta table disagree.
+                const int res = model_->ff->deltaTable().resolution;
+                if (!glHemicube_.render(fr, res, GlHemicube::kNearFraction * sceneRadius_,
                                         providerItems_, err))
                     throw std::runtime_error(err);
                 rad::accumulate(providerItems_, model_->ff->deltaTable(),
@@ -449,14 +452,37 @@ class RadiosityLab : public Lab {
         fc.hemicubeResolution = s.hemicubeRes;
         fc.threads = s.threads;
         model_->solver.reset();
-        model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
         rad::SolverConfig sc;
         sc.kind = s.solver == 1   ? rad::SolverKind::Jacobi
                   : s.solver == 2 ? rad::SolverKind::GaussSeidel
                                   : rad::SolverKind::Progressive;
         sc.ambient = s.ambient;
         sc.tolerance = s.tolerance;
-        model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        try {
+            model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
+            if (s.method == FfMethod::GlHemicube && sc.kind != rad::SolverKind::Progressive) {
+                // Jacobi and Gauss-Seidel gather F·B over rows on TBB threads, where no GL
+                // context is current: every GL row is drawn here first (computeAll calls the
+                // provider serially on this thread) and the sweeps read the stored matrix.
+                if (!model_->ff->stored())
+                    throw std::runtime_error("Jacobi / Gauss-Seidel with GL rows need F stored (at "
+                                             "most " + std::to_string(fc.maxStoredPatches) +
+                                             " patches); use progressive or the CPU hemicube");
+                model_->ff->computeAll();
+            }
+            model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        } catch (const std::exception& e) {
+            // Never leave the lab without a solver: progressive with the CPU hemicube.
+            message_ = e.what();
+            std::fprintf(stderr, "lab08: %s (progressive with the CPU hemicube instead)\n", e.what());
+            s.method = FfMethod::CpuHemicube;
+            s.solver = 0;
+            fc.method = rad::FormFactorMethod::Hemicube;
+            fc.rowProvider = nullptr;
+            sc.kind = rad::SolverKind::Progressive;
+            model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
+            model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        }
         publish();
         selectedDirty_ = selected_ >= 0;
     }
@@ -643,8 +669,8 @@ class RadiosityLab : public Lab {
         try {
             if (s.method == FfMethod::GlHemicube) {
                 std::string err;
-                if (!glHemicube_.render(frame, s.hemicubeRes, GlHemicube::kNearFraction * sceneRadius_, selectedItems_,
-                                        err)) {
+                if (!glHemicube_.render(frame, ff.deltaTable().resolution,
+                                        GlHemicube::kNearFraction * sceneRadius_, selectedItems_, err)) {
                     message_ = err;
                     selected_ = -1;
                     return;
@@ -652,7 +678,7 @@ class RadiosityLab : public Lab {
                 rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
                 selectedSource_ = "GL hemicube";
             } else {
-                rad::castItemBuffer(ff.bvh(), frame, s.hemicubeRes, selectedItems_);
+                rad::castItemBuffer(ff.bvh(), frame, ff.deltaTable().resolution, selectedItems_);
                 if (s.method == FfMethod::Rays) {
                     rad::RayFormFactorConfig rc;
                     rc.samples = s.raySamples;

@@ -242,14 +242,19 @@ int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const Refi
                                     " radiosities for " + std::to_string(n) + " patches");
     if (config.maxLevel > 12)
         throw std::invalid_argument("radiosity refine: maxLevel above 12 leaves the lattice");
-    // 1. Brightness per patch (max channel) and the scene's largest.
+    // 1. Brightness per patch (max channel) and the largest over the patches that do not emit:
+    //    the threshold is about reflected light (an emitter ~17× brighter than the walls, as
+    //    in the Cornell box, would otherwise make it split nothing). All patches if all emit.
     std::vector<double> lum(n);
-    double top = 0.0;
+    double top = 0.0, topAll = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         lum[i] = std::max({B[i].x, B[i].y, B[i].z});
         if (!std::isfinite(lum[i])) throw std::invalid_argument("radiosity refine: non-finite B");
-        top = std::max(top, lum[i]);
+        topAll = std::max(topAll, lum[i]);
+        const glm::dvec3& e = mesh.patches[i].emission;
+        if (e.x == 0.0 && e.y == 0.0 && e.z == 0.0) top = std::max(top, lum[i]);
     }
+    if (top == 0.0) top = topAll;
     // 2. Neighbours through shared outline vertices (edge or corner contact, same surface).
     std::vector<std::vector<int>> byVertex(mesh.vertices.size());
     for (std::size_t i = 0; i < n; ++i)

@@ -30,14 +30,15 @@ TEST_CASE("plate-to-plate F from patches against the closed forms") {
     const PatchMesh per = meshScene(perpendicularPlates(1, 1, 1), {0.25});
     const double exPar = parallelRectangles(1, 1, 1), exPer = perpendicularRectangles(1, 1, 1);
     struct Case { const char* name; FormFactorConfig cfg; double tolPar, tolPer; };
-    // Tolerances (relative) are measured figures rounded up ×2 (see docs/bench/radiosity.md):
-    // PointToPolygon is exact per sample point, leaving the sampling of P_i; the hemicube is a
-    // point method from patch centres (midpoint rule over P_i) plus pixel aliasing; Centres is
-    // (15.20), far off for touching patches.
+    // Tolerances (relative), each at least 2× the measured error (parallel / perpendicular):
+    //  - rays, exact point-to-polygon term, k = 16: 5.6e-4 / 2.6e-4 (sampling of P_i only);
+    //  - rays auto, k = 16: 2.7e-3 / 1.7e-3 (far pairs use (15.20) at the centres);
+    //  - hemicube 128²: 9.6e-3 / 1.0e-3 — not a resolution error (9.6e-3 at 64² and 256² too):
+    //    a hemicube measures F from the centre of each patch, i.e. the midpoint rule over P_i.
     const Case cases[] = {
-        {"rays k=16 point-to-polygon", rays(16, RayKernel::PointToPolygon), 2e-3, 5e-3},
-        {"rays k=16 auto", rays(16, RayKernel::Auto), 1e-2, 1e-2},
-        {"hemicube 128", cube(128), 1e-2, 2e-2},
+        {"rays k=16 point-to-polygon", rays(16, RayKernel::PointToPolygon), 2e-3, 1e-3},
+        {"rays k=16 auto", rays(16, RayKernel::Auto), 6e-3, 4e-3},
+        {"hemicube 128", cube(128), 2e-2, 3e-3},
     };
     for (const Case& c : cases) {
         FormFactors a(par, c.cfg), b(per, c.cfg);
@@ -46,7 +47,7 @@ TEST_CASE("plate-to-plate F from patches against the closed forms") {
         CHECK(std::abs(fPar - exPar) / exPar < c.tolPar);
         CHECK(std::abs(fPer - exPer) / exPer < c.tolPer);
     }
-    // The course's (15.20) at the centres is far off for touching patches: more than 10% here.
+    // The course's (15.20) at the centres is far off for touching patches: +16.5% here.
     FormFactors cen(per, rays(16, RayKernel::Centres));
     CHECK(std::abs(surfaceFF(per, cen, 0, 1) - exPer) / exPer > 0.1);
 }
@@ -98,6 +99,42 @@ TEST_CASE("F_ii = 0 and reciprocity on the lab's scenes (hemicube 32)") {
         // are patches that see the open front of the Cornell box or the inside of a body.
         CHECK(s.maxRow <= deltaFormFactors(32).sum + 1e-6);
     }
+}
+
+TEST_CASE("F_ii = 0 and reciprocity on the lab's scenes (rays, k = 4)") {
+    for (const Scene& sc : {cornellBox(), classroom(), floorLamp()}) {
+        const double edge = sc.name == "Cornell box" ? 0.15 : 1.0;
+        const PatchMesh m = meshScene(sc, {edge});
+        FormFactors ff(m, rays(4, RayKernel::Auto));
+        const FfStats s = stats(m, ff);
+        INFO(sc.name << ": n " << m.patches.size() << " reciprocity " << s.reciprocity << " rows " << s.minRow << ".." << s.maxRow);
+        CHECK(s.maxDiag == 0.0);
+        // Measured 0.10–0.14 with 4 rays per pair on these coarse meshes (the near term samples
+        // P_i at 4 points, differently for F_ij and F_ji); bound 0.2.
+        CHECK(s.reciprocity < 0.2);
+        // Rows may exceed 1 by what (15.20) overestimates just beyond the near distance (7% at
+        // 3 patch sizes, §2.2 of docs/radiosity-core.md): measured 1.063; bound 1.1.
+        CHECK(s.maxRow < 1.1);
+    }
+}
+
+TEST_CASE("the floor lamp lights the room only through the ceiling") {
+    const PatchMesh m = meshScene(floorLamp(), {0.5});
+    FormFactors ff(m, cube(64));
+    std::vector<float> scratch;
+    double toCeiling = 0.0;
+    for (int i = 0; i < ff.size(); ++i) {
+        if (m.patches[static_cast<std::size_t>(i)].emission.x == 0.0) continue;
+        const float* row = ff.row(i, scratch);
+        for (int j = 0; j < ff.size(); ++j) {
+            if (row[j] == 0.0f) continue;
+            const std::string& name = m.surfaces[static_cast<std::size_t>(m.patches[static_cast<std::size_t>(j)].surface)].name;
+            INFO("the bulb sees " << name);
+            CHECK((name == "ceiling" || name.rfind("shade inside", 0) == 0));
+            if (name == "ceiling") toCeiling += row[j];
+        }
+    }
+    CHECK(toCeiling > 0.0);
 }
 
 TEST_CASE("rows on demand equal stored rows") {

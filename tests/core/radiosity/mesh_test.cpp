@@ -123,3 +123,14 @@ TEST_CASE("smoothing: constant stays constant, surfaces never mix (no light leak
         CHECK(x.z == Approx(0.75).epsilon(1e-14));
     }
 }
+
+TEST_CASE("adaptive refinement ignores the emitters' brightness for its threshold") {
+    // Cornell box: B = E on the light (17), walls lit ~1: a 0.05 threshold relative to the
+    // light would split nothing; relative to the brightest wall it splits at the step.
+    PatchMesh m = meshScene(cornellBox(), {0.1});
+    std::vector<glm::dvec3> B(m.patches.size());
+    for (std::size_t i = 0; i < B.size(); ++i)
+        B[i] = m.patches[i].emission.x > 0 ? m.patches[i].emission
+                                           : glm::dvec3(m.patches[i].centre.x < 0.26 ? 1.0 : 0.5);
+    CHECK(refineAdaptive(m, B, {0.05, 1, 0.001, 100000}, nullptr) > 0);
+}

@@ -84,7 +84,7 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config);
 
 struct RefineConfig {
     // A patch is split when its radiosity differs from a neighbour's on the same surface by
-    // more than this fraction of the scene's largest radiosity (luminance, max channel).
+    // more than this fraction of the largest radiosity of the non-emitting patches (max channel).
     double threshold = 0.05;
     int maxLevel = 3;          // no patch is split more than this many times
     double minEdge = 0.005;    // metres: patches with an edge shorter than this stay whole
