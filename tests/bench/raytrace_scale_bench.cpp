@@ -9,7 +9,7 @@
 // into --out-dir DIR). With -DWORKBENCH_EMBREE=ON the same eye and shadow rays go
 // through Embree 3 too.
 //
-// Usage: raytrace_scale_bench [--out-dir DIR] [--quick]
+// Usage: raytrace_scale_bench [--out-dir DIR] [--quick] [--runs N] [--embree-only]
 #include "bench_scenes.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
@@ -287,7 +287,7 @@ std::string loadAverage() {
 
 int main(int argc, char** argv) {
     Options o;
-    bool quick = false;
+    bool quick = false, embreeOnly = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--out-dir") && i + 1 < argc)
             o.outDir = argv[++i];
@@ -295,11 +295,27 @@ int main(int argc, char** argv) {
             quick = true;
             o.runs = 1;
             o.size = 128;
+        } else if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) {
+            o.runs = std::max(1, std::atoi(argv[++i])); // frames (and Embree passes) per median
+        } else if (!std::strcmp(argv[i], "--embree-only")) {
+            embreeOnly = true; // the Embree comparison to stdout (while tuning), no report
         } else {
-            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only]\n",
+                         argv[0]);
             return 2;
         }
     }
+#ifdef WB_EMBREE
+    if (embreeOnly) {
+        if (std::system(("mkdir -p '" + o.workDir + "'").c_str()) != 0) return 1;
+        std::printf("load %s\n", loadAverage().c_str());
+        std::fputs(embreeSection(o.size, quick ? 1 : o.runs, writeMesh(o.workDir)).c_str(), stdout);
+        std::printf("load %s\n", loadAverage().c_str());
+        return 0;
+    }
+#else
+    (void)embreeOnly;
+#endif
     std::string cmd = "mkdir -p '" + o.workDir + "' '" + o.outDir + "'";
     if (std::system(cmd.c_str()) != 0) return 1;
     std::ostringstream md;

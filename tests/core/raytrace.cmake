@@ -17,6 +17,7 @@ endif()
 wb_test(raytrace_scale_test
   SOURCES
     raytrace_scale/bvh_test.cpp
+    raytrace_scale/bvh_wide_test.cpp
     raytrace_scale/nff_test.cpp
     raytrace_scale/parallel_test.cpp
   LIBS core)

@@ -1,5 +1,7 @@
 #include "core/raytrace/bvh.h"
 
+#include "bvh_internal.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -11,18 +13,9 @@
 
 namespace wb::rt {
 
-namespace {
+using namespace bvh_detail;
 
-float floatDown(double x) {
-    float f = float(x);
-    if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-}
-float floatUp(double x) {
-    float f = float(x);
-    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-}
+namespace {
 
 // A primitive's box in float, rounded outward: the build works in float (half the
 // memory traffic of double); node boxes are unions of these, so they still enclose
@@ -57,14 +50,6 @@ struct FBox {
     }
 };
 
-// A node of the tree as built (depth first, left child right after its parent).
-struct BuildNode {
-    glm::dvec3 lo, hi;    // box
-    std::uint32_t offset; // leaf: first index into order_; inner: right child index
-    std::uint16_t count;  // leaf: number of primitives; inner: 0
-    std::uint16_t axis;   // inner: split axis
-};
-
 // Bin of a centroid: clamped in float before the conversion (a huge or NaN product
 // converted to int is undefined behaviour; found by fuzz_nff).
 inline int binOf(float centre, float lo, float scale, int nb) {
@@ -77,25 +62,18 @@ inline int binOf(float centre, float lo, float scale, int nb) {
 // Beyond this depth the builder splits at the object median, so the tree depth stays
 // below kMaxDepth = kMedianDepth + log2(any input size) + slack.
 constexpr int kMedianDepth = 80;
-constexpr int kMaxDepth = 128;          // traversal stack size
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
-
-// PBRT's γ(3) margin: a box's exit distance computed in double may be short by 3
-// rounding errors; stretching it keeps grazing rays from missing a box whose
-// primitive they hit.
-constexpr double kFarScale = 1 + 2 * 3 * (std::numeric_limits<double>::epsilon() / 2) /
-                                     (1 - 3 * std::numeric_limits<double>::epsilon() / 2);
-constexpr float kFarScaleF = 1 + 2 * 3 * (std::numeric_limits<float>::epsilon() / 2) /
-                                     (1 - 3 * std::numeric_limits<float>::epsilon() / 2);
 
 } // namespace
 
 Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions options)
     : options_(options) {
+
     if (options.bins < 2 || options.bins > 256 || options.maxLeafSize < 1 ||
         options.maxLeafSize > 255 || !(options.traversalCost >= 0) ||
-        !(options.intersectionCost > 0))
-        throw std::invalid_argument("Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0");
+        !(options.intersectionCost > 0) || (options.width != 2 && options.width != 4))
+        throw std::invalid_argument(
+            "Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0, width 2 or 4");
     const auto start = std::chrono::steady_clock::now();
 
     std::vector<Ref> refs;
@@ -117,6 +95,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                           std::isfinite(r.hi[1]) && std::isfinite(r.hi[2]);
         if (!finite || b.empty() || !b.bounded() || !fits) {
             unbounded_.push_back(prims[i].get());
+            unboundedIndex_.push_back(std::uint32_t(i));
             continue;
         }
         r.prim = std::uint32_t(i);
@@ -226,7 +205,10 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 node.offset = std::uint32_t(order_.size());
                 node.count = std::uint16_t(n);
                 for (std::size_t i = task.begin; i < task.end; ++i)
+                {
                     order_.push_back(prims[refs[i].prim].get());
+                    orderIndex_.push_back(refs[i].prim);
+                }
                 build.push_back(node);
                 ++stats_.leaves;
                 stats_.sahCost += leafCost * task.box.area() / rootArea;
@@ -278,7 +260,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
     stats_.nodes = int(build.size());
     if (build.size() == 1) {
         rootLeafCount_ = build[0].count;
-    } else if (!build.empty()) {
+    } else if (!build.empty() && options_.width == 2) {
         std::vector<std::uint32_t> wide(build.size(), 0);
         std::uint32_t next = 0;
         for (std::size_t i = 0; i < build.size(); ++i)
@@ -314,6 +296,12 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     fnodes_[i].child[c] = nodes_[i].child[c];
                     fnodes_[i].count[c] = nodes_[i].count[c];
                 }
+    }
+    if (options_.width == 4) {
+        const auto t0 = std::chrono::steady_clock::now();
+        collapseWide(build.data(), build.size());
+        stats_.collapseSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen
@@ -471,6 +459,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
 }
 
 bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    if (options_.width == 4) return intersectWide(ray, tMin, tMax, hit);
     bool found = false;
     for (const Primitive* p : unbounded_)
         if (p->intersect(ray, tMin, tMax, hit)) {
@@ -489,6 +478,10 @@ bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
 
 void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
                      const std::function<bool(const Hit&)>& visit) const {
+    if (options_.width == 4) {
+        forEachHitWide(ray, tMin, tMax, visit);
+        return;
+    }
     Hit h;
     for (const Primitive* p : unbounded_)
         if (p->intersect(ray, tMin, tMax, h) && !visit(h)) return;
@@ -499,6 +492,10 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
 
 void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
                          const std::function<bool(const Primitive&)>& visit) const {
+    if (options_.width == 4) {
+        forEachBlockerWide(ray, tMin, tMax, visit);
+        return;
+    }
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
@@ -507,6 +504,7 @@ void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
 }
 
 bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
+    if (options_.width == 4) return occludedWide(ray, tMin, tMax);
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax)) return true;
     bool any = false;
