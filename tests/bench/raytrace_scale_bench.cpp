@@ -9,7 +9,7 @@
 // into --out-dir DIR). With -DWORKBENCH_EMBREE=ON the same eye and shadow rays go
 // through Embree 3 too.
 //
-// Usage: raytrace_scale_bench [--out-dir DIR] [--quick] [--runs N] [--embree-only]
+// Usage: raytrace_scale_bench [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]
 #include "bench_scenes.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
@@ -285,6 +285,62 @@ std::string loadAverage() {
 
 } // namespace
 
+// The binned SAH build rate (BVH construction alone, as Bvh reports it).
+static std::string buildRateSection(bool quick) {
+    std::ostringstream md;
+    const int threads = hardwareThreads();
+    md << "\n## Binned SAH build rate\n\nWhole BVH construction as Bvh reports it (float boxes, "
+          "binned SAH binary tree, then the collapse into the 4-wide tree with its leaf arrays; "
+          "the collapse is sequential). 1 thread: BvhOptions::buildThreads 1; "
+       << threads
+       << " threads: the parallel build (subtrees over 2048 primitives split into TBB tasks). "
+          "Median of 5 builds each, alternated.\n\n"
+          "| input | primitives | build ms, 1 thread | M primitives/s, 1 thread | of it collapse ms "
+          "| build ms, "
+       << threads << " threads | M primitives/s | speed-up | binary nodes | wide nodes | depth |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    auto row = [&](const std::string& name, const std::vector<std::unique_ptr<Primitive>>& prims) {
+        std::vector<double> t1, tn, tc;
+        BvhStats st;
+        for (int r = 0; r < 5; ++r) {
+            BvhOptions one;
+            one.buildThreads = 1;
+            Bvh b1(prims, one);
+            t1.push_back(b1.stats().buildSeconds);
+            tc.push_back(b1.stats().collapseSeconds);
+            BvhOptions all;
+            all.buildThreads = threads;
+            Bvh bn(prims, all);
+            tn.push_back(bn.stats().buildSeconds);
+            st = bn.stats();
+        }
+        const double m1 = median(t1), mn = median(tn), n = double(st.primitives);
+        md << "| " << name << " | " << withCommas(long(st.primitives)) << " | "
+           << fmt("%.1f", m1 * 1e3) << " | " << fmt("%.2f", n / m1 / 1e6) << " | "
+           << fmt("%.1f", median(tc) * 1e3) << " | " << fmt("%.1f", mn * 1e3) << " | "
+           << fmt("%.2f", n / mn / 1e6) << " | " << fmt("%.2f", m1 / mn) << " | " << st.nodes
+           << " | " << st.wideNodes << " | " << st.maxDepth << " |\n";
+    };
+    for (int sf : {5, 6}) {
+        if (quick && sf == 6) continue;
+        SceneFile s = toScene(spdBalls(sf));
+        row("balls " + std::to_string(sf), s.scene->primitives);
+    }
+    {
+        Scene s;
+        std::mt19937_64 g(7);
+        std::uniform_real_distribution<double> u(-100, 100), d(-1, 1);
+        const int n = quick ? 100000 : 1000000;
+        for (int i = 0; i < n; ++i) {
+            const glm::dvec3 c(u(g), u(g), u(g));
+            s.add(Triangle(c, c + glm::dvec3(d(g), d(g), d(g)), c + glm::dvec3(d(g), d(g), d(g))),
+                  0);
+        }
+        row("random triangles", s.primitives);
+    }
+    return md.str();
+}
+
 int main(int argc, char** argv) {
     Options o;
     bool quick = false, embreeOnly = false;
@@ -297,10 +353,13 @@ int main(int argc, char** argv) {
             o.size = 128;
         } else if (!std::strcmp(argv[i], "--runs") && i + 1 < argc) {
             o.runs = std::max(1, std::atoi(argv[++i])); // frames (and Embree passes) per median
+        } else if (!std::strcmp(argv[i], "--build-only")) {
+            std::fputs(buildRateSection(quick).c_str(), stdout); // while tuning the build
+            return 0;
         } else if (!std::strcmp(argv[i], "--embree-only")) {
             embreeOnly = true; // the Embree comparison to stdout (while tuning), no report
         } else {
-            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only]\n",
+            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]\n",
                          argv[0]);
             return 2;
         }
@@ -399,47 +458,7 @@ int main(int argc, char** argv) {
     md << "\nFirst n where the BVH is faster: **" << crossover
        << "** (the code's `kBvhCrossover` is " << kBvhCrossover << ").\n";
 
-    // Build rate.
-    md << "\n## Binned SAH build rate (one thread)\n\n| input | primitives | build ms | M "
-          "primitives/s "
-          "| nodes | depth |\n|---|---|---|---|---|---|\n";
-    for (int sf : {5, 6}) {
-        if (quick && sf == 6) continue;
-        SceneFile s = toScene(spdBalls(sf));
-        std::vector<double> t;
-        BvhStats st;
-        for (int r = 0; r < 3; ++r) {
-            Bvh b(s.scene->primitives);
-            t.push_back(b.stats().buildSeconds);
-            st = b.stats();
-        }
-        const double m = median(t);
-        md << "| balls " << sf << " | " << withCommas(long(st.primitives)) << " | "
-           << fmt("%.1f", m * 1e3) << " | " << fmt("%.2f", double(st.primitives) / m / 1e6) << " | "
-           << st.nodes << " | " << st.maxDepth << " |\n";
-    }
-    {
-        Scene s;
-        std::mt19937_64 g(7);
-        std::uniform_real_distribution<double> u(-100, 100), d(-1, 1);
-        const int n = quick ? 100000 : 1000000;
-        for (int i = 0; i < n; ++i) {
-            const glm::dvec3 c(u(g), u(g), u(g));
-            s.add(Triangle(c, c + glm::dvec3(d(g), d(g), d(g)), c + glm::dvec3(d(g), d(g), d(g))),
-                  0);
-        }
-        std::vector<double> t;
-        BvhStats st;
-        for (int r = 0; r < 3; ++r) {
-            Bvh b(s.primitives);
-            t.push_back(b.stats().buildSeconds);
-            st = b.stats();
-        }
-        const double m = median(t);
-        md << "| random triangles | " << withCommas(long(st.primitives)) << " | "
-           << fmt("%.1f", m * 1e3) << " | " << fmt("%.2f", double(st.primitives) / m / 1e6) << " | "
-           << st.nodes << " | " << st.maxDepth << " |\n";
-    }
+    md << buildRateSection(quick);
 
     // Speed against error on balls 4 (balls 3 for the plain loop, which is slow).
     std::fprintf(stderr, "speed against error\n");

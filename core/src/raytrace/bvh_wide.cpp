@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <emmintrin.h>
 #include <typeinfo>
 #include <xmmintrin.h>
@@ -85,19 +86,22 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         if (dynamic_cast<const Triangle*>(p)) return kSmoothTriangle; // the triangle's hit test
         return kOther;
     };
+    for (std::size_t i = 0; i < n; ++i) kind_[i] = kindOf(order_[i]);
     auto sortLeaf = [&](std::uint32_t first, std::uint32_t cnt) {
-        std::vector<std::pair<const Primitive*, std::uint32_t>> v;
-        for (std::uint32_t i = first; i < first + cnt; ++i) v.emplace_back(order_[i], orderIndex_[i]);
-        std::stable_sort(v.begin(), v.end(), [&](const auto& a, const auto& b) {
-            return runOf(kindOf(a.first)) < runOf(kindOf(b.first));
-        });
+        // Stable, by run: leaves are small, so insertion sort in place.
+        for (std::uint32_t k = first + 1; k < first + cnt; ++k) {
+            std::uint32_t j = k;
+            while (j > first && runOf(kind_[j - 1]) > runOf(kind_[j])) {
+                std::swap(kind_[j - 1], kind_[j]);
+                std::swap(order_[j - 1], order_[j]);
+                std::swap(orderIndex_[j - 1], orderIndex_[j]);
+                --j;
+            }
+        }
         for (std::uint32_t k = 0; k < cnt; ++k) {
             const std::uint32_t i = first + k;
-            order_[i] = v[k].first;
-            orderIndex_[i] = v[k].second;
-            kind_[i] = kindOf(v[k].first);
             if (kind_[i] == kSphere) {
-                const auto* s = static_cast<const Sphere*>(v[k].first);
+                const auto* s = static_cast<const Sphere*>(order_[i]);
                 sx_[i] = float(s->centre.x);
                 sy_[i] = float(s->centre.y);
                 sz_[i] = float(s->centre.z);
@@ -106,7 +110,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
                                std::abs(s->centre.z) + s->radius) *
                          kSphereMargin;
             } else if (runOf(kind_[i]) == kRunTriangle) {
-                const auto* t = static_cast<const Triangle*>(v[k].first);
+                const auto* t = static_cast<const Triangle*>(order_[i]);
                 const glm::dvec3* vs[3] = {&t->v0, &t->v1, &t->v2};
                 double mag = 0;
                 for (int j = 0; j < 3; ++j)
@@ -134,6 +138,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         const glm::dvec3 e = build[i].hi - build[i].lo;
         return e.x * e.y + e.y * e.z + e.z * e.x;
     };
+    wnodes_.reserve(count / 3 + 1); // a wide node replaces up to 3 inner binary nodes
     // Depth first, so a node's first inner child tends to follow it in memory.
     auto collapse = [&](auto&& self, std::size_t bi) -> std::uint32_t {
         const auto idx = std::uint32_t(wnodes_.size());
@@ -154,6 +159,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             kids[size_t(nk++)] = build[open].offset;
         }
         WideNode w;
+        std::memset(&w, 0, sizeof w); // padding too: trees compare bytewise (tests)
         for (int a = 0; a < 3; ++a)
             for (int c = 0; c < 4; ++c) {
                 w.lo[a][c] = std::numeric_limits<float>::infinity();

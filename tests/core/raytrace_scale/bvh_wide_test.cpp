@@ -378,3 +378,39 @@ TEST_CASE("rt_bvh_wide: rays grazing spheres and through triangle edges and corn
     CHECK(grazes > 100); // many of the grazing rays do touch their sphere
     CHECK(hits > 500);
 }
+
+TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread count",
+          "[raytrace][bvh]") {
+    // 12,000 primitives: subtrees above 2048 are split into TBB tasks.
+    std::mt19937_64 g(5);
+    Scene s;
+    mixedScene(s, 12000, g, 1.0);
+    auto build = [&](int threads) {
+        BvhOptions o;
+        o.buildThreads = threads;
+        return std::make_unique<Bvh>(s.primitives, o);
+    };
+    const auto one = build(1);
+    for (int threads : {0, 2, 3}) {
+        INFO("threads " << threads);
+        const auto other = build(threads);
+        CHECK(other->stats().nodes == one->stats().nodes);
+        CHECK(other->stats().leaves == one->stats().leaves);
+        CHECK(other->stats().maxDepth == one->stats().maxDepth);
+        const auto& a = one->wideNodes();
+        const auto& b = other->wideNodes();
+        REQUIRE(a.size() == b.size());
+        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Bvh::WideNode)) == 0);
+        // And the same answers, primitive for primitive.
+        for (int i = 0; i < 200; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -14, 14);
+            ray.direction = glm::normalize(rnd3(g, -5, 5) - ray.origin);
+            Hit h1, h2;
+            const bool f1 = one->intersect(ray, 0, kInf, h1);
+            REQUIRE(other->intersect(ray, 0, kInf, h2) == f1);
+            if (f1) CHECK(h1.primitive == h2.primitive);
+        }
+    }
+    CHECK_THROWS_AS(build(-1), std::invalid_argument);
+}

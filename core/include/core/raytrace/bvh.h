@@ -27,6 +27,7 @@ struct BvhOptions {
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
     int width = 4;           // 4: wide float SSE nodes and sphere leaves; 2: binary double nodes
+    int buildThreads = 0;    // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
 };
 
 struct BvhStats {
