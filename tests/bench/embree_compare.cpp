@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -43,13 +44,21 @@ template <class F> double timeMedian(int runs, F&& f) {
 
 // Medians of `runs` passes of each function, the functions taking turns in every round
 // (so a burst of other load on the shared machine hits all of them alike).
+// Times are CPU time of this thread (single-ray calls run here), not wall time: the
+// shared machine's load would otherwise dominate.
+double threadCpu() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 std::vector<double> timeAlternated(int runs, const std::vector<std::function<void()>>& fs) {
     std::vector<std::vector<double>> t(fs.size());
     for (int i = 0; i < runs; ++i)
         for (std::size_t k = 0; k < fs.size(); ++k) {
-            const auto t0 = Clock::now();
+            const double t0 = threadCpu();
             fs[k]();
-            t[k].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+            t[k].push_back(threadCpu() - t0);
         }
     std::vector<double> m;
     for (auto& v : t) m.push_back(median(v));
@@ -199,7 +208,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "user geometry calling our exact double intersection; Embree traverses in float. Ours: "
           "the 4-wide float BVH with exact double primitive tests (Bvh::intersect / "
           "Bvh::occluded); 'binary' is the binary double-box tree of before (BvhOptions::width 2) "
-          "on the same rays. Median of "
+          "on the same rays. CPU time of the one thread; median of "
        << runs << " passes, ours and Embree's alternated.\n\n"
        << "| scene | BVH build ms ours / Embree | eye M rays/s ours | binary | Embree | "
           "ours/Embree | "

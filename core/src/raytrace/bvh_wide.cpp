@@ -22,6 +22,7 @@
 #include "core/raytrace/bvh.h"
 
 #include "bvh_internal.h"
+#include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
@@ -66,10 +67,28 @@ struct Bvh::WideRay {
     __m128 fo[3], fd[3], om;
     // Triangle test: the watertight shear (kz the dominant axis of d), the origin in
     // (kx, ky, kz) order, |o|₁·margin.
+    bool triReady = false; // computed at the first triangle run (scenes without skip it)
     int k[3] = {0, 1, 2};
     __m128 to[3], shx, shy, tom;
-    // Double path.
-    glm::dvec3 o{0.0}, invd{0.0};
+    void triangleSetup() {
+        // The watertight test's axes (triangle.cpp): kz dominant, kx/ky swapped for d[kz] < 0.
+        const glm::dvec3 ad = glm::abs(d);
+        const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+        int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+        if (d[kz] < 0) std::swap(kx, ky);
+        k[0] = kx;
+        k[1] = ky;
+        k[2] = kz;
+        to[0] = _mm_set1_ps(float(o[kx]));
+        to[1] = _mm_set1_ps(float(o[ky]));
+        to[2] = _mm_set1_ps(float(o[kz]));
+        shx = _mm_set1_ps(float(d[kx] / d[kz]));
+        shy = _mm_set1_ps(float(d[ky] / d[kz]));
+        tom = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) * kTriMargin);
+        triReady = true;
+    }
+    // The ray in double.
+    glm::dvec3 o{0.0}, d{0.0}, invd{0.0};
 };
 
 void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
@@ -83,7 +102,8 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     auto kindOf = [](const Primitive* p) {
         if (typeid(*p) == typeid(Sphere)) return kSphere;
         if (typeid(*p) == typeid(Triangle)) return kTriangle;
-        if (dynamic_cast<const Triangle*>(p)) return kSmoothTriangle; // the triangle's hit test
+        if (typeid(*p) == typeid(SmoothTriangle) || dynamic_cast<const Triangle*>(p))
+            return kSmoothTriangle; // the triangle's hit test
         return kOther;
     };
     for (std::size_t i = 0; i < n; ++i) kind_[i] = kindOf(order_[i]);
@@ -191,7 +211,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
 }
 
 template <class Visit>
-bool Bvh::visitLeafWide(const WideRay& wr, std::uint32_t first, std::uint32_t count,
+bool Bvh::visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, float,
                         Visit&& visit) const {
     const std::uint32_t end = first + count;
     for (std::uint32_t r = first; r < end;) {
@@ -221,9 +241,11 @@ bool Bvh::visitLeafWide(const WideRay& wr, std::uint32_t first, std::uint32_t co
                     _mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)), _mm_mul_ps(lz, lz));
                 const __m128 rm =
                     _mm_add_ps(_mm_loadu_ps(&sr_[i]), _mm_add_ps(wr.om, _mm_loadu_ps(&sm_[i])));
-                // cmpngt: NaN counts as a candidate.
+                // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
+                // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
                 mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
             } else {
+                if (!wr.triReady) wr.triangleSetup();
                 // The watertight test's edge functions in float (same shear); rejected only
                 // when one is surely negative and another surely positive: e bounds their
                 // float error (inputs off by δ after rounding vertices and origin, the
@@ -293,6 +315,7 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
     const double dd = glm::dot(d, d);
     wr.prefilter = ok && std::abs(dd - 1) < 1e-6;
     wr.o = o;
+    wr.d = d;
     wr.invd = 1.0 / d;
     if (ok) {
         const float eps = float(om) * 0x1p-21f;
@@ -309,20 +332,7 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
         wr.tMin = _mm_set1_ps(ftMin - std::abs(ftMin) * 0x1p-20f);
         wr.farScale = _mm_set1_ps(kFarScaleF);
         wr.om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) * kSphereMargin);
-        // The watertight test's axes (triangle.cpp): kz dominant, kx/ky swapped for d[kz] < 0.
-        const glm::dvec3 ad = glm::abs(d);
-        const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-        int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-        if (d[kz] < 0) std::swap(kx, ky);
-        wr.k[0] = kx;
-        wr.k[1] = ky;
-        wr.k[2] = kz;
-        wr.to[0] = _mm_set1_ps(float(o[kx]));
-        wr.to[1] = _mm_set1_ps(float(o[ky]));
-        wr.to[2] = _mm_set1_ps(float(o[kz]));
-        wr.shx = _mm_set1_ps(float(d[kx] / d[kz]));
-        wr.shy = _mm_set1_ps(float(d[ky] / d[kz]));
-        wr.tom = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) * kTriMargin);
+
     }
     // The current limit: entries farther than the nearest hit (widened) are dropped.
     auto limitF = [&]() {
@@ -330,7 +340,7 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
         return lim > 3e38 ? std::numeric_limits<float>::infinity() : float(lim) * (1 + 0x1p-20f);
     };
     if (rootLeafCount_ > 0) {
-        visitLeafWide(wr, 0, rootLeafCount_, leaf);
+        visitLeafWide(wr, 0, rootLeafCount_, limitF(), leaf);
         return;
     }
     struct Entry {
@@ -423,7 +433,7 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
                 cur = nd.child[next];
                 continue;
             }
-            if (!visitLeafWide(wr, nd.child[next], nd.count[next], leaf)) return;
+            if (!visitLeafWide(wr, nd.child[next], nd.count[next], flim, leaf)) return;
             flim = limitF();
         }
         while (true) {
@@ -431,7 +441,7 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
             const Entry e = stack[size_t(--sp)];
             if (e.t > flim) continue;
             if (e.count > 0) {
-                if (!visitLeafWide(wr, e.child, e.count, leaf)) return;
+                if (!visitLeafWide(wr, e.child, e.count, flim, leaf)) return;
                 flim = limitF();
                 continue;
             }

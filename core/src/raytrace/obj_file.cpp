@@ -5,8 +5,11 @@
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <string_view>
 #include <fstream>
 #include <sstream>
 
@@ -35,35 +38,81 @@ bool finite3(const glm::dvec3& v) {
 }
 
 // tinyobjloader reads a malformed number as 0; this pass finds them first and names
-// the line. Only the numeric records (v, vn, vt) are checked.
+// the line. Only the numeric records (v, vn, vt) are checked. One read of the whole
+// file and a scan of its bytes (tokens split at the same whitespace as `>>`, each number
+// checked by strtod as before): an istringstream per line cost as much as the parse.
 void checkNumbers(const std::string& path) {
-    std::ifstream in(path);
-    std::string text;
+    std::string buf;
+    {
+        std::ifstream in(path, std::ios::binary);
+        in.seekg(0, std::ios::end);
+        buf.resize(std::size_t(std::max<std::streamoff>(in.tellg(), 0)));
+        in.seekg(0);
+        in.read(buf.data(), std::streamsize(buf.size()));
+        buf.resize(std::size_t(in.gcount()));
+    }
+    auto space = [](char c) {
+        return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r';
+    };
+    const char* p = buf.data();
+    const char* const end = p + buf.size();
+    char token[128];
     int line = 0;
-    while (std::getline(in, text)) {
+    while (p < end) {
         ++line;
-        std::istringstream ls(text);
-        std::string w;
-        if (!(ls >> w) || (w != "v" && w != "vn" && w != "vt")) continue;
-        const bool texcoord = w == "vt";
-        int n = 0;
-        while (ls >> w) {
-            if (w[0] == '#') break;
-            const char* s = w.c_str();
-            char* end = nullptr;
-            const double v = std::strtod(s, &end);
-            if (end == s || *end != '\0')
-                throw SceneFileError(path + ":" + std::to_string(line) + ": bad number '" + w +
-                                     "'");
-            if (!std::isfinite(v))
-                throw SceneFileError(path + ":" + std::to_string(line) +
-                                     ": non-finite vertex coordinate");
-            ++n;
+        const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
+        if (!eol) eol = end;
+        auto next = [&](const char*& q, std::size_t& len) { // next token of the line
+            while (q < eol && space(*q)) ++q;
+            const char* t = q;
+            while (q < eol && !space(*q)) ++q;
+            len = std::size_t(q - t);
+            return t;
+        };
+        const char* q = p;
+        std::size_t len;
+        const char* w = next(q, len);
+        const bool v = len == 1 && w[0] == 'v';
+        const bool vn = len == 2 && w[0] == 'v' && w[1] == 'n';
+        const bool vt = len == 2 && w[0] == 'v' && w[1] == 't';
+        if (v || vn || vt) {
+            int n = 0;
+            while (true) {
+                w = next(q, len);
+                if (len == 0 || w[0] == '#') break;
+                const std::string_view word(w, len);
+                // The usual plain decimal: from_chars (exact, no locale, no copy). Anything
+                // it does not take whole (a leading '+', hex, out of range) is judged by
+                // strtod as before; both round correctly, so verdicts are unchanged.
+                double x = 0;
+                const auto fc = std::from_chars(w, w + len, x);
+                if (fc.ec != std::errc() || fc.ptr != w + len) {
+                    std::string longWord; // only for tokens that do not fit `token`
+                    const char* str = token;
+                    if (len < sizeof token) {
+                        std::memcpy(token, w, len);
+                        token[len] = '\0';
+                    } else {
+                        longWord.assign(w, len);
+                        str = longWord.c_str();
+                    }
+                    char* stop = nullptr;
+                    x = std::strtod(str, &stop);
+                    if (stop == str || *stop != '\0')
+                        throw SceneFileError(path + ":" + std::to_string(line) + ": bad number '" +
+                                             std::string(word) + "'");
+                }
+                if (!std::isfinite(x))
+                    throw SceneFileError(path + ":" + std::to_string(line) +
+                                         ": non-finite vertex coordinate");
+                ++n;
+            }
+            const int need = vt ? 1 : 3;
+            if (n < need)
+                throw SceneFileError(path + ":" + std::to_string(line) + ": expected " +
+                                     std::to_string(need) + " numbers");
         }
-        const int need = texcoord ? 1 : 3;
-        if (n < need)
-            throw SceneFileError(path + ":" + std::to_string(line) + ": expected " +
-                                 std::to_string(need) + " numbers");
+        p = eol + 1;
     }
 }
 

@@ -96,7 +96,7 @@ class Bvh : public Aggregate {
     template <class Leaf>
     void traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) const;
     template <class Visit>
-    bool visitLeafWide(const WideRay& wr, std::uint32_t first, std::uint32_t count,
+    bool visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, float limit,
                        Visit&& visit) const;
     bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const;
     void forEachHitWide(const Ray& ray, double tMin, double tMax,
