@@ -53,6 +53,13 @@ double threadCpu() {
     return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
+// CPU time of every thread of the process.
+double processCpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 double seconds(Clock::time_point a) {
     return std::chrono::duration<double>(Clock::now() - a).count();
 }
@@ -128,6 +135,7 @@ std::string writeMesh(const std::string& dir) {
 
 struct FrameResult {
     double setupS = 0, buildS = 0, frame1 = 0, frameN = 0;
+    double cpuN = 0; // CPU time of all threads of the process during the all-threads frame
     ParallelRenderStats stats;
     double traversal1 = 0; // M primary rays/s, closest hit only, 1 thread
     std::size_t prims = 0;
@@ -175,19 +183,22 @@ FrameResult measure(const BenchScene& bs, const Options& o, bool quickRuns) {
     // maxDepth 4 (which reproduces the SPD README's ray counts, see docs/raytrace-scale.md).
     opt.trace.maxDepth = 4;
     const int runs = quickRuns ? 3 : o.runs;
+    std::vector<double> cpu;
     for (int threads : {1, hardwareThreads()}) {
         opt.threads = threads;
         std::vector<double> t;
         for (int i = 0; i < runs; ++i) {
             ParallelRenderStats st;
             // One thread: the arena of 1 runs the tiles on this thread, so its CPU time.
-            const double c0 = threadCpu();
+            const double c0 = threadCpu(), p0 = processCpu();
             renderParallel(*sf.scene, cam, model, o.size, o.size, opt, &st);
             t.push_back(threads == 1 ? threadCpu() - c0 : st.seconds);
+            if (threads != 1) cpu.push_back(processCpu() - p0);
             r.stats = st;
         }
         (threads == 1 ? r.frame1 : r.frameN) = median(t);
     }
+    r.cpuN = median(cpu);
     r.traversal1 = traversalRate(*sf.scene, cam, o.size, quickRuns ? 1 : 3);
     return r;
 }
@@ -252,11 +263,15 @@ static std::string buildRateSection(bool quick) {
     const int threads = hardwareThreads();
     md << "\n## Binned SAH build rate\n\nWhole BVH construction as Bvh reports it (float boxes, "
           "binned SAH binary tree, then the collapse into the 4-wide tree with its leaf arrays; "
-          "the collapse is sequential). 1 thread: BvhOptions::buildThreads 1; "
+          "the collapse is sequential; the width-2 column builds the binary tree of double boxes "
+          "alone, so the difference is the collapse). 1 thread: BvhOptions::buildThreads 1, "
+          "CPU time; "
        << threads
-       << " threads: the parallel build (subtrees over 2048 primitives split into TBB tasks). "
+       << " threads: the parallel build (subtrees over 2048 primitives split into TBB tasks), "
+          "wall time. "
           "Median of 5 builds each, alternated.\n\n"
-          "| input | primitives | build ms, 1 thread | M primitives/s, 1 thread | of it collapse ms "
+          "| input | primitives | build ms, 1 thread | M primitives/s, 1 thread | binary tree alone "
+          "(width 2) ms, 1 thread "
           "| build ms, "
        << threads << " threads | M primitives/s | speed-up | binary nodes | wide nodes | depth |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -269,7 +284,11 @@ static std::string buildRateSection(bool quick) {
             const double c0 = threadCpu();
             Bvh b1(prims, one);
             t1.push_back(threadCpu() - c0);
-            tc.push_back(b1.stats().collapseSeconds);
+            BvhOptions two = one;
+            two.width = 2;
+            const double c1 = threadCpu();
+            Bvh b2(prims, two);
+            tc.push_back(threadCpu() - c1);
             BvhOptions all;
             all.buildThreads = threads;
             Bvh bn(prims, all);
@@ -352,7 +371,10 @@ int main(int argc, char** argv) {
           "(TraceSettings::maxDepth 4), phong model). One-thread figures (frames, traversal, "
           "builds, the Embree comparison) are CPU time of the working thread; figures with all "
           "threads are wall time, and only they feel the other processes on this shared "
-          "machine. Load average at the start (1, 5, 15 min): "
+          "machine. 'Speed-up from CPU time' = threads × (1-thread CPU time) / (CPU time of all "
+          "threads in the all-threads frame): the speed-up the frame would have on otherwise "
+          "idle cores if its threads never waited (TBB's idle spinning counts against it). "
+          "Load average at the start (1, 5, 15 min): "
        << loadAverage() << ".\n\n";
 
     const std::string meshPath = writeMesh(o.workDir);
@@ -362,10 +384,11 @@ int main(int argc, char** argv) {
           "thread "
           "| frame ms, "
        << hardwareThreads()
-       << " threads | speed-up | eye rays | shadow rays | "
+       << " threads (wall) | speed-up (wall) | CPU ms of all threads | speed-up from CPU "
+          "time | eye rays | shadow rays | "
           "reflection+refraction rays | M rays/s, 1 thread | M rays/s, all | M eye rays/s "
           "traversal only, 1 thread |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& bs : scenes) {
         std::fprintf(stderr, "frames: %s\n", bs.name.c_str());
         const FrameResult r = measure(bs, o, quick);
@@ -375,7 +398,9 @@ int main(int argc, char** argv) {
            << fmt("%.1f", r.setupS * 1e3) << " | " << fmt("%.2f", r.buildS * 1e3) << " | "
            << (r.bvh ? std::to_string(r.nodes) + "/" + std::to_string(r.depth) : "plain loop")
            << " | " << fmt("%.1f", r.frame1 * 1e3) << " | " << fmt("%.1f", r.frameN * 1e3) << " | "
-           << fmt("%.2f", r.frame1 / r.frameN) << " | " << withCommas(s.primaryRays) << " | "
+           << fmt("%.2f", r.frame1 / r.frameN) << " | " << fmt("%.1f", r.cpuN * 1e3) << " | "
+           << fmt("%.2f", hardwareThreads() * r.frame1 / r.cpuN) << " | "
+           << withCommas(s.primaryRays) << " | "
            << withCommas(s.shadowRays) << " | " << withCommas(s.secondaryRays) << " | "
            << fmt("%.2f", rays / r.frame1 / 1e6) << " | " << fmt("%.2f", rays / r.frameN / 1e6)
            << " | " << fmt("%.2f", r.traversal1) << " |\n";
@@ -411,8 +436,9 @@ int main(int argc, char** argv) {
             std::vector<double> t;
             for (int r = 0; r < (quick ? 3 : 9); ++r) {
                 ParallelRenderStats st;
+                const double c0 = threadCpu(); // one thread: its CPU time
                 renderParallel(*sf.scene, cam, model, 160, 160, opt, &st);
-                t.push_back(st.seconds);
+                t.push_back(threadCpu() - c0);
             }
             times[k] = *std::min_element(t.begin(), t.end()); // least disturbed by other load
         }

@@ -297,6 +297,23 @@ bool Bvh::visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, f
 template <class Leaf>
 void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) const {
     if (stats_.primitives == 0) return;
+    if (rootLeafCount_ > 0) {
+        // A tree of one leaf (up to maxLeafSize primitives): the root box in double and the
+        // exact tests, without the float set-up, which costs more than it saves here.
+        double t0 = tMin, t1 = tMax;
+        for (int a = 0; a < 3; ++a) {
+            const double inv = 1.0 / ray.direction[a];
+            const bool neg = std::signbit(inv);
+            const double near = ((neg ? rootHi_[a] : rootLo_[a]) - ray.origin[a]) * inv;
+            const double far = ((neg ? rootLo_[a] : rootHi_[a]) - ray.origin[a]) * inv * kFarScale;
+            t0 = near > t0 ? near : t0; // NaN (0·inf): no limit
+            t1 = far < t1 ? far : t1;
+        }
+        if (!(t0 <= t1)) return;
+        for (std::uint32_t i = 0; i < rootLeafCount_; ++i)
+            if (!leaf(i)) return;
+        return;
+    }
     WideRay wr;
     const glm::dvec3 o = ray.origin, d = ray.direction;
     const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
@@ -339,10 +356,6 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
         const double lim = tMax * kFarScale;
         return lim > 3e38 ? std::numeric_limits<float>::infinity() : float(lim) * (1 + 0x1p-20f);
     };
-    if (rootLeafCount_ > 0) {
-        visitLeafWide(wr, 0, rootLeafCount_, limitF(), leaf);
-        return;
-    }
     struct Entry {
         std::uint32_t child;
         std::uint32_t count;
