@@ -61,7 +61,8 @@ std::vector<double> timeAlternated(int runs, const std::vector<std::function<voi
             t[k].push_back(threadCpu() - t0);
         }
     std::vector<double> m;
-    for (auto& v : t) m.push_back(median(v));
+    for (auto& v : t)
+        m.push_back(median(v));
     return m;
 }
 
@@ -317,8 +318,8 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
         };
         const std::vector<double> tEye =
             timeAlternated(runs, {eyePass(bvh), eyePass(bin), emEyePass});
-        const std::vector<double> tShadow = timeAlternated(
-            runs, {shadowPass(bvh, ourOcc), shadowPass(bin, binOcc), emShadowPass});
+        const std::vector<double> tShadow =
+            timeAlternated(runs, {shadowPass(bvh, ourOcc), shadowPass(bin, binOcc), emShadowPass});
         const double ourEye = tEye[0], binEye = tEye[1], emEye = tEye[2];
         const double ourShadow = tShadow[0], binShadow = tShadow[1], emShadow = tShadow[2];
         if (sink < 0) std::puts("");

@@ -27,9 +27,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <ctime>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <fstream>
 #include <functional>
@@ -231,10 +230,12 @@ bool plotWithGnuplot(const std::vector<ErrorRow>& rows, const std::string& dir,
           "set output 'raytrace.png'\n"
           "set datafile separator ','\n"
           "set title 'Ray tracer speed against error ("
-       << what << ", all threads)'\n"
+       << what
+       << ", all threads)'\n"
           "set xlabel 'frame time, ms'\nset ylabel 'mean |difference|, 8-bit levels'\n"
           "set key top right\nset grid\nset yrange [-0.5:*]\n"
-          "plot 'raytrace_error.csv' every ::1 using ($2==0||$2==1 ? $3 : 1/0):($2==0||$2==1 ? $4 : "
+          "plot 'raytrace_error.csv' every ::1 using ($2==0||$2==1 ? $3 : 1/0):($2==0||$2==1 ? $4 "
+          ": "
           "1/0) with linespoints lc rgb 'red' pt 7 title 'depth limit 5..0', \\\n"
           "     '' every ::1 using ($2==0||$2==2 ? $3 : 1/0):($2==0||$2==2 ? $4 : 1/0) with "
           "linespoints lc rgb 'blue' pt 5 title 'weight cut-off', \\\n"
@@ -270,7 +271,8 @@ static std::string buildRateSection(bool quick) {
        << " threads: the parallel build (subtrees over 2048 primitives split into TBB tasks), "
           "wall time. "
           "Median of 5 builds each, alternated.\n\n"
-          "| input | primitives | build ms, 1 thread | M primitives/s, 1 thread | binary tree alone "
+          "| input | primitives | build ms, 1 thread | M primitives/s, 1 thread | binary tree "
+          "alone "
           "(width 2) ms, 1 thread "
           "| build ms, "
        << threads << " threads | M primitives/s | speed-up | binary nodes | wide nodes | depth |\n"
@@ -340,8 +342,10 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--embree-only")) {
             embreeOnly = true; // the Embree comparison to stdout (while tuning), no report
         } else {
-            std::fprintf(stderr, "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]\n",
+                argv[0]);
             return 2;
         }
     }
@@ -400,10 +404,9 @@ int main(int argc, char** argv) {
            << " | " << fmt("%.1f", r.frame1 * 1e3) << " | " << fmt("%.1f", r.frameN * 1e3) << " | "
            << fmt("%.2f", r.frame1 / r.frameN) << " | " << fmt("%.1f", r.cpuN * 1e3) << " | "
            << fmt("%.2f", hardwareThreads() * r.frame1 / r.cpuN) << " | "
-           << withCommas(s.primaryRays) << " | "
-           << withCommas(s.shadowRays) << " | " << withCommas(s.secondaryRays) << " | "
-           << fmt("%.2f", rays / r.frame1 / 1e6) << " | " << fmt("%.2f", rays / r.frameN / 1e6)
-           << " | " << fmt("%.2f", r.traversal1) << " |\n";
+           << withCommas(s.primaryRays) << " | " << withCommas(s.shadowRays) << " | "
+           << withCommas(s.secondaryRays) << " | " << fmt("%.2f", rays / r.frame1 / 1e6) << " | "
+           << fmt("%.2f", rays / r.frameN / 1e6) << " | " << fmt("%.2f", r.traversal1) << " |\n";
         std::fprintf(stderr, "  build %.2f ms, frame %.1f / %.1f ms\n", r.buildS * 1e3,
                      r.frame1 * 1e3, r.frameN * 1e3);
     }
@@ -537,10 +540,9 @@ int main(int argc, char** argv) {
            << " | " << fmt("%.4f", r.meanDiff) << " | " << withCommas(r.reflection) << " | "
            << withCommas(r.shadow) << " |\n";
     rows.pop_back(); // the plot shows balls 4 only
-    const bool plotted =
-        plotWithGnuplot(rows, o.outDir,
-                        std::string(quick ? "balls 2" : "balls 4") + ", " + std::to_string(o.size) +
-                            "x" + std::to_string(o.size));
+    const bool plotted = plotWithGnuplot(rows, o.outDir,
+                                         std::string(quick ? "balls 2" : "balls 4") + ", " +
+                                             std::to_string(o.size) + "x" + std::to_string(o.size));
     md << "\n![frame time against mean error: red depth limits 5..0, blue weight cut-offs, green "
           "the binary double-box tree, black the reference](raytrace.png)\n\n"
           "Plot (gnuplot, from raytrace_error.csv and raytrace.gp next to this report"

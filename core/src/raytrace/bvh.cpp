@@ -8,8 +8,8 @@
 #include <cmath>
 #include <emmintrin.h>
 #include <limits>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 #include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #include <utility>
@@ -82,8 +82,8 @@ struct Scratch {
     std::vector<double> rightArea;
     std::vector<std::size_t> rightCount;
     explicit Scratch(int maxBins)
-        : binBox(size_t(3 * maxBins)), binCount(size_t(3 * maxBins)),
-          rightArea(size_t(maxBins)), rightCount(size_t(maxBins)) {}
+        : binBox(size_t(3 * maxBins)), binCount(size_t(3 * maxBins)), rightArea(size_t(maxBins)),
+          rightCount(size_t(maxBins)) {}
 };
 struct Decision {
     bool leaf = false;
@@ -163,10 +163,9 @@ Decision decide(std::vector<Ref>& refs, const Task& task, const BvhOptions& opti
     if (canSah) {
         axis = bestAxis;
         const float lo = clo[axis], sca = scale[axis];
-        auto it = std::partition(refs.begin() + std::ptrdiff_t(task.begin),
-                                 refs.begin() + std::ptrdiff_t(task.end), [&](const Ref& r) {
-                                     return binOf(r.centre(axis), lo, sca, nb) < bestBin;
-                                 });
+        auto it = std::partition(
+            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(task.end),
+            [&](const Ref& r) { return binOf(r.centre(axis), lo, sca, nb) < bestBin; });
         mid = std::size_t(it - refs.begin());
     } else {
         // Object median on the widest centroid axis (deep trees, coincident centroids).
@@ -178,9 +177,10 @@ Decision decide(std::vector<Ref>& refs, const Task& task, const BvhOptions& opti
                 axis = a;
             }
         mid = task.begin + n / 2;
-        std::nth_element(refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
-                         refs.begin() + std::ptrdiff_t(task.end),
-                         [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
+        std::nth_element(
+            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
+            refs.begin() + std::ptrdiff_t(task.end),
+            [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
     }
     d.axis = axis;
     d.left = Task{task.begin, mid, task.depth + 1, {}, {}};
@@ -230,7 +230,8 @@ void buildSequential(std::vector<Ref>& refs, const Task& root, const BvhOptions&
         if (d.leaf) {
             node.offset = std::uint32_t(out.prims.size());
             node.count = std::uint16_t(task.end - task.begin);
-            for (std::size_t i = task.begin; i < task.end; ++i) out.prims.push_back(refs[i].prim);
+            for (std::size_t i = task.begin; i < task.end; ++i)
+                out.prims.push_back(refs[i].prim);
             out.nodes.push_back(node);
             ++out.leaves;
             out.sahCost += d.leafCost * task.box.area() / rootArea;
@@ -251,9 +252,9 @@ void buildSequential(std::vector<Ref>& refs, const Task& root, const BvhOptions&
 constexpr std::size_t kParallelGrain = 2048; // below this a subtree is one task
 struct Subtree {
     bool split = false;
-    BuildNode node{};                    // split: this node (offset set when emitted)
+    BuildNode node{};                     // split: this node (offset set when emitted)
     std::unique_ptr<Subtree> left, right; // split: the children
-    Sequential seq;                      // !split: built by one task
+    Sequential seq;                       // !split: built by one task
 };
 
 void buildParallel(std::vector<Ref>& refs, const Task& task, const BvhOptions& options,

@@ -47,17 +47,18 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
 constexpr float kTriMargin = 0x1p-19f;    // relative error bound of the triangle test's inputs
 inline std::uint8_t runOf(std::uint8_t kind) {
-    return kind == kSphere ? kRunSphere
-                           : (kind == kTriangle || kind == kSmoothTriangle ? kRunTriangle : kRunOther);
+    return kind == kSphere
+               ? kRunSphere
+               : (kind == kTriangle || kind == kSmoothTriangle ? kRunTriangle : kRunOther);
 }
 constexpr int kWideStack = 4 * kMaxDepth; // at most 3 pushes per level of the binary depth
 } // namespace
 
 // Per-ray data of the float walk.
 struct Bvh::WideRay {
-    bool useFloat = false;  // boxes tested in float (else in double)
-    bool prefilter = false; // spheres rejected by the float test (unit direction only)
-    int neg[3] = {0, 0, 0}; // direction sign per axis: which of lo/hi is the near plane
+    bool useFloat = false;             // boxes tested in float (else in double)
+    bool prefilter = false;            // spheres rejected by the float test (unit direction only)
+    int neg[3] = {0, 0, 0};            // direction sign per axis: which of lo/hi is the near plane
     std::size_t nearOff[3], farOff[3]; // byte offsets of the near and far planes in a WideNode
     __m128 on[3], of[3];    // origin moved by ∓eps for near planes and ±eps for far planes
     __m128 inv[3];          // 1/d in float
@@ -97,8 +98,10 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     const std::size_t n = order_.size();
     kind_.assign(n, kOther);
     run_.assign(n, 0);
-    for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_, &tm_}) v->assign(n + 4, 0.0f);
-    for (auto& v : tv_) v.assign(n + 4, 0.0f);
+    for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_, &tm_})
+        v->assign(n + 4, 0.0f);
+    for (auto& v : tv_)
+        v.assign(n + 4, 0.0f);
     auto kindOf = [](const Primitive* p) {
         if (typeid(*p) == typeid(Sphere)) return kSphere;
         if (typeid(*p) == typeid(Triangle)) return kTriangle;
@@ -106,7 +109,8 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             return kSmoothTriangle; // the triangle's hit test
         return kOther;
     };
-    for (std::size_t i = 0; i < n; ++i) kind_[i] = kindOf(order_[i]);
+    for (std::size_t i = 0; i < n; ++i)
+        kind_[i] = kindOf(order_[i]);
     auto sortLeaf = [&](std::uint32_t first, std::uint32_t cnt) {
         // Stable, by run: leaves are small, so insertion sort in place.
         for (std::uint32_t k = first + 1; k < first + cnt; ++k) {
@@ -143,7 +147,8 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         }
         for (std::uint32_t k = 0; k < cnt;) { // run lengths
             std::uint32_t e = k + 1;
-            while (e < cnt && runOf(kind_[first + e]) == runOf(kind_[first + k])) ++e;
+            while (e < cnt && runOf(kind_[first + e]) == runOf(kind_[first + k]))
+                ++e;
             run_[first + k] = std::uint16_t(e - k);
             k = e;
         }
@@ -231,14 +236,14 @@ bool Bvh::visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, f
                 const __m128 fx = _mm_sub_ps(wr.fo[0], _mm_loadu_ps(&sx_[i]));
                 const __m128 fy = _mm_sub_ps(wr.fo[1], _mm_loadu_ps(&sy_[i]));
                 const __m128 fz = _mm_sub_ps(wr.fo[2], _mm_loadu_ps(&sz_[i]));
-                const __m128 h = _mm_add_ps(
-                    _mm_add_ps(_mm_mul_ps(fx, wr.fd[0]), _mm_mul_ps(fy, wr.fd[1])),
-                    _mm_mul_ps(fz, wr.fd[2]));
+                const __m128 h =
+                    _mm_add_ps(_mm_add_ps(_mm_mul_ps(fx, wr.fd[0]), _mm_mul_ps(fy, wr.fd[1])),
+                               _mm_mul_ps(fz, wr.fd[2]));
                 const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, wr.fd[0]));
                 const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, wr.fd[1]));
                 const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, wr.fd[2]));
-                const __m128 ll = _mm_add_ps(
-                    _mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)), _mm_mul_ps(lz, lz));
+                const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
+                                             _mm_mul_ps(lz, lz));
                 const __m128 rm =
                     _mm_add_ps(_mm_loadu_ps(&sr_[i]), _mm_add_ps(wr.om, _mm_loadu_ps(&sm_[i])));
                 // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
@@ -267,8 +272,8 @@ bool Bvh::visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, f
                 const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
                 __m128 q = _mm_setzero_ps();
                 for (int j = 0; j < 3; ++j)
-                    q = _mm_add_ps(q, _mm_add_ps(_mm_and_ps(px[j], absMask),
-                                                 _mm_and_ps(py[j], absMask)));
+                    q = _mm_add_ps(
+                        q, _mm_add_ps(_mm_and_ps(px[j], absMask), _mm_and_ps(py[j], absMask)));
                 // δ = (|v|₁ + |o|₁ + Σ|v − o|)·2^-19; e = 2δ(Q + 2δ) + Q²·2^-20.
                 const __m128 delta = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(&tm_[i]), wr.tom),
                                                 _mm_mul_ps(mag, _mm_set1_ps(kTriMargin)));
@@ -276,8 +281,8 @@ bool Bvh::visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, f
                 const __m128 e = _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
                                             _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(0x1p-20f)));
                 const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
-                const __m128 someNeg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)),
-                                                 _mm_cmplt_ps(w, ne));
+                const __m128 someNeg = _mm_or_ps(
+                    _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
                 const __m128 somePos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, e), _mm_cmpgt_ps(v, e)),
                                                  _mm_cmpgt_ps(w, e));
                 mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(someNeg, somePos));
@@ -349,7 +354,6 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
         wr.tMin = _mm_set1_ps(ftMin - std::abs(ftMin) * 0x1p-20f);
         wr.farScale = _mm_set1_ps(kFarScaleF);
         wr.om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) * kSphereMargin);
-
     }
     // The current limit: entries farther than the nearest hit (widened) are dropped.
     auto limitF = [&]() {
@@ -373,8 +377,10 @@ void Bvh::traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) c
             const char* base = reinterpret_cast<const char*>(&nd);
             __m128 t0 = wr.tMin, t1 = _mm_set1_ps(flim);
             for (int a = 0; a < 3; ++a) {
-                const __m128 nearP = _mm_load_ps(reinterpret_cast<const float*>(base + wr.nearOff[a]));
-                const __m128 farP = _mm_load_ps(reinterpret_cast<const float*>(base + wr.farOff[a]));
+                const __m128 nearP =
+                    _mm_load_ps(reinterpret_cast<const float*>(base + wr.nearOff[a]));
+                const __m128 farP =
+                    _mm_load_ps(reinterpret_cast<const float*>(base + wr.farOff[a]));
                 // max/min return the second operand for NaN (0·inf: a ray in the slab's
                 // plane): that slab is no limit.
                 t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearP, wr.on[a]), wr.inv[a]), t0);
@@ -468,7 +474,8 @@ namespace {
 // The exact decisions, called directly for the kinds the leaves know.
 inline bool exactIntersect(const Primitive& p, std::uint8_t kind, const Ray& ray, double tMin,
                            double tMax, Hit& hit) {
-    if (kind == kSphere) return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
+    if (kind == kSphere)
+        return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
     if (kind == kTriangle)
         return static_cast<const Triangle&>(p).Triangle::intersect(ray, tMin, tMax, hit);
     return p.intersect(ray, tMin, tMax, hit);

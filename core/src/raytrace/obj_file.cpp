@@ -9,9 +9,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <string_view>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 namespace wb::rt {
 
@@ -63,9 +63,11 @@ void checkNumbers(const std::string& path) {
         const char* eol = static_cast<const char*>(std::memchr(p, '\n', std::size_t(end - p)));
         if (!eol) eol = end;
         auto next = [&](const char*& q, std::size_t& len) { // next token of the line
-            while (q < eol && space(*q)) ++q;
+            while (q < eol && space(*q))
+                ++q;
             const char* t = q;
-            while (q < eol && !space(*q)) ++q;
+            while (q < eol && !space(*q))
+                ++q;
             len = std::size_t(q - t);
             return t;
         };

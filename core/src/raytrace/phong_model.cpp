@@ -45,7 +45,7 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
         // The shadow feeler scales what comes from the light directly, not its ambient.
         c += t.attenuation * t.spot *
              (ambient * l.ambient + s.transmittance * (t.diffuse * diffuse * l.colour +
-                                                      t.specular * specular * l.colour));
+                                                       t.specular * specular * l.colour));
     }
     return c;
 }

@@ -72,7 +72,9 @@ void mixedScene(Scene& sc, int n, std::mt19937_64& g, double s) {
     sc.add(Plane({0, 0, -11 * s}, {0, 0, 1}), 0);
 }
 
-bool sameBits(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 struct Refs {
     const BruteForce& brute;
@@ -102,7 +104,8 @@ bool compareRay(const Refs& r, const Ray& ray, double tMin = 0.0, double tMax = 
     r.brute.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return sb.insert(h.primitive), true; });
     r.wide.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return s4.insert(h.primitive), true; });
     REQUIRE(s4 == sb);
-    r.brute.forEachBlocker(ray, tMin, tMax, [&](const Primitive& p) { return ob.insert(&p), true; });
+    r.brute.forEachBlocker(ray, tMin, tMax,
+                           [&](const Primitive& p) { return ob.insert(&p), true; });
     r.wide.forEachBlocker(ray, tMin, tMax, [&](const Primitive& p) { return o4.insert(&p), true; });
     REQUIRE(o4 == ob);
     if (fb) {
@@ -158,7 +161,8 @@ int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) 
         default: { // origin exactly on a face, random direction
             const int a = int(g() % 3);
             std::uniform_real_distribution<double> u(0, 1);
-            for (int b = 0; b < 3; ++b) ray.origin[b] = lo[b] + u(g) * (hi[b] - lo[b]);
+            for (int b = 0; b < 3; ++b)
+                ray.origin[b] = lo[b] + u(g) * (hi[b] - lo[b]);
             ray.origin[a] = corner[a];
             ray.direction = glm::normalize(rnd3(g, -1, 1));
             break;
@@ -183,16 +187,16 @@ TEST_CASE("rt_bvh_wide: the 4-wide tree is the default and collapses the binary 
     // Every inner binary node ends up in some wide node; a wide node replaces 1–3 of them.
     CHECK(st.wideNodes * 3 >= st.nodes - st.leaves);
     CHECK(st.wideNodes <= st.nodes - st.leaves);
-    CHECK_THROWS_AS(Bvh(s.primitives, [] {
-                        BvhOptions o;
-                        o.width = 8;
-                        return o;
-                    }()),
+    CHECK_THROWS_AS(Bvh(s.primitives,
+                        [] {
+                            BvhOptions o;
+                            o.width = 8;
+                            return o;
+                        }()),
                     std::invalid_argument);
 }
 
-TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits",
-          "[raytrace][bvh]") {
+TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits", "[raytrace][bvh]") {
     for (double scale : {1.0, 1e-30, 1e25}) {
         INFO("scale " << scale);
         std::mt19937_64 g(std::uint64_t(scale * 1000) + 17);
@@ -289,7 +293,8 @@ TEST_CASE("rt_bvh_wide: far origins, tiny direction components and non-unit dire
         case 0: // origin beyond 1e30: the walk tests boxes in double
             ray.direction = glm::normalize(rnd3(g, -1, 1));
             ray.origin = target - 3e31 * ray.direction;
-            REQUIRE(std::abs(ray.origin.x) + std::abs(ray.origin.y) + std::abs(ray.origin.z) > 1e30);
+            REQUIRE(std::abs(ray.origin.x) + std::abs(ray.origin.y) + std::abs(ray.origin.z) >
+                    1e30);
             break;
         case 1: { // a direction component of 1e-35 (1/d overflows float)
             ray.origin = target + glm::dvec3(0, 0, 30 * kS);

@@ -27,18 +27,18 @@ struct BvhOptions {
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
     int width = 4;           // 4: wide float SSE nodes and sphere leaves; 2: binary double nodes
-    int buildThreads = 0;    // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
+    int buildThreads = 0; // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
 };
 
 struct BvhStats {
-    int nodes = 0;              // in the flattened array
-    int leaves = 0;             // leaf nodes
-    int maxDepth = 0;           // longest root-to-leaf path
-    std::size_t primitives = 0; // bounded primitives in the tree
-    std::size_t unbounded = 0;  // primitives outside the tree (tested for every ray)
-    double buildSeconds = 0.0;  // wall time of the build
-    double sahCost = 0.0;       // SAH cost of the tree (root area normalised)
-    int wideNodes = 0;          // nodes of the 4-wide tree (width 4), else 0
+    int nodes = 0;                // in the flattened array
+    int leaves = 0;               // leaf nodes
+    int maxDepth = 0;             // longest root-to-leaf path
+    std::size_t primitives = 0;   // bounded primitives in the tree
+    std::size_t unbounded = 0;    // primitives outside the tree (tested for every ray)
+    double buildSeconds = 0.0;    // wall time of the build
+    double sahCost = 0.0;         // SAH cost of the tree (root area normalised)
+    int wideNodes = 0;            // nodes of the 4-wide tree (width 4), else 0
     double collapseSeconds = 0.0; // of buildSeconds: collapsing into the 4-wide tree
 };
 
@@ -80,8 +80,8 @@ class Bvh : public Aggregate {
     // (an empty slot has lo = +inf, hi = −inf, which no ray enters), two cache lines.
     struct alignas(64) WideNode {
         float lo[3][4], hi[3][4];
-        std::uint32_t child[4];   // inner child: wide node index; leaf: first index into order_
-        std::uint16_t count[4];   // 0: inner child or empty slot; > 0: leaf with this many
+        std::uint32_t child[4]; // inner child: wide node index; leaf: first index into order_
+        std::uint16_t count[4]; // 0: inner child or empty slot; > 0: leaf with this many
     };
     // The 4-wide nodes (empty for width 2 and for a tree of one leaf): the tests aim
     // rays at their boxes' corners, edges and faces.
@@ -117,12 +117,12 @@ class Bvh : public Aggregate {
     std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
-    std::vector<std::uint8_t> kind_;  // of order_[i]: exact code to call (bvh_wide.cpp kinds)
-    std::vector<std::uint16_t> run_;  // at the first of a run of one float test: its length
+    std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
+    std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
     std::vector<float> sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                                 // radius, their part of the float test's margin
-    std::vector<float> tv_[9], tm_; // triangles at their order_ index: float vertices
-                                    // [vertex·3 + axis], their part of the margin
+    std::vector<float> tv_[9], tm_;             // triangles at their order_ index: float vertices
+                                                // [vertex·3 + axis], their part of the margin
     BvhStats stats_;
 };
 
