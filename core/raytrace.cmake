@@ -19,7 +19,7 @@ target_sources(core PRIVATE
   src/raytrace/tracer.cpp
   src/raytrace/triangle.cpp
 )
-target_sources(core PRIVATE src/raytrace/bvh.cpp) # issue 6: BVH (engineer F)
+target_sources(core PRIVATE src/raytrace/bvh.cpp src/raytrace/bvh_wide.cpp) # issues 6, 13: BVH
 # issue 6 (engineer F): scene files (NFF, OBJ via tinyobjloader), SPD generators, parallel render.
 find_package(tinyobjloader REQUIRED)
 target_sources(core PRIVATE

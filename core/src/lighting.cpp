@@ -18,8 +18,8 @@ glm::dvec3 unit(const glm::dvec3& v) {
 }
 } // namespace
 
-LightTerms lightTerms(const Light& light, const Material& material, bool localViewer,
-                      const glm::dvec3& position, const glm::dvec3& normal) {
+LightTerms lightFactors(const Light& light, double shininess, bool localViewer,
+                        const glm::dvec3& position, const glm::dvec3& normal) {
     LightTerms t;
     const bool positional = light.position.w != 0;
     glm::dvec3 vp; // VP_pli: unit vector from the vertex towards the light
@@ -43,8 +43,14 @@ LightTerms lightTerms(const Light& light, const Material& material, bool localVi
     if (t.diffuse != 0) { // f_i: no highlight on a surface the light does not reach
         glm::dvec3 toEye = localViewer ? unit(-position) : glm::dvec3(0, 0, 1);
         glm::dvec3 h = unit(vp + toEye);
-        t.specular = glm::length(h) > 0 ? std::pow(dotClamped(normal, h), material.shininess) : 0.0;
+        t.specular = glm::length(h) > 0 ? std::pow(dotClamped(normal, h), shininess) : 0.0;
     }
+    return t;
+}
+
+LightTerms lightTerms(const Light& light, const Material& material, bool localViewer,
+                      const glm::dvec3& position, const glm::dvec3& normal) {
+    LightTerms t = lightFactors(light, material.shininess, localViewer, position, normal);
     glm::dvec3 sum = glm::dvec3(material.ambient) * glm::dvec3(light.ambient) +
                      t.diffuse * glm::dvec3(material.diffuse) * glm::dvec3(light.diffuse) +
                      t.specular * glm::dvec3(material.specular) * glm::dvec3(light.specular);

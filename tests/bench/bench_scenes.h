@@ -14,7 +14,7 @@ struct BenchScene {
     std::function<wb::rt::SceneFile()> make; // builds the scene afresh
 };
 
-// One and two spheres, SPD balls and jacks 2-4, and the OBJ mesh at `meshPath`.
+// One and two spheres, SPD balls and jacks 2-5, and the OBJ mesh at `meshPath`.
 inline std::vector<BenchScene> benchScenes(const std::string& meshPath) {
     using namespace wb::rt;
     return {
@@ -23,9 +23,11 @@ inline std::vector<BenchScene> benchScenes(const std::string& meshPath) {
         {"balls 2", [] { return toScene(spdBalls(2)); }},
         {"balls 3", [] { return toScene(spdBalls(3)); }},
         {"balls 4", [] { return toScene(spdBalls(4)); }},
+        {"balls 5", [] { return toScene(spdBalls(5)); }},
         {"jacks 2", [] { return toScene(spdJacks(2)); }},
         {"jacks 3", [] { return toScene(spdJacks(3)); }},
         {"jacks 4", [] { return toScene(spdJacks(4)); }},
+        {"jacks 5", [] { return toScene(spdJacks(5)); }},
         {"mesh 9k (OBJ)", [meshPath] { return loadObjFile(meshPath); }},
     };
 }

@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -39,6 +40,30 @@ template <class F> double timeMedian(int runs, F&& f) {
         t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
     }
     return median(t);
+}
+
+// Medians of `runs` passes of each function, the functions taking turns in every round
+// (so a burst of other load on the shared machine hits all of them alike).
+// Times are CPU time of this thread (single-ray calls run here), not wall time: the
+// shared machine's load would otherwise dominate.
+double threadCpu() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+std::vector<double> timeAlternated(int runs, const std::vector<std::function<void()>>& fs) {
+    std::vector<std::vector<double>> t(fs.size());
+    for (int i = 0; i < runs; ++i)
+        for (std::size_t k = 0; k < fs.size(); ++k) {
+            const double t0 = threadCpu();
+            fs[k]();
+            t[k].push_back(threadCpu() - t0);
+        }
+    std::vector<double> m;
+    for (auto& v : t)
+        m.push_back(median(v));
+    return m;
 }
 
 struct Cones {
@@ -182,17 +207,24 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "hit. "
           "Embree: spheres as RTC_GEOMETRY_TYPE_SPHERE_POINT, triangles native, cones/cylinders as "
           "user geometry calling our exact double intersection; Embree traverses in float. Ours: "
-          "the double BVH (Bvh::intersect / Bvh::occluded). Median of "
-       << runs << " passes.\n\n"
-       << "| scene | BVH build ms ours / Embree | eye M rays/s ours | Embree | ours/Embree | "
+          "the 4-wide float BVH with exact double primitive tests (Bvh::intersect / "
+          "Bvh::occluded); 'binary' is the binary double-box tree of before (BvhOptions::width 2) "
+          "on the same rays. CPU time of the one thread; median of "
+       << runs << " passes, ours and Embree's alternated.\n\n"
+       << "| scene | BVH build ms ours / Embree | eye M rays/s ours | binary | Embree | "
+          "ours/Embree | "
           "shadow M "
-          "rays/s ours | Embree | ours/Embree | eye hits ours / Embree | occluded ours / Embree |\n"
-       << "|---|---|---|---|---|---|---|---|---|---|\n";
+          "rays/s ours | binary | Embree | ours/Embree | eye hits ours / Embree | occluded ours / "
+          "Embree |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     const std::vector<BenchScene> items = benchScenes(meshPath);
     for (const BenchScene& it : items) {
         std::fprintf(stderr, "embree: %s\n", it.name.c_str());
         SceneFile sf = it.make();
         Bvh bvh(sf.scene->primitives);
+        BvhOptions binOpt;
+        binOpt.width = 2;
+        Bvh bin(sf.scene->primitives, binOpt);
         EmbreeScene es(*sf.scene);
         const LookAtCamera cam = sf.camera();
         std::vector<Ray> eye;
@@ -219,22 +251,27 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             }
         }
         long long sink = 0;
-        const double ourEye = timeMedian(runs, [&] {
-            for (const Ray& r : eye) {
-                Hit h;
-                sink += bvh.intersect(r, 0, std::numeric_limits<double>::infinity(), h);
-            }
-        });
-        long long ourOcc = 0;
-        const double ourShadow = timeMedian(runs, [&] {
-            ourOcc = 0;
-            for (const Segment& s : shadow)
-                ourOcc += bvh.occluded(s.ray, s.tMin, s.tMax);
-        });
+        auto eyePass = [&](const Bvh& b) {
+            return [&] {
+                for (const Ray& r : eye) {
+                    Hit h;
+                    sink += b.intersect(r, 0, std::numeric_limits<double>::infinity(), h);
+                }
+            };
+        };
+        long long ourOcc = 0, binOcc = 0;
+        auto shadowPass = [&](const Bvh& b, long long& occ) {
+            return [&] {
+                occ = 0;
+                for (const Segment& s : shadow)
+                    occ += b.occluded(s.ray, s.tMin, s.tMax);
+            };
+        };
+        if (binOcc != ourOcc) std::fprintf(stderr, "binary and wide BVH disagree on occlusion\n");
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         long long emHits = 0;
-        const double emEye = timeMedian(runs, [&] {
+        auto emEyePass = [&] {
             emHits = 0;
             for (const Ray& r : eye) {
                 RTCRayHit rh;
@@ -254,9 +291,9 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                 rtcIntersect1(es.scene, &ctx, &rh);
                 emHits += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
             }
-        });
+        };
         long long emOcc = 0;
-        const double emShadow = timeMedian(runs, [&] {
+        auto emShadowPass = [&] {
             emOcc = 0;
             for (const Segment& s : shadow) {
                 RTCRay r;
@@ -278,17 +315,24 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                 rtcOccluded1(es.scene, &ctx, &r);
                 emOcc += r.tfar < 0;
             }
-        });
+        };
+        const std::vector<double> tEye =
+            timeAlternated(runs, {eyePass(bvh), eyePass(bin), emEyePass});
+        const std::vector<double> tShadow =
+            timeAlternated(runs, {shadowPass(bvh, ourOcc), shadowPass(bin, binOcc), emShadowPass});
+        const double ourEye = tEye[0], binEye = tEye[1], emEye = tEye[2];
+        const double ourShadow = tShadow[0], binShadow = tShadow[1], emShadow = tShadow[2];
         if (sink < 0) std::puts("");
         const double ne = double(eye.size()), ns = double(shadow.size());
         char buf[512];
         std::snprintf(
             buf, sizeof buf,
-            "| %s | %.2f / %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %lld / %lld | "
-            "%lld / %lld |\n",
+            "| %s | %.2f / %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %lld / "
+            "%lld | %lld / %lld |\n",
             it.name.c_str(), bvh.stats().buildSeconds * 1e3, es.buildS * 1e3, ne / ourEye / 1e6,
-            ne / emEye / 1e6, emEye / ourEye, ns / ourShadow / 1e6, ns / emShadow / 1e6,
-            emShadow / ourShadow, ourHits, emHits, ourOcc, emOcc);
+            ne / binEye / 1e6, ne / emEye / 1e6, emEye / ourEye, ns / ourShadow / 1e6,
+            ns / binShadow / 1e6, ns / emShadow / 1e6, emShadow / ourShadow, ourHits, emHits,
+            ourOcc, emOcc);
         md << buf;
     }
     return md.str();

@@ -18,9 +18,11 @@ endif()
 wb_test(raytrace_scale_test
   SOURCES
     raytrace_scale/bvh_test.cpp
+    raytrace_scale/bvh_wide_test.cpp
     raytrace_scale/nff_test.cpp
     raytrace_scale/parallel_test.cpp
     raytrace_scale/scene_file_test.cpp
+    raytrace_scale/phong_direct_test.cpp
   LIBS core)
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-out)
 target_compile_definitions(raytrace_scale_test PRIVATE WB_TEST_TMP="${CMAKE_BINARY_DIR}/test-out")

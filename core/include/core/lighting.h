@@ -70,6 +70,11 @@ struct LightTerms {
 // 1e-12 so the result stays finite (GL gives Inf there).
 LightTerms lightTerms(const Light& light, const Material& material, bool localViewer,
                       const glm::dvec3& position, const glm::dvec3& normal);
+// The same attenuation, spot, diffuse and specular factors (bit for bit) without the
+// colour sum: for a caller that weighs the terms itself (the ray tracer, once per hit
+// and light), which needs only the material's shininess.
+LightTerms lightFactors(const Light& light, double shininess, bool localViewer,
+                        const glm::dvec3& position, const glm::dvec3& normal);
 
 // The colour GL computes for a vertex: emission + global ambient + every enabled
 // light, each channel clamped to [0, 1]; alpha is the material's diffuse alpha.

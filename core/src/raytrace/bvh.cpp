@@ -1,28 +1,25 @@
 #include "core/raytrace/bvh.h"
 
+#include "bvh_internal.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <emmintrin.h>
 #include <limits>
+#include <memory>
 #include <stdexcept>
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
+#include <utility>
 #include <xmmintrin.h>
 
 namespace wb::rt {
 
-namespace {
+using namespace bvh_detail;
 
-float floatDown(double x) {
-    float f = float(x);
-    if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-}
-float floatUp(double x) {
-    float f = float(x);
-    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-}
+namespace {
 
 // A primitive's box in float, rounded outward: the build works in float (half the
 // memory traffic of double); node boxes are unions of these, so they still enclose
@@ -57,14 +54,6 @@ struct FBox {
     }
 };
 
-// A node of the tree as built (depth first, left child right after its parent).
-struct BuildNode {
-    glm::dvec3 lo, hi;    // box
-    std::uint32_t offset; // leaf: first index into order_; inner: right child index
-    std::uint16_t count;  // leaf: number of primitives; inner: 0
-    std::uint16_t axis;   // inner: split axis
-};
-
 // Bin of a centroid: clamped in float before the conversion (a huge or NaN product
 // converted to int is undefined behaviour; found by fuzz_nff).
 inline int binOf(float centre, float lo, float scale, int nb) {
@@ -77,25 +66,253 @@ inline int binOf(float centre, float lo, float scale, int nb) {
 // Beyond this depth the builder splits at the object median, so the tree depth stays
 // below kMaxDepth = kMedianDepth + log2(any input size) + slack.
 constexpr int kMedianDepth = 80;
-constexpr int kMaxDepth = 128;          // traversal stack size
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
 
-// PBRT's γ(3) margin: a box's exit distance computed in double may be short by 3
-// rounding errors; stretching it keeps grazing rays from missing a box whose
-// primitive they hit.
-constexpr double kFarScale = 1 + 2 * 3 * (std::numeric_limits<double>::epsilon() / 2) /
-                                     (1 - 3 * std::numeric_limits<double>::epsilon() / 2);
-constexpr float kFarScaleF = 1 + 2 * 3 * (std::numeric_limits<float>::epsilon() / 2) /
-                                     (1 - 3 * std::numeric_limits<float>::epsilon() / 2);
+// 1. One node's decision: a leaf, or a binned SAH split (object median below
+//    kMedianDepth and for coincident centroids) with the refs partitioned and the
+//    children's bounds computed in one pass.
+struct Task {
+    std::size_t begin, end;
+    int depth;
+    FBox box, cbox; // bounds of the boxes and of the centroids
+};
+struct Scratch {
+    std::vector<FBox> binBox;
+    std::vector<std::uint32_t> binCount;
+    std::vector<double> rightArea;
+    std::vector<std::size_t> rightCount;
+    explicit Scratch(int maxBins)
+        : binBox(size_t(3 * maxBins)), binCount(size_t(3 * maxBins)), rightArea(size_t(maxBins)),
+          rightCount(size_t(maxBins)) {}
+};
+struct Decision {
+    bool leaf = false;
+    double leafCost = 0;
+    int axis = 0;
+    Task left{}, right{};
+};
+
+Decision decide(std::vector<Ref>& refs, const Task& task, const BvhOptions& options, Scratch& sc) {
+    Decision d;
+    const std::size_t n = task.end - task.begin;
+    const double parentArea = task.box.area() > 0 ? task.box.area() : 1e-300;
+    // Small nodes need few bins (n + 1 separate n distinct centroids well enough);
+    // clearing and sweeping 16 bins for 2 primitives would dominate the build.
+    const int nb = int(std::min<std::size_t>(std::size_t(options.bins), n + 1));
+    int bestAxis = -1, bestBin = 0;
+    double bestCost = std::numeric_limits<double>::infinity();
+    float scale[3], clo[3];
+    for (int a = 0; a < 3; ++a) {
+        clo[a] = task.cbox.lo[a];
+        const float ext = task.cbox.hi[a] - task.cbox.lo[a];
+        // Slightly under nb/ext so the largest centroid falls in bin nb−1.
+        scale[a] = ext > 0 ? float(nb) * (1 - 1e-6f) / ext : 0.0f;
+    }
+    const bool binnable = scale[0] > 0 || scale[1] > 0 || scale[2] > 0;
+    if (n > 1 && binnable && task.depth < kMedianDepth) {
+        std::fill(sc.binBox.begin(), sc.binBox.begin() + 3 * nb, FBox{});
+        std::fill(sc.binCount.begin(), sc.binCount.begin() + 3 * nb, 0u);
+        for (std::size_t i = task.begin; i < task.end; ++i) {
+            const Ref& r = refs[i];
+            for (int a = 0; a < 3; ++a) {
+                const int b = binOf(r.centre(a), clo[a], scale[a], nb);
+                sc.binBox[size_t(a * nb + b)].extend(r.lo, r.hi);
+                ++sc.binCount[size_t(a * nb + b)];
+            }
+        }
+        for (int a = 0; a < 3; ++a) {
+            if (scale[a] == 0) continue;
+            FBox acc;
+            std::size_t cnt = 0;
+            for (int b = nb - 1; b > 0; --b) {
+                acc.extend(sc.binBox[size_t(a * nb + b)]);
+                cnt += sc.binCount[size_t(a * nb + b)];
+                sc.rightArea[size_t(b)] = cnt ? acc.area() : 0.0;
+                sc.rightCount[size_t(b)] = cnt;
+            }
+            FBox left;
+            std::size_t lc = 0;
+            for (int b = 1; b < nb; ++b) {
+                left.extend(sc.binBox[size_t(a * nb + b - 1)]);
+                lc += sc.binCount[size_t(a * nb + b - 1)];
+                const std::size_t rc = sc.rightCount[size_t(b)];
+                if (lc == 0 || rc == 0) continue;
+                const double cost = double(lc) * left.area() + double(rc) * sc.rightArea[size_t(b)];
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestAxis = a;
+                    bestBin = b;
+                }
+            }
+        }
+    }
+    d.leafCost = options.intersectionCost * double(n);
+    const double splitCost =
+        bestAxis < 0 ? std::numeric_limits<double>::infinity()
+                     : options.traversalCost + options.intersectionCost * bestCost / parentArea;
+    const bool canSah = bestAxis >= 0;
+    const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && d.leafCost <= splitCost;
+    // Coincident centroids cannot be binned: a modest group becomes one leaf.
+    const bool stuck = !canSah && task.depth < kMedianDepth && n <= 256;
+    if (n <= kMaxLeaf && (n == 1 || wantLeaf || stuck)) {
+        d.leaf = true;
+        return d;
+    }
+    std::size_t mid;
+    int axis;
+    if (canSah) {
+        axis = bestAxis;
+        const float lo = clo[axis], sca = scale[axis];
+        auto it = std::partition(
+            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(task.end),
+            [&](const Ref& r) { return binOf(r.centre(axis), lo, sca, nb) < bestBin; });
+        mid = std::size_t(it - refs.begin());
+    } else {
+        // Object median on the widest centroid axis (deep trees, coincident centroids).
+        float best = -1;
+        axis = 0;
+        for (int a = 0; a < 3; ++a)
+            if (task.cbox.hi[a] - task.cbox.lo[a] > best) {
+                best = task.cbox.hi[a] - task.cbox.lo[a];
+                axis = a;
+            }
+        mid = task.begin + n / 2;
+        std::nth_element(
+            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
+            refs.begin() + std::ptrdiff_t(task.end),
+            [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
+    }
+    d.axis = axis;
+    d.left = Task{task.begin, mid, task.depth + 1, {}, {}};
+    d.right = Task{mid, task.end, task.depth + 1, {}, {}};
+    for (std::size_t i = task.begin; i < task.end; ++i) {
+        Task& t = i < mid ? d.left : d.right;
+        t.box.extend(refs[i].lo, refs[i].hi);
+        t.cbox.extendPoint(refs[i].centre(0), refs[i].centre(1), refs[i].centre(2));
+    }
+    return d;
+}
+
+BuildNode nodeOf(const Task& t) {
+    BuildNode node;
+    for (int a = 0; a < 3; ++a) {
+        node.lo[a] = t.box.lo[a];
+        node.hi[a] = t.box.hi[a];
+    }
+    node.offset = 0;
+    node.count = 0;
+    node.axis = 0;
+    return node;
+}
+
+// 2. A subtree built by one thread, depth first (left child right after its parent),
+//    with offsets local to its own node and primitive arrays.
+struct Sequential {
+    std::vector<BuildNode> nodes;
+    std::vector<std::uint32_t> prims; // scene indices in leaf order
+    int leaves = 0, maxDepth = 0;
+    double sahCost = 0;
+};
+
+void buildSequential(std::vector<Ref>& refs, const Task& root, const BvhOptions& options,
+                     double rootArea, Sequential& out) {
+    Scratch sc(options.bins);
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::pair<Task, std::uint32_t>> stack{{root, kNone}}; // task, parent to link
+    while (!stack.empty()) {
+        const auto [task, parent] = stack.back();
+        stack.pop_back();
+        const auto idx = std::uint32_t(out.nodes.size());
+        if (parent != kNone) out.nodes[parent].offset = idx;
+        BuildNode node = nodeOf(task);
+        out.maxDepth = std::max(out.maxDepth, task.depth);
+        const Decision d = decide(refs, task, options, sc);
+        if (d.leaf) {
+            node.offset = std::uint32_t(out.prims.size());
+            node.count = std::uint16_t(task.end - task.begin);
+            for (std::size_t i = task.begin; i < task.end; ++i)
+                out.prims.push_back(refs[i].prim);
+            out.nodes.push_back(node);
+            ++out.leaves;
+            out.sahCost += d.leafCost * task.box.area() / rootArea;
+            continue;
+        }
+        node.axis = std::uint16_t(d.axis);
+        out.nodes.push_back(node);
+        out.sahCost += options.traversalCost * task.box.area() / rootArea;
+        // Right first on the stack so the left child is built next, right after its parent.
+        stack.push_back({d.right, idx});
+        stack.push_back({d.left, kNone});
+    }
+}
+
+// 3. The parallel build: nodes with many primitives are split here and their two
+//    children built as parallel TBB tasks; smaller ones go to buildSequential. Every
+//    decision is the sequential one, so the tree is the same for any thread count.
+constexpr std::size_t kParallelGrain = 2048; // below this a subtree is one task
+struct Subtree {
+    bool split = false;
+    BuildNode node{};                     // split: this node (offset set when emitted)
+    std::unique_ptr<Subtree> left, right; // split: the children
+    Sequential seq;                       // !split: built by one task
+};
+
+void buildParallel(std::vector<Ref>& refs, const Task& task, const BvhOptions& options,
+                   double rootArea, Subtree& out) {
+    if (task.end - task.begin <= kParallelGrain) {
+        buildSequential(refs, task, options, rootArea, out.seq);
+        return;
+    }
+    Scratch sc(options.bins);
+    const Decision d = decide(refs, task, options, sc);
+    if (d.leaf) { // a large group that cannot be split (coincident centroids)
+        buildSequential(refs, task, options, rootArea, out.seq);
+        return;
+    }
+    out.split = true;
+    out.node = nodeOf(task);
+    out.node.axis = std::uint16_t(d.axis);
+    out.left = std::make_unique<Subtree>();
+    out.right = std::make_unique<Subtree>();
+    out.seq.maxDepth = task.depth;
+    out.seq.sahCost = options.traversalCost * task.box.area() / rootArea;
+    tbb::parallel_invoke([&] { buildParallel(refs, d.left, options, rootArea, *out.left); },
+                         [&] { buildParallel(refs, d.right, options, rootArea, *out.right); });
+}
+
+// 4. The subtrees into one depth-first array, offsets made global.
+void emitSubtree(const Subtree& t, std::vector<BuildNode>& nodes, std::vector<std::uint32_t>& prims,
+                 BvhStats& stats) {
+    stats.maxDepth = std::max(stats.maxDepth, t.seq.maxDepth);
+    stats.sahCost += t.seq.sahCost;
+    if (t.split) {
+        const std::size_t idx = nodes.size();
+        nodes.push_back(t.node);
+        emitSubtree(*t.left, nodes, prims, stats);
+        nodes[idx].offset = std::uint32_t(nodes.size());
+        emitSubtree(*t.right, nodes, prims, stats);
+        return;
+    }
+    const auto base = std::uint32_t(nodes.size()), pbase = std::uint32_t(prims.size());
+    for (BuildNode n : t.seq.nodes) {
+        n.offset += n.count ? pbase : base;
+        nodes.push_back(n);
+    }
+    prims.insert(prims.end(), t.seq.prims.begin(), t.seq.prims.end());
+    stats.leaves += t.seq.leaves;
+}
 
 } // namespace
 
 Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions options)
     : options_(options) {
+
     if (options.bins < 2 || options.bins > 256 || options.maxLeafSize < 1 ||
         options.maxLeafSize > 255 || !(options.traversalCost >= 0) ||
-        !(options.intersectionCost > 0))
-        throw std::invalid_argument("Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0");
+        !(options.intersectionCost > 0) || (options.width != 2 && options.width != 4) ||
+        options.buildThreads < 0)
+        throw std::invalid_argument("Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0, "
+                                    "width 2 or 4, buildThreads >= 0");
     const auto start = std::chrono::steady_clock::now();
 
     std::vector<Ref> refs;
@@ -117,6 +334,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                           std::isfinite(r.hi[1]) && std::isfinite(r.hi[2]);
         if (!finite || b.empty() || !b.bounded() || !fits) {
             unbounded_.push_back(prims[i].get());
+            unboundedIndex_.push_back(std::uint32_t(i));
             continue;
         }
         r.prim = std::uint32_t(i);
@@ -129,156 +347,33 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
     stats_.unbounded = unbounded_.size();
     order_.reserve(refs.size());
     if (!refs.empty()) {
-        build.reserve(2 * refs.size());
-        struct Task {
-            std::size_t begin, end;
-            std::uint32_t parent; // node whose right child this is (kNone for left/root)
-            int depth;
-            FBox box, cbox; // bounds of the boxes and of the centroids
-        };
-        constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-        std::vector<Task> stack{{0, refs.size(), kNone, 0, rootBox, rootCBox}};
-        const int maxBins = options.bins;
-        std::vector<FBox> binBox(size_t(3 * maxBins));
-        std::vector<std::uint32_t> binCount(size_t(3 * maxBins));
-        std::vector<double> rightArea(static_cast<size_t>(maxBins));
-        std::vector<std::size_t> rightCount(static_cast<size_t>(maxBins));
         const double rootArea = rootBox.area() > 0 ? rootBox.area() : 1.0;
-        while (!stack.empty()) {
-            const Task task = stack.back();
-            stack.pop_back();
-            const auto idx = std::uint32_t(build.size());
-            if (task.parent != kNone) build[task.parent].offset = idx;
-            BuildNode node;
-            for (int a = 0; a < 3; ++a) {
-                node.lo[a] = task.box.lo[a];
-                node.hi[a] = task.box.hi[a];
-            }
-            node.offset = 0;
-            node.count = 0;
-            node.axis = 0;
-            const std::size_t n = task.end - task.begin;
-            const double parentArea = task.box.area() > 0 ? task.box.area() : 1e-300;
-            stats_.maxDepth = std::max(stats_.maxDepth, task.depth);
-            // Small nodes need few bins (n + 1 separate n distinct centroids well enough);
-            // clearing and sweeping 16 bins for 2 primitives would dominate the build.
-            const int nb = int(std::min<std::size_t>(std::size_t(maxBins), n + 1));
-
-            // Best binned SAH split over the three axes (bins over the centroid bounds).
-            int bestAxis = -1, bestBin = 0;
-            double bestCost = std::numeric_limits<double>::infinity();
-            float scale[3], clo[3];
-            for (int a = 0; a < 3; ++a) {
-                clo[a] = task.cbox.lo[a];
-                const float ext = task.cbox.hi[a] - task.cbox.lo[a];
-                // Slightly under nb/ext so the largest centroid falls in bin nb−1.
-                scale[a] = ext > 0 ? float(nb) * (1 - 1e-6f) / ext : 0.0f;
-            }
-            const bool binnable = scale[0] > 0 || scale[1] > 0 || scale[2] > 0;
-            if (n > 1 && binnable && task.depth < kMedianDepth) {
-                std::fill(binBox.begin(), binBox.begin() + 3 * nb, FBox{});
-                std::fill(binCount.begin(), binCount.begin() + 3 * nb, 0u);
-                for (std::size_t i = task.begin; i < task.end; ++i) {
-                    const Ref& r = refs[i];
-                    for (int a = 0; a < 3; ++a) {
-                        const int b = binOf(r.centre(a), clo[a], scale[a], nb);
-                        binBox[size_t(a * nb + b)].extend(r.lo, r.hi);
-                        ++binCount[size_t(a * nb + b)];
-                    }
-                }
-                for (int a = 0; a < 3; ++a) {
-                    if (scale[a] == 0) continue;
-                    FBox acc;
-                    std::size_t cnt = 0;
-                    for (int b = nb - 1; b > 0; --b) {
-                        acc.extend(binBox[size_t(a * nb + b)]);
-                        cnt += binCount[size_t(a * nb + b)];
-                        rightArea[size_t(b)] = cnt ? acc.area() : 0.0;
-                        rightCount[size_t(b)] = cnt;
-                    }
-                    FBox left;
-                    std::size_t lc = 0;
-                    for (int b = 1; b < nb; ++b) {
-                        left.extend(binBox[size_t(a * nb + b - 1)]);
-                        lc += binCount[size_t(a * nb + b - 1)];
-                        const std::size_t rc = rightCount[size_t(b)];
-                        if (lc == 0 || rc == 0) continue;
-                        const double cost =
-                            double(lc) * left.area() + double(rc) * rightArea[size_t(b)];
-                        if (cost < bestCost) {
-                            bestCost = cost;
-                            bestAxis = a;
-                            bestBin = b;
-                        }
-                    }
-                }
-            }
-            const double leafCost = options.intersectionCost * double(n);
-            const double splitCost =
-                bestAxis < 0
-                    ? std::numeric_limits<double>::infinity()
-                    : options.traversalCost + options.intersectionCost * bestCost / parentArea;
-            const bool canSah = bestAxis >= 0;
-            const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && leafCost <= splitCost;
-            // Coincident centroids cannot be binned: a modest group becomes one leaf.
-            const bool stuck = !canSah && task.depth < kMedianDepth && n <= 256;
-            if (n <= kMaxLeaf && (n == 1 || wantLeaf || stuck)) {
-                node.offset = std::uint32_t(order_.size());
-                node.count = std::uint16_t(n);
-                for (std::size_t i = task.begin; i < task.end; ++i)
-                    order_.push_back(prims[refs[i].prim].get());
-                build.push_back(node);
-                ++stats_.leaves;
-                stats_.sahCost += leafCost * task.box.area() / rootArea;
-                continue;
-            }
-            std::size_t mid;
-            int axis;
-            if (canSah) {
-                axis = bestAxis;
-                const float lo = clo[axis], sc = scale[axis];
-                auto it =
-                    std::partition(refs.begin() + std::ptrdiff_t(task.begin),
-                                   refs.begin() + std::ptrdiff_t(task.end), [&](const Ref& r) {
-                                       return binOf(r.centre(axis), lo, sc, nb) < bestBin;
-                                   });
-                mid = std::size_t(it - refs.begin());
-            } else {
-                // Object median on the widest centroid axis (deep trees, coincident centroids).
-                float best = -1;
-                axis = 0;
-                for (int a = 0; a < 3; ++a)
-                    if (task.cbox.hi[a] - task.cbox.lo[a] > best) {
-                        best = task.cbox.hi[a] - task.cbox.lo[a];
-                        axis = a;
-                    }
-                mid = task.begin + n / 2;
-                std::nth_element(
-                    refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
-                    refs.begin() + std::ptrdiff_t(task.end),
-                    [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
-            }
-            node.axis = std::uint16_t(axis);
-            build.push_back(node);
-            stats_.sahCost += options.traversalCost * task.box.area() / rootArea;
-            // The children's bounds in one pass.
-            Task left{task.begin, mid, kNone, task.depth + 1, {}, {}};
-            Task right{mid, task.end, idx, task.depth + 1, {}, {}};
-            for (std::size_t i = task.begin; i < task.end; ++i) {
-                Task& t = i < mid ? left : right;
-                t.box.extend(refs[i].lo, refs[i].hi);
-                t.cbox.extendPoint(refs[i].centre(0), refs[i].centre(1), refs[i].centre(2));
-            }
-            // Right first on the stack so the left child is built next, right after its parent.
-            stack.push_back(right);
-            stack.push_back(left);
+        const Task root{0, refs.size(), 0, rootBox, rootCBox};
+        Subtree top;
+        auto run = [&] {
+            if (options.buildThreads == 1)
+                buildSequential(refs, root, options, rootArea, top.seq);
+            else
+                buildParallel(refs, root, options, rootArea, top);
+        };
+        if (options.buildThreads > 1)
+            tbb::task_arena(options.buildThreads).execute(run);
+        else
+            run();
+        build.reserve(2 * refs.size());
+        std::vector<std::uint32_t> leafPrims;
+        leafPrims.reserve(refs.size());
+        emitSubtree(top, build, leafPrims, stats_);
+        for (std::uint32_t i : leafPrims) {
+            order_.push_back(prims[i].get());
+            orderIndex_.push_back(i);
         }
     }
     // Flatten: one Node per inner build node, holding its children's boxes.
     stats_.nodes = int(build.size());
     if (build.size() == 1) {
         rootLeafCount_ = build[0].count;
-    } else if (!build.empty()) {
+    } else if (!build.empty() && options_.width == 2) {
         std::vector<std::uint32_t> wide(build.size(), 0);
         std::uint32_t next = 0;
         for (std::size_t i = 0; i < build.size(); ++i)
@@ -314,6 +409,12 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     fnodes_[i].child[c] = nodes_[i].child[c];
                     fnodes_[i].count[c] = nodes_[i].count[c];
                 }
+    }
+    if (options_.width == 4) {
+        const auto t0 = std::chrono::steady_clock::now();
+        collapseWide(build.data(), build.size());
+        stats_.collapseSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen
@@ -471,6 +572,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
 }
 
 bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    if (options_.width == 4) return intersectWide(ray, tMin, tMax, hit);
     bool found = false;
     for (const Primitive* p : unbounded_)
         if (p->intersect(ray, tMin, tMax, hit)) {
@@ -489,6 +591,10 @@ bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
 
 void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
                      const std::function<bool(const Hit&)>& visit) const {
+    if (options_.width == 4) {
+        forEachHitWide(ray, tMin, tMax, visit);
+        return;
+    }
     Hit h;
     for (const Primitive* p : unbounded_)
         if (p->intersect(ray, tMin, tMax, h) && !visit(h)) return;
@@ -499,6 +605,10 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
 
 void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
                          const std::function<bool(const Primitive&)>& visit) const {
+    if (options_.width == 4) {
+        forEachBlockerWide(ray, tMin, tMax, visit);
+        return;
+    }
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
@@ -507,6 +617,7 @@ void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
 }
 
 bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
+    if (options_.width == 4) return occludedWide(ray, tMin, tMax);
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax)) return true;
     bool any = false;

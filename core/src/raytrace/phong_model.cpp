@@ -20,14 +20,10 @@ Color PhongModel::background(const Scene& scene) const {
 
 Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, const Material& m,
                          const glm::dvec3& surface, const std::vector<LightSample>& lights) const {
-    // The material as GL would have it.
-    wb::Material gm;
-    gm.emission = glm::dvec4(m.emission, 1);
-    gm.ambient = glm::dvec4(m.ka * surface, 1);
-    gm.diffuse = glm::dvec4(m.kd * surface, 1);
-    gm.specular = glm::dvec4(glm::dvec3(m.ks), 1);
-    gm.shininess = std::clamp(m.phongExp, 0.0, 128.0);
-    Color c = m.emission + glm::dvec3(gm.ambient) * scene.globalAmbient;
+    // The material as GL would have it (its colours as dvec3: the same values).
+    const glm::dvec3 ambient = m.ka * surface, diffuse = m.kd * surface, specular(m.ks);
+    const double shininess = std::clamp(m.phongExp, 0.0, 128.0);
+    Color c = m.emission + ambient * scene.globalAmbient;
     // Eye space = world translated so that the viewer (the ray's origin) is at 0.
     const glm::dvec3 pos = hit.point - view.origin;
     for (const LightSample& s : lights) {
@@ -44,12 +40,12 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
         gl.constantAttenuation = l.constantAttenuation;
         gl.linearAttenuation = l.linearAttenuation;
         gl.quadraticAttenuation = l.quadraticAttenuation;
-        const wb::LightTerms t = wb::lightTerms(gl, gm, true, pos, hit.normal);
+        // The factors only: lightTerms' colour sum is not used here.
+        const wb::LightTerms t = wb::lightFactors(gl, shininess, true, pos, hit.normal);
         // The shadow feeler scales what comes from the light directly, not its ambient.
         c += t.attenuation * t.spot *
-             (glm::dvec3(gm.ambient) * l.ambient +
-              s.transmittance * (t.diffuse * glm::dvec3(gm.diffuse) * l.colour +
-                                 t.specular * glm::dvec3(gm.specular) * l.colour));
+             (ambient * l.ambient + s.transmittance * (t.diffuse * diffuse * l.colour +
+                                                       t.specular * specular * l.colour));
     }
     return c;
 }

@@ -1,12 +1,17 @@
 #pragma once
 // Bounding volume hierarchy over every primitive kind of a scene (spheres, quadrics,
 // cones, triangles, polyhedra share one tree), built with the binned surface area
-// heuristic and flattened into an array (a node's left child follows it, the right
-// child is at an index). Traversal is front to back (the child nearer along the
-// ray's direction on the split axis first) and stops at tMax = nearest hit so far;
-// forEachHit stops as soon as the visitor returns false, which is the any-hit early
-// exit of shadow feelers. Unbounded primitives (infinite planes, uncut quadrics) are
-// kept outside the tree and tested for every ray.
+// heuristic as a binary tree and, by default, collapsed into a 4-wide tree whose nodes
+// hold their four children's boxes in float, structure of arrays, so one SSE operation
+// tests a slab of all four (width 4); width 2 keeps the binary tree of double boxes
+// (the reference the tests compare against). Traversal is front to back (nearest
+// child first) and stops at tMax = nearest hit so far; forEachHit stops as soon as the
+// visitor returns false, which is the any-hit early exit of shadow feelers. Leaves keep
+// their spheres side by side (float centres and radii) and reject four at a time with a
+// conservative float test; every candidate is decided by the primitive's own exact
+// double code, so hits are bit for bit those of the plain loop (on equal t the
+// primitive later in the scene wins, as in the plain loop). Unbounded primitives
+// (infinite planes, uncut quadrics) are kept outside the tree and tested for every ray.
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
@@ -20,17 +25,21 @@ struct BvhOptions {
     int maxLeafSize = 4;           // a node with at most this many primitives may become a leaf
     double traversalCost = 1.0;    // SAH cost of visiting a node, relative to...
     double intersectionCost = 1.0; // ...one primitive test
-    bool floatBoxes = false; // traverse float nodes (half the memory; conservative, same hits)
+    bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
+    int width = 4;           // 4: wide float SSE nodes and sphere leaves; 2: binary double nodes
+    int buildThreads = 0; // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
 };
 
 struct BvhStats {
-    int nodes = 0;              // in the flattened array
-    int leaves = 0;             // leaf nodes
-    int maxDepth = 0;           // longest root-to-leaf path
-    std::size_t primitives = 0; // bounded primitives in the tree
-    std::size_t unbounded = 0;  // primitives outside the tree (tested for every ray)
-    double buildSeconds = 0.0;  // wall time of the build
-    double sahCost = 0.0;       // SAH cost of the tree (root area normalised)
+    int nodes = 0;                // in the flattened array
+    int leaves = 0;               // leaf nodes
+    int maxDepth = 0;             // longest root-to-leaf path
+    std::size_t primitives = 0;   // bounded primitives in the tree
+    std::size_t unbounded = 0;    // primitives outside the tree (tested for every ray)
+    double buildSeconds = 0.0;    // wall time of the build
+    double sahCost = 0.0;         // SAH cost of the tree (root area normalised)
+    int wideNodes = 0;            // nodes of the 4-wide tree (width 4), else 0
+    double collapseSeconds = 0.0; // of buildSeconds: collapsing into the 4-wide tree
 };
 
 class Bvh : public Aggregate {
@@ -50,6 +59,7 @@ class Bvh : public Aggregate {
     bool occluded(const Ray& ray, double tMin, double tMax) const;
 
     const BvhStats& stats() const { return stats_; }
+    const BvhOptions& options() const { return options_; }
 
     // The flattened tree: each node holds the boxes of its two children side by side
     // ([axis][child], so one SSE2 operation tests both) and how to reach them.
@@ -66,9 +76,34 @@ class Bvh : public Aggregate {
         std::uint16_t count[2];
     };
 
+    // The 4-wide tree: four children's boxes as [axis][child] floats rounded outward
+    // (an empty slot has lo = +inf, hi = −inf, which no ray enters), two cache lines.
+    struct alignas(64) WideNode {
+        float lo[3][4], hi[3][4];
+        std::uint32_t child[4]; // inner child: wide node index; leaf: first index into order_
+        std::uint16_t count[4]; // 0: inner child or empty slot; > 0: leaf with this many
+    };
+    // The 4-wide nodes (empty for width 2 and for a tree of one leaf): the tests aim
+    // rays at their boxes' corners, edges and faces.
+    const std::vector<WideNode>& wideNodes() const { return wnodes_; }
+
   private:
     template <class Visit>
     void traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) const;
+    // Width 4: the collapse, the traversal and the leaf walk (bvh_wide.cpp).
+    struct WideRay;
+    void collapseWide(const void* buildNodes, std::size_t count);
+    template <class Leaf>
+    void traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) const;
+    template <class Visit>
+    bool visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, float limit,
+                       Visit&& visit) const;
+    bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const;
+    void forEachHitWide(const Ray& ray, double tMin, double tMax,
+                        const std::function<bool(const Hit&)>& visit) const;
+    void forEachBlockerWide(const Ray& ray, double tMin, double tMax,
+                            const std::function<bool(const Primitive&)>& visit) const;
+    bool occludedWide(const Ray& ray, double tMin, double tMax) const;
 
     BvhOptions options_;
     std::vector<Node> nodes_;
@@ -77,6 +112,17 @@ class Bvh : public Aggregate {
     std::uint32_t rootLeafCount_ = 0;         // > 0: the whole tree is one leaf (no nodes_)
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
+    // Width 4 only:
+    std::vector<WideNode> wnodes_;
+    std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
+    std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
+    // Leaves are sorted into runs: spheres, then triangles, then the rest.
+    std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
+    std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
+    std::vector<float> sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
+                                                // radius, their part of the float test's margin
+    std::vector<float> tv_[9], tm_;             // triangles at their order_ index: float vertices
+                                                // [vertex·3 + axis], their part of the margin
     BvhStats stats_;
 };
 

@@ -1,0 +1,421 @@
+// The 4-wide float BVH (BvhOptions::width 4, the default) against two independent
+// references, the plain loop (BruteForce) and the binary double-box tree (width 2):
+// the nearest hit is the same primitive with the same t, point and normals bit for bit,
+// any-hit and the sets of every hit and every shadow blocker agree, on every primitive
+// kind, for random rays and for the rays a float traversal gets wrong first: through
+// the corners and along the edges of the wide nodes' float boxes, axis-parallel rays
+// with zero direction components lying in box faces, origins exactly on box faces,
+// rays through shared mesh edges and vertices, exact ties (duplicated primitives: the
+// later one wins, as in the plain loop), scenes at 1e-30 and 1e25 scale, origins beyond
+// float's comfortable range (the double path), non-unit directions. The renders are
+// bit-identical to the plain loop's and the binary tree's for 1 and 2 threads.
+#include "core/raytrace/box.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/parallel_render.h"
+#include "core/raytrace/phong_model.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/smooth_triangle.h"
+#include "core/raytrace/spd.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <random>
+#include <set>
+
+using namespace wb::rt;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    return {u(g), u(g), u(g)};
+}
+
+// Every bounded kind at scale `s` around the origin, plus an unbounded plane.
+void mixedScene(Scene& sc, int n, std::mt19937_64& g, double s) {
+    std::uniform_real_distribution<double> r(0.05 * s, 0.6 * s);
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec3 c = rnd3(g, -10 * s, 10 * s);
+        switch (i % 7) {
+        case 0:
+            sc.add(Sphere(c, r(g)), 0);
+            break;
+        case 1:
+            sc.add(Cone(c, r(g), c + rnd3(g, -s, s) + glm::dvec3(0.01 * s), r(g)), 0);
+            break;
+        case 2:
+            sc.add(Triangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s)), 0);
+            break;
+        case 3:
+            sc.add(SmoothTriangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s), rnd3(g, -1, 1),
+                                  rnd3(g, -1, 1), rnd3(g, -1, 1)),
+                   0);
+            break;
+        case 4:
+            sc.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(r(g), r(g), r(g))), 0);
+            break;
+        case 5:
+            sc.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1 * s, s))), 0);
+            break;
+        default:
+            sc.add(Sphere(c, r(g)), 0); // spheres twice: the leaves' vector test
+            break;
+        }
+    }
+    sc.add(Plane({0, 0, -11 * s}, {0, 0, 1}), 0);
+}
+
+bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+struct Refs {
+    const BruteForce& brute;
+    const Bvh& binary;
+    const Bvh& wide;
+};
+
+// Returns whether the ray hit something; REQUIREs that all three agree exactly.
+bool compareRay(const Refs& r, const Ray& ray, double tMin = 0.0, double tMax = kInf) {
+    Hit hb, h2, h4;
+    const bool fb = r.brute.intersect(ray, tMin, tMax, hb);
+    const bool f4 = r.wide.intersect(ray, tMin, tMax, h4);
+    REQUIRE(f4 == fb);
+    if (fb) {
+        REQUIRE(h4.primitive == hb.primitive);
+        REQUIRE(h4.t == hb.t); // the same primitive's exact code: the same bits
+        REQUIRE(sameBits(h4.point, hb.point));
+        REQUIRE(sameBits(h4.normal, hb.normal));
+        REQUIRE(sameBits(h4.outwardNormal, hb.outwardNormal));
+        REQUIRE(h4.cosVN == hb.cosVN);
+    }
+    // The binary tree may pick another primitive on an exact tie; t must agree.
+    REQUIRE(r.binary.intersect(ray, tMin, tMax, h2) == fb);
+    if (fb) REQUIRE(h2.t == hb.t);
+    REQUIRE(r.wide.occluded(ray, tMin, tMax) == fb);
+    std::set<const Primitive*> sb, s4, ob, o4;
+    r.brute.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return sb.insert(h.primitive), true; });
+    r.wide.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return s4.insert(h.primitive), true; });
+    REQUIRE(s4 == sb);
+    r.brute.forEachBlocker(ray, tMin, tMax,
+                           [&](const Primitive& p) { return ob.insert(&p), true; });
+    r.wide.forEachBlocker(ray, tMin, tMax, [&](const Primitive& p) { return o4.insert(&p), true; });
+    REQUIRE(o4 == ob);
+    if (fb) {
+        // A segment ending at the nearest hit still meets it; one ending just before does not.
+        REQUIRE(r.wide.occluded(ray, tMin, hb.t));
+        bool before = false;
+        r.brute.forEachBlocker(ray, tMin, std::nextafter(hb.t, 0.0),
+                               [&](const Primitive&) { return before = true, false; });
+        REQUIRE(r.wide.occluded(ray, tMin, std::nextafter(hb.t, 0.0)) == before);
+    }
+    return fb;
+}
+
+// Rays aimed at corners, along edges and from faces of the wide nodes' child boxes.
+int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
+    const auto& nodes = r.wide.wideNodes();
+    REQUIRE_FALSE(nodes.empty());
+    int hits = 0;
+    for (int i = 0; i < count; ++i) {
+        const Bvh::WideNode& nd = nodes[g() % nodes.size()];
+        const int c = int(g() % 4);
+        if (nd.lo[0][c] > nd.hi[0][c]) continue; // empty slot
+        glm::dvec3 lo, hi, corner;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = nd.lo[a][c];
+            hi[a] = nd.hi[a][c];
+            corner[a] = (g() & 1) ? lo[a] : hi[a];
+        }
+        Ray ray;
+        switch (i % 4) {
+        case 0: // through a corner from anywhere
+            ray.origin = rnd3(g, -14 * scale, 14 * scale);
+            ray.direction = glm::normalize(corner - ray.origin);
+            break;
+        case 1: { // along an edge: two zero direction components, in two face planes
+            const int a = int(g() % 3);
+            glm::dvec3 d(0.0);
+            d[a] = (g() & 1) ? 1.0 : -1.0;
+            ray.origin = corner - d * (20 * scale);
+            ray.direction = d;
+            break;
+        }
+        case 2: { // in a face plane: one zero component
+            const int a = int(g() % 3);
+            ray.origin = corner + rnd3(g, -3 * scale, 3 * scale);
+            ray.origin[a] = corner[a];
+            glm::dvec3 d = rnd3(g, -1, 1);
+            d[a] = 0;
+            if (glm::length(d) == 0) continue;
+            ray.direction = glm::normalize(d);
+            break;
+        }
+        default: { // origin exactly on a face, random direction
+            const int a = int(g() % 3);
+            std::uniform_real_distribution<double> u(0, 1);
+            for (int b = 0; b < 3; ++b)
+                ray.origin[b] = lo[b] + u(g) * (hi[b] - lo[b]);
+            ray.origin[a] = corner[a];
+            ray.direction = glm::normalize(rnd3(g, -1, 1));
+            break;
+        }
+        }
+        hits += compareRay(r, ray);
+    }
+    return hits;
+}
+
+} // namespace
+
+TEST_CASE("rt_bvh_wide: the 4-wide tree is the default and collapses the binary tree",
+          "[raytrace][bvh]") {
+    std::mt19937_64 g(3);
+    Scene s;
+    mixedScene(s, 3000, g, 1.0);
+    Bvh wide(s.primitives);
+    CHECK(wide.options().width == 4);
+    const BvhStats& st = wide.stats();
+    CHECK(st.wideNodes > 0);
+    // Every inner binary node ends up in some wide node; a wide node replaces 1–3 of them.
+    CHECK(st.wideNodes * 3 >= st.nodes - st.leaves);
+    CHECK(st.wideNodes <= st.nodes - st.leaves);
+    CHECK_THROWS_AS(Bvh(s.primitives,
+                        [] {
+                            BvhOptions o;
+                            o.width = 8;
+                            return o;
+                        }()),
+                    std::invalid_argument);
+}
+
+TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits", "[raytrace][bvh]") {
+    for (double scale : {1.0, 1e-30, 1e25}) {
+        INFO("scale " << scale);
+        std::mt19937_64 g(std::uint64_t(scale * 1000) + 17);
+        Scene s;
+        mixedScene(s, 700, g, scale);
+        BruteForce brute(s.primitives);
+        BvhOptions bo;
+        bo.width = 2;
+        Bvh binary(s.primitives, bo), wide(s.primitives);
+        const Refs r{brute, binary, wide};
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -14 * scale, 14 * scale);
+            const Aabb b = s.primitives[g() % (s.primitives.size() - 1)]->bounds();
+            ray.direction =
+                glm::normalize(0.5 * (b.lo + b.hi) + 0.3 * scale * rnd3(g, -1, 1) - ray.origin);
+            hits += compareRay(r, ray);
+        }
+        CHECK(hits > 100); // the rays mostly hit: not vacuous
+        CHECK(adversarialRays(r, g, 800, scale) > 50);
+    }
+}
+
+TEST_CASE("rt_bvh_wide: ties, shared mesh edges and vertices, duplicates", "[raytrace][bvh]") {
+    // A grid of triangles on integer vertices: rays through the vertices and along the
+    // shared edges meet two to six triangles at the same t. Each triangle is there twice
+    // (the copy later in the scene must win, as in the plain loop), and spheres too.
+    Scene s;
+    for (int x = 0; x < 12; ++x)
+        for (int y = 0; y < 12; ++y) {
+            const glm::dvec3 a(x, y, 0), b(x + 1, y, 0), c(x, y + 1, 0), d(x + 1, y + 1, 0);
+            for (int copy = 0; copy < 2; ++copy) {
+                s.add(Triangle(a, b, d), 0);
+                s.add(Triangle(a, d, c), 0);
+            }
+        }
+    for (int i = 0; i < 20; ++i) {
+        s.add(Sphere({i * 0.6, 3, 2}, 0.5), 0);
+        s.add(Sphere({i * 0.6, 3, 2}, 0.5), 0);
+    }
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo), wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    std::mt19937_64 g(21);
+    int hits = 0;
+    for (int x = 0; x <= 12; ++x)
+        for (int y = 0; y <= 12; ++y) {
+            for (int k = 0; k < 3; ++k) {
+                Ray ray;
+                ray.origin = rnd3(g, -5, 17) + glm::dvec3(0, 0, 25);
+                const glm::dvec3 target = k == 0   ? glm::dvec3(x, y, 0)
+                                          : k == 1 ? glm::dvec3(x + 0.5, y, 0)
+                                                   : glm::dvec3(x + 0.5, y + 0.5, 0);
+                ray.direction = glm::normalize(target - ray.origin);
+                hits += compareRay(r, ray);
+            }
+            Ray down; // straight down through the vertex: zero x and y components
+            down.origin = {x, y, 7};
+            down.direction = {0, 0, -1};
+            hits += compareRay(r, down);
+        }
+    CHECK(hits > 400);
+    // Sphere ties: the later copy.
+    Ray ray;
+    ray.origin = {0.6, 3, 10};
+    ray.direction = {0, 0, -1};
+    Hit h;
+    REQUIRE(wide.intersect(ray, 0, kInf, h));
+    CHECK(h.primitive == s.primitives[s.primitives.size() - 40 + 3].get());
+}
+
+TEST_CASE("rt_bvh_wide: far origins, tiny direction components and non-unit directions",
+          "[raytrace][bvh]") {
+    // Scale 1e26, so that from 3e31 away (beyond 1e30: the double walk) the primitives'
+    // own double answers are still meaningful (a hit's error ~|o|·1e-16 ≪ their size).
+    constexpr double kS = 1e26;
+    std::mt19937_64 g(8);
+    Scene s;
+    mixedScene(s, 300, g, kS);
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo), wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    int hits = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Aabb b = s.primitives[g() % (s.primitives.size() - 1)]->bounds();
+        const glm::dvec3 target = 0.5 * (b.lo + b.hi);
+        Ray ray;
+        switch (i % 4) {
+        case 0: // origin beyond 1e30: the walk tests boxes in double
+            ray.direction = glm::normalize(rnd3(g, -1, 1));
+            ray.origin = target - 3e31 * ray.direction;
+            REQUIRE(std::abs(ray.origin.x) + std::abs(ray.origin.y) + std::abs(ray.origin.z) >
+                    1e30);
+            break;
+        case 1: { // a direction component of 1e-35 (1/d overflows float)
+            ray.origin = target + glm::dvec3(0, 0, 30 * kS);
+            ray.direction = glm::normalize(glm::dvec3(1e-35, 1e-35, -1));
+            break;
+        }
+        case 2: // non-unit direction (the sphere test in float is skipped)
+            ray.origin = rnd3(g, -14 * kS, 14 * kS);
+            ray.direction = 3.7 * glm::normalize(target - ray.origin);
+            break;
+        default: // a segment from inside the scene
+            ray.origin = target + rnd3(g, -2 * kS, 2 * kS);
+            ray.direction = glm::normalize(rnd3(g, -1, 1));
+            compareRay(r, ray, 0.3 * kS, 4.0 * kS);
+            continue;
+        }
+        hits += compareRay(r, ray);
+    }
+    CHECK(hits > 60);
+}
+
+TEST_CASE("rt_bvh_wide: images bit-identical to the plain loop and the binary tree",
+          "[raytrace][bvh]") {
+    for (int which = 0; which < 2; ++which) {
+        SceneFile sf = toScene(which ? spdJacks(2) : spdBalls(2));
+        const LookAtCamera cam = sf.camera();
+        PhongModel model;
+        constexpr int kW = 64, kH = 56; // small: the sanitizer build runs this too
+        ParallelRenderOptions opt;
+        opt.threads = 1;
+        const wb::Image plain = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+        BvhOptions bo;
+        bo.width = 2;
+        Bvh binary(sf.scene->primitives, bo), wide(sf.scene->primitives);
+        sf.scene->setAggregate(&binary);
+        const wb::Image bin = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+        sf.scene->setAggregate(&wide);
+        const wb::Image w1 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+        opt.threads = 2;
+        opt.tileSize = 8;
+        const wb::Image w2 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+        CHECK(w1.data == plain.data);
+        CHECK(w1.data == bin.data);
+        CHECK(w2.data == w1.data);
+    }
+}
+
+TEST_CASE("rt_bvh_wide: rays grazing spheres and through triangle edges and corners",
+          "[raytrace][bvh]") {
+    // Where the leaves' float tests decide: lines at r·(1 + k·1e-9) from a sphere's
+    // centre (the float test's margin is ~1e-5 here, the float error ~1e-7), rays
+    // through a triangle's vertices and edge points.
+    std::mt19937_64 g(44);
+    Scene s;
+    mixedScene(s, 700, g, 1.0);
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo), wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    int hits = 0, grazes = 0;
+    for (const auto& p : s.primitives) {
+        if (const auto* sp = dynamic_cast<const Sphere*>(p.get())) {
+            for (int k = -3; k <= 3; ++k) {
+                const glm::dvec3 d = glm::normalize(rnd3(g, -1, 1));
+                const glm::dvec3 side = glm::normalize(glm::cross(d, rnd3(g, -1, 1)));
+                Ray ray;
+                ray.direction = d;
+                ray.origin = sp->centre + side * (sp->radius * (1 + k * 1e-9)) - 25.0 * d;
+                const bool h = compareRay(r, ray);
+                hits += h;
+                Hit hh;
+                grazes += h && sp->intersect(ray, 0, kInf, hh);
+            }
+        } else if (const auto* tp = dynamic_cast<const Triangle*>(p.get())) {
+            const glm::dvec3 pts[4] = {tp->v0, tp->v1, 0.5 * (tp->v0 + tp->v2),
+                                       0.25 * tp->v1 + 0.75 * tp->v2};
+            for (const glm::dvec3& q : pts) {
+                Ray ray;
+                ray.origin = rnd3(g, -14, 14);
+                ray.direction = glm::normalize(q - ray.origin);
+                hits += compareRay(r, ray);
+            }
+        }
+    }
+    CHECK(grazes > 100); // many of the grazing rays do touch their sphere
+    CHECK(hits > 500);
+}
+
+TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread count",
+          "[raytrace][bvh]") {
+    // 12,000 primitives: subtrees above 2048 are split into TBB tasks.
+    std::mt19937_64 g(5);
+    Scene s;
+    mixedScene(s, 12000, g, 1.0);
+    auto build = [&](int threads) {
+        BvhOptions o;
+        o.buildThreads = threads;
+        return std::make_unique<Bvh>(s.primitives, o);
+    };
+    const auto one = build(1);
+    for (int threads : {0, 2, 3}) {
+        INFO("threads " << threads);
+        const auto other = build(threads);
+        CHECK(other->stats().nodes == one->stats().nodes);
+        CHECK(other->stats().leaves == one->stats().leaves);
+        CHECK(other->stats().maxDepth == one->stats().maxDepth);
+        const auto& a = one->wideNodes();
+        const auto& b = other->wideNodes();
+        REQUIRE(a.size() == b.size());
+        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Bvh::WideNode)) == 0);
+        // And the same answers, primitive for primitive.
+        for (int i = 0; i < 200; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -14, 14);
+            ray.direction = glm::normalize(rnd3(g, -5, 5) - ray.origin);
+            Hit h1, h2;
+            const bool f1 = one->intersect(ray, 0, kInf, h1);
+            REQUIRE(other->intersect(ray, 0, kInf, h2) == f1);
+            if (f1) CHECK(h1.primitive == h2.primitive);
+        }
+    }
+    CHECK_THROWS_AS(build(-1), std::invalid_argument);
+}
