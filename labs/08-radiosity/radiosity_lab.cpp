@@ -353,17 +353,9 @@ class RadiosityLab : public Lab {
     void refine() {
         if (!model_) return;
         stopRun();
-        std::vector<glm::dvec3> B = model_->solver->displayRadiosity();
-        // The split threshold is a fraction of the largest radiosity; an emitter's (the light,
-        // ~17× the walls in the Cornell box) would make it split nothing: cap emitters at the
-        // brightest non-emitter.
-        double brightest = 0;
-        for (size_t i = 0; i < B.size(); ++i)
-            if (luminance(model_->mesh.patches[i].emission) == 0)
-                brightest = std::max({brightest, B[i].x, B[i].y, B[i].z});
-        for (size_t i = 0; i < B.size(); ++i)
-            if (luminance(model_->mesh.patches[i].emission) > 0 && brightest > 0)
-                B[i] = glm::min(B[i], glm::dvec3(brightest));
+        // core's threshold is relative to the brightest non-emitting patch (the light's B
+        // would make any fraction of it split nothing).
+        const std::vector<glm::dvec3> B = model_->solver->displayRadiosity();
         auto m = std::make_unique<Model>();
         m->scene = model_->scene;
         m->mesh = model_->mesh;

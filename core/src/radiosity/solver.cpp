@@ -9,6 +9,16 @@ namespace wb::rad {
 
 namespace {
 double sum3(const glm::dvec3& v) { return v.x + v.y + v.z; }
+
+// Runs body(i) for i in [0, n): in parallel, except with External rows, whose provider (lab
+// 08's GL hemicube) may only be called from this thread (FormFactorConfig::rowProvider).
+template <class Body> void forRows(const FormFactors& ff, int n, const Body& body) {
+    if (ff.config().method == FormFactorMethod::External) {
+        for (int i = 0; i < n; ++i) body(i);
+    } else {
+        tbb::parallel_for(0, n, body);
+    }
+}
 } // namespace
 
 Solver::Solver(const PatchMesh& mesh, const FormFactors& ff, SolverConfig config)
@@ -42,7 +52,7 @@ Solver::Solver(const PatchMesh& mesh, const FormFactors& ff, SolverConfig config
 double Solver::computeResidual() {
     const int n = ff_.size();
     FB_.assign(static_cast<std::size_t>(n), glm::dvec3(0.0));
-    tbb::parallel_for(0, n, [&](int i) {
+    forRows(ff_, n, [&](int i) {
         std::vector<float> scratch;
         const float* f = ff_.row(i, scratch);
         glm::dvec3 acc(0.0);
@@ -206,7 +216,7 @@ glm::dvec3 Solver::absorbedPower() const {
     // Incident B_in = F·B (14.18), absorbed (1 − R)·A·B_in.
     const int n = ff_.size();
     std::vector<glm::dvec3> part(static_cast<std::size_t>(n), glm::dvec3(0.0));
-    tbb::parallel_for(0, n, [&](int i) {
+    forRows(ff_, n, [&](int i) {
         std::vector<float> scratch;
         const float* f = ff_.row(i, scratch);
         glm::dvec3 acc(0.0);

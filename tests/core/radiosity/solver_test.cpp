@@ -5,6 +5,7 @@
 #include "core/radiosity/solver.h"
 
 #include <Eigen/Dense>
+#include <thread>
 #include <catch2/catch.hpp>
 
 using namespace wb::rad;
@@ -168,4 +169,30 @@ TEST_CASE("progressive with shooting groups (patches and elements) converges nea
     }
     INFO("relative RMS " << std::sqrt(num / den));
     CHECK(std::sqrt(num / den) < 0.04);
+}
+
+TEST_CASE("External rows are asked for from the solver's own thread only (GL contexts)") {
+    const PatchMesh m = meshScene(cornellBox(), {0.2});
+    FormFactorConfig c;
+    c.hemicubeResolution = 16;
+    FormFactors cpu(m, c);
+    const auto owner = std::this_thread::get_id();
+    bool foreign = false;
+    c.method = FormFactorMethod::External;
+    c.rowProvider = [&](int i, std::vector<float>& out) {
+        if (std::this_thread::get_id() != owner) foreign = true;
+        std::vector<float> scratch;
+        const float* r = cpu.row(i, scratch);
+        std::copy(r, r + cpu.size(), out.begin());
+    };
+    FormFactors ext(m, c); // rows lazily, not computeAll: the solver's sweeps ask for them
+    for (SolverKind kind : {SolverKind::Jacobi, SolverKind::GaussSeidel}) {
+        SolverConfig sc;
+        sc.kind = kind;
+        sc.maxSteps = 3;
+        Solver s(m, ext, sc);
+        s.run();
+        s.absorbedPower();
+    }
+    CHECK_FALSE(foreign);
 }
