@@ -1,5 +1,7 @@
 #include "core/raytrace/spd.h"
 
+#include "core/teapot.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -615,8 +617,52 @@ NffDocument spdMount(int sf) {
     return doc;
 }
 
+// The SPD's teapot database: Newell's teapot (core/teapot, 32 patches) meshed n×n per
+// patch, each grid cell split into two smooth triangles (`pp`, the patch normals), sitting
+// on a checkerboard of n×n squares — "the number of squares on the checkerboard is the
+// same as the amount of meshing for each of the 32 patches" (SPD teapot.c); two lights.
+// n = 2^(SF+1). The view, lights and colours are this project's own choice (the SPD's
+// values were not at hand); the structure and the counts follow the SPD's description.
+NffDocument spdTeapot(int sf) {
+    checkSize(sf, "spdTeapot");
+    NffDocument doc = spdDocument({6.0, 7.5, 5.0}, {0.3, 0.0, 1.2}, {0, 0, 1}, 40, 0.1);
+    addLight(doc, {-6.0, 8.0, 12.0});
+    addLight(doc, {10.0, -6.0, 8.0});
+    const int n = 2 << sf;
+    // 1st: the checkerboard, 8×8 units centred under the pot (z = 0, where it stands).
+    const int red = addSurface(doc, spdSurface({1.0, 0.15, 0.1}, 0.9, 0.1, 30.0, 0, 1));
+    const int white = addSurface(doc, spdSurface({1.0, 1.0, 1.0}, 0.9, 0.1, 30.0, 0, 1));
+    const double half = 4.0, cell = 2.0 * half / n;
+    // All red squares, then all white: surface indices must not decrease along `objects`
+    // (writeNff writes each `f` before its first object).
+    for (int colour = 0; colour < 2; ++colour)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                if ((i + j) % 2 != colour) continue;
+                const double x0 = -half + i * cell, y0 = -half + j * cell;
+                polygon(doc,
+                        {{x0, y0, 0.0}, {x0 + cell, y0, 0.0}, {x0 + cell, y0 + cell, 0.0},
+                         {x0, y0 + cell, 0.0}},
+                        colour == 0 ? red : white);
+            }
+    // 2nd: the pot.
+    const int pot = addSurface(doc, spdSurface({1.0, 0.75, 0.33}, 0.8, 0.2, 20.0, 0, 1));
+    const Mesh mesh = teapotMesh(n);
+    for (std::size_t k = 0; k + 2 < mesh.indices.size(); k += 3) {
+        NffObject o;
+        o.kind = NffObject::Kind::PatchPolygon;
+        o.surface = pot;
+        for (int c = 0; c < 3; ++c) {
+            o.vertices.push_back(mesh.positions[mesh.indices[k + std::size_t(c)]]);
+            o.normals.push_back(mesh.normals[mesh.indices[k + std::size_t(c)]]);
+        }
+        doc.objects.push_back(std::move(o));
+    }
+    return doc;
+}
+
 std::vector<std::string> spdSceneNames() {
-    return {"balls", "jacks", "gears", "tetra", "rings", "lattice", "shells", "tree", "mount"};
+    return {"balls", "jacks", "gears", "tetra", "rings", "lattice", "shells", "tree", "mount", "teapot"};
 }
 
 NffDocument spdScene(const std::string& name, int sf) {
@@ -629,6 +675,7 @@ NffDocument spdScene(const std::string& name, int sf) {
     if (name == "shells") return spdShells(sf);
     if (name == "tree") return spdTree(sf);
     if (name == "mount") return spdMount(sf);
+    if (name == "teapot") return spdTeapot(sf);
     std::string known;
     for (const std::string& n : spdSceneNames())
         known += (known.empty() ? "" : ", ") + n;

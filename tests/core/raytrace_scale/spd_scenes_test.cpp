@@ -1,5 +1,5 @@
 // Issue 12 point 12: every SPD generator of the project (balls, jacks, gears, tetra,
-// rings, lattice, shells, tree, mount) is in the suite: object counts by the SPD's
+// rings, lattice, shells, tree, mount, teapot) is in the suite: object counts by the SPD's
 // formulas, an exact NFF round trip, every polygon triangulated without overlap, and a
 // small render: no NaN, sane ray counts, a picture that is not just the background.
 #include "core/raytrace/bvh.h"
@@ -7,6 +7,7 @@
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/polygon.h"
 #include "core/raytrace/spd.h"
+#include "core/teapot.h"
 
 #include <catch2/catch.hpp>
 
@@ -74,8 +75,18 @@ TEST_CASE("spd: object counts follow the SPD formulas", "[raytrace][spd]") {
         const Counts mount = count(spdMount(sf));
         CHECK(mount.polygons == 2 * pow(4, sf));
         CHECK(mount.spheres == 4);
+        // Teapot: n = 2^(SF+1); the board has n² squares, the pot teapotMesh(n)'s
+        // triangles (2n² a patch less those collapsed at the poles: core/teapot's test).
+        const long long n = 2LL << sf;
+        const Counts teapot = count(spdTeapot(sf));
+        const long long potTriangles = (long long)wb::teapotMesh(int(n)).indices.size() / 3;
+        // Collapsed triangles: at most one per cell of one row of a patch.
+        CHECK(potTriangles >= 32 * 2 * n * n - 32 * n);
+        CHECK(potTriangles < 32 * 2 * n * n); // the lid's and the bottom's poles collapse
+        CHECK(teapot.polygons == n * n + potTriangles);
+        CHECK(teapot.polygonVertices == 4 * n * n + 3 * potTriangles);
     }
-    CHECK_THROWS_AS(spdScene("teapot", 2), std::invalid_argument);
+    CHECK_THROWS_AS(spdScene("kettle", 2), std::invalid_argument);
     CHECK_THROWS_AS(spdScene("gears", 7), std::invalid_argument);
 }
 

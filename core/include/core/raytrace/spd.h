@@ -30,12 +30,16 @@ NffDocument spdTree(int sizeFactor);    // 2^(SF+1) − 1 cones and spheres, a f
 // 2·4^SF triangles of a fractal mountain (own Gaussian hash: the SPD's statistics, not
 // its exact heights) and 4 touching glass spheres (kt 0.9, ior 1.5).
 NffDocument spdMount(int sizeFactor);
+// Newell's teapot meshed n×n per patch (n = 2^(SF+1)), two smooth triangles (`pp`) per
+// cell, less those collapsed at the poles, on a checkerboard of n×n squares; two lights.
+// View, lights and colours are the project's own (see spd.cpp).
+NffDocument spdTeapot(int sizeFactor);
 // Counts by the SPD formulas, for tests and the bench.
 long long spdBallsSpheres(int sizeFactor); // (9^(SF+1) − 1)/8
 long long spdJacksCount(int sizeFactor);   // (8^SF − 1)/7
 
-// The generators by name: balls, jacks, gears, tetra, rings, lattice, shells, tree, mount
-// (the SPD's teapot is not among them: it needs the Newell patch data).
+// The generators by name: balls, jacks, gears, tetra, rings, lattice, shells, tree, mount,
+// teapot.
 std::vector<std::string> spdSceneNames();
 // spdScene("gears", 2) == spdGears(2); std::invalid_argument for an unknown name or size.
 NffDocument spdScene(const std::string& name, int sizeFactor);
