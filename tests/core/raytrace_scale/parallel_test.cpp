@@ -10,6 +10,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <set>
 #include <utility>
 
@@ -126,4 +127,37 @@ TEST_CASE("rt_parallel: corner rays shoot (w+1)(h+1) eye rays", "[raytrace][para
     CHECK(wb::compareImages(a, c).meanDiff < 3.0);
     CHECK_THROWS_AS(renderParallel(*sf.scene, ScreenCamera::seed000(), model, 8, 8, opt),
                     std::invalid_argument);
+}
+
+namespace {
+// A phong model whose direct light is NaN: what a material value outside its meaning used
+// to produce (Ks = 1e100 gave Inf, Inf·0 NaN). The readers now refuse such files, so the
+// counter the front ends turn into an error is checked with a model that misbehaves.
+class NanModel : public PhongModel {
+  public:
+    Color direct(const Scene&, const Ray&, const Hit&, const Material&, const glm::dvec3&,
+                 const std::vector<LightSample>&) const override {
+        return Color(std::numeric_limits<double>::quiet_NaN());
+    }
+};
+} // namespace
+
+TEST_CASE("rt_parallel: non-finite colours are counted and written as 0",
+          "[raytrace][parallel]") {
+    SceneFile sf = toScene(oneSphereScene());
+    const LookAtCamera cam = sf.camera();
+    const NanModel model;
+    ParallelRenderOptions opt;
+    ParallelRenderStats st;
+    const wb::Image img = renderParallel(*sf.scene, cam, model, kW, kH, opt, &st);
+    // Every eye ray that hits the sphere or the floor is NaN; the sky (background) is not.
+    long long black = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const uint8_t* p = img.at(x, y);
+            black += p[0] == 0 && p[1] == 0 && p[2] == 0;
+        }
+    CHECK(st.nonFinitePixels > 0);
+    CHECK(st.nonFinitePixels <= black); // each counted pixel was written black
+    CHECK(st.nonFinitePixels < kW * kH); // the background stays finite
 }
