@@ -1,10 +1,10 @@
 // The headless path of the shell: OSMesa, no window, no GLUT, no ImGui drawing.
 #include "gl_util.h"
+#include "headless_context.h"
 #include "panel.h"
 #include "panel_check.h"
 #include "shell.h"
 
-#include <GL/osmesa.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -14,26 +14,9 @@ namespace wb {
 
 bool renderHeadless(Lab& lab, int width, int height, const std::vector<int>& keys, Image& out,
                     std::string& error) {
-    // A compatibility profile: the labs use the fixed-function pipeline next to GLSL.
-    const int attribs[] = {OSMESA_FORMAT,
-                           OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS,
-                           24,
-                           OSMESA_STENCIL_BITS,
-                           8,
-                           OSMESA_PROFILE,
-                           OSMESA_COMPAT_PROFILE,
-                           0};
-    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-    if (!ctx) {
-        error = "OSMesa: cannot create a context";
-        return false;
-    }
-    std::vector<uint8_t> buffer(size_t(width) * height * 4);
-    if (!OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
-        OSMesaDestroyContext(ctx);
-        error = "OSMesa: cannot make the context current at " + std::to_string(width) + "x" +
-                std::to_string(height);
+    const HeadlessContext context(width, height);
+    if (!context.ok()) {
+        error = context.error();
         return false;
     }
     View view;
@@ -52,7 +35,6 @@ bool renderHeadless(Lab& lab, int width, int height, const std::vector<int>& key
     } while (lab.busy());
     glFinish();
     out = readFramebuffer(width, height);
-    OSMesaDestroyContext(ctx);
     return true;
 }
 
@@ -64,20 +46,9 @@ namespace {
 int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
                const std::vector<int>& keys) {
     const int width = opts.width, height = opts.height;
-    const int attribs[] = {OSMESA_FORMAT,
-                           OSMESA_RGBA,
-                           OSMESA_DEPTH_BITS,
-                           24,
-                           OSMESA_STENCIL_BITS,
-                           8,
-                           OSMESA_PROFILE,
-                           OSMESA_COMPAT_PROFILE,
-                           0};
-    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-    std::vector<uint8_t> buffer(size_t(width) * size_t(height) * 4);
-    if (!ctx || !OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, width, height)) {
+    const HeadlessContext context(width, height);
+    if (!context.ok()) {
         std::fprintf(stderr, "%s: OSMesa: cannot create a %dx%d context\n", program, width, height);
-        if (ctx) OSMesaDestroyContext(ctx);
         return 1;
     }
     View view;
@@ -135,9 +106,7 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
         if (!shellKey(code, view, panelShown)) lab.key(code);
         check("after key '" + k.key + "'");
     }
-    ImGui::DestroyContext();
-    glFinish();
-    OSMesaDestroyContext(ctx);
+    ImGui::DestroyContext(); // the GL context finishes and goes at the end of the scope
     std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program,
                 double(windowW), opts.height, double(opts.uiScale), clipped,
                 clipped == 1 ? "" : "s");

@@ -20,7 +20,7 @@
 #include "core/radiosity/mesh.h"
 #include "core/radiosity/patch_bvh.h"
 
-#include <GL/osmesa.h>
+#include "common/headless_context.h"
 
 #include <algorithm>
 #include <chrono>
@@ -180,12 +180,9 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    const int attribs[] = {OSMESA_FORMAT,  OSMESA_RGBA,          OSMESA_DEPTH_BITS, 24,
-                           OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
-    OSMesaContext ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-    std::vector<uint8_t> buffer(64 * 64 * 4);
-    if (!ctx || !OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, 64, 64)) {
-        std::fprintf(stderr, "radiosity_gl_bench: cannot create an OSMesa context\n");
+    const wb::HeadlessContext context(64, 64); // the hemicube draws into its own framebuffer
+    if (!context.ok()) {
+        std::fprintf(stderr, "radiosity_gl_bench: %s\n", context.error().c_str());
         return 1;
     }
     const rad::PatchMesh parallel = rad::meshScene(parallelPlates(), {0.25});
@@ -271,7 +268,6 @@ int main(int argc, char** argv) {
           "error falls as 1/res² for the parallel plates (a smooth integrand: pixel aliasing "
           "and the midpoint rule) and only as ~1/res for the perpendicular plates, whose near "
           "pairs put a patch edge across the hemicube at grazing angles.\n\n";
-    OSMesaDestroyContext(ctx);
     if (!writePath.empty()) {
         std::string doc;
         {

@@ -22,11 +22,11 @@
 // centres and both answers are legitimate ties: (1) and (2) hold, the share is reported.
 #include "gl_hemicube.h"
 
+#include "common/headless_context.h"
 #include "core/radiosity/hemicube.h"
 #include "core/radiosity/mesh.h"
 #include "core/radiosity/patch_bvh.h"
 
-#include <GL/osmesa.h>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -38,18 +38,8 @@ using glm::dvec3;
 
 namespace {
 
-struct Context {
-    OSMesaContext ctx = nullptr;
-    std::vector<uint8_t> buffer;
-    Context(int w, int h) : buffer(size_t(w) * h * 4) {
-        const int attribs[] = {OSMESA_FORMAT,        OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                               OSMESA_STENCIL_BITS,  8,           OSMESA_PROFILE,
-                               OSMESA_COMPAT_PROFILE, 0};
-        ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-        REQUIRE(ctx);
-        REQUIRE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
-    }
-    ~Context() { OSMesaDestroyContext(ctx); }
+struct Context : wb::HeadlessContext {
+    Context(int w, int h) : HeadlessContext(w, h) { REQUIRE(ok()); }
 };
 
 // A quad o, o+a, o+a+b, o+b: its front (normal a × b) is the side it emits and receives on.

@@ -11,7 +11,7 @@
 #include "core/raytrace/course_model.h"
 #include "core/raytrace/render.h"
 
-#include <GL/osmesa.h>
+#include "common/headless_context.h"
 
 #include <chrono>
 #include <thread>
@@ -19,24 +19,8 @@
 namespace {
 
 // An OSMesa context for driving draw() by hand (renderHeadless would wait for the trace).
-struct Context {
-    OSMesaContext ctx = nullptr;
-    std::vector<uint8_t> buffer;
-    Context(int w, int h) : buffer(size_t(w) * h * 4) {
-        const int attribs[] = {OSMESA_FORMAT,
-                               OSMESA_RGBA,
-                               OSMESA_DEPTH_BITS,
-                               24,
-                               OSMESA_STENCIL_BITS,
-                               8,
-                               OSMESA_PROFILE,
-                               OSMESA_COMPAT_PROFILE,
-                               0};
-        ctx = OSMesaCreateContextAttribs(attribs, nullptr);
-        REQUIRE(ctx);
-        REQUIRE(OSMesaMakeCurrent(ctx, buffer.data(), GL_UNSIGNED_BYTE, w, h));
-    }
-    ~Context() { OSMesaDestroyContext(ctx); }
+struct Context : wb::HeadlessContext {
+    Context(int w, int h) : HeadlessContext(w, h) { REQUIRE(ok()); }
 };
 
 constexpr int kW = 320, kH = 240;
