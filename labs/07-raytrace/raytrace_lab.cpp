@@ -3,6 +3,7 @@
 #include "raster_mesh.h"
 #include "trace_job.h"
 
+#include "common/cli_values.h"
 #include "common/gl.h"
 #include "common/gl_util.h"
 
@@ -86,16 +87,12 @@ class RaytraceLab : public Lab {
     }
 
     bool setOption(const std::string& name, const std::string& value, std::string& error) override {
+        // The shell's strict integer parser (digits only): strtol took " 5", "+5" and "-0".
         auto integer = [&](int lo, int hi, int& out) {
-            char* end = nullptr;
-            const long v = std::strtol(value.c_str(), &end, 10);
-            if (value.empty() || *end || v < lo || v > hi) {
-                error = "expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) +
-                        ", got '" + value + "'";
-                return false;
-            }
-            out = int(v);
-            return true;
+            if (cli::parseInt(value, lo, hi, out)) return true;
+            error = "expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) +
+                    ", got '" + value + "'";
+            return false;
         };
         if (name == "scene") {
             LabScene probe;
@@ -103,7 +100,7 @@ class RaytraceLab : public Lab {
             s.sceneName = value;
             return true;
         }
-        if (name == "threads") return integer(0, 1024, s.threads);
+        if (name == "threads") return integer(0, cli::kMaxThreads, s.threads);
         if (name == "depth") return integer(0, 20, s.maxDepth);
         if (name == "model") {
             if (value != "course" && value != "phong") {
@@ -239,6 +236,9 @@ class RaytraceLab : public Lab {
         return true;
     }
 
+    // Non-finite pixels, or --inspect outside the image: no PNG, exit 1.
+    bool headlessFailed() const override { return headlessFailed_; }
+
     bool busy() const override {
         if (experiment_.active) return true;
         // One more frame after the mesh was rebuilt: the panel (drawn before the scene)
@@ -350,7 +350,7 @@ class RaytraceLab : public Lab {
         if (!tree_) {
             std::fprintf(stderr, "lab07: --inspect %d,%d is outside the %dx%d traced image\n",
                          inspectX_, inspectY_, tc.width, tc.height);
-            raytraceHeadlessFailed() = true;
+            headlessFailed_ = true;
             return;
         }
         std::printf("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n", inspectedPixel_.x,
@@ -442,12 +442,11 @@ class RaytraceLab : public Lab {
             st.shadowRays, st.secondaryRays,
             st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
         if (st.nonFinitePixels) {
-            // Written black, the picture would pass for fine: main() exits non-zero.
+            // Written black, the picture would pass for fine: the shell writes nothing.
             std::fprintf(stderr,
-                         "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour), written "
-                         "black\n",
+                         "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n",
                          scene_.name.c_str(), st.nonFinitePixels);
-            raytraceHeadlessFailed() = true;
+            headlessFailed_ = true;
         }
     }
 
@@ -463,6 +462,7 @@ class RaytraceLab : public Lab {
     glm::ivec2 inspectedPixel_{0};
     glm::dvec2 inspectedScreen_{0.0};
     bool pendingInspect_ = false;
+    bool headlessFailed_ = false; // headless: non-finite pixels or --inspect outside
     int inspectX_ = 0, inspectY_ = 0;
     View lastView_{0, 0};
 
@@ -1370,11 +1370,6 @@ void RaytraceLab::gui() {
                  "the row above x objects, not run; Mray/s with the BVH.");
         plotTimings(timings_);
     }
-}
-
-bool& raytraceHeadlessFailed() {
-    static bool failed = false;
-    return failed;
 }
 
 std::unique_ptr<Lab> makeRaytraceLab() {

@@ -56,10 +56,6 @@ struct ExperimentStatus {
 class RaytraceLab;
 std::unique_ptr<Lab> makeRaytraceLab();
 
-// Set by a headless run whose output must not pass for success (non-finite pixels,
-// --inspect outside the image); the lab's main() then exits 1 after the message.
-bool& raytraceHeadlessFailed();
-
 // Test access to the lab's state (the lab class lives in the .cpp).
 RaytraceState& raytraceState(Lab& lab);
 const RayTree* raytraceInspected(const Lab& lab);

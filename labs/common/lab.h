@@ -72,6 +72,10 @@ public:
     // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
     // true and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
+    // Headless: true when the render must not be written (e.g. NaN pixels drawn black would
+    // pass for a fine picture); the lab has said why on stderr. The shell writes no image
+    // and exits 1.
+    virtual bool headlessFailed() const { return false; }
 };
 
 using LabFactory = std::unique_ptr<Lab> (*)();

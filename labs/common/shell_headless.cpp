@@ -146,8 +146,15 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 2;
     }
     Image img;
-    if (!renderHeadless(*lab, opts.width, opts.height, keys, img, error) ||
-        !writePng(opts.out, img, &error)) {
+    if (!renderHeadless(*lab, opts.width, opts.height, keys, img, error)) {
+        std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
+        return 1;
+    }
+    if (lab->headlessFailed()) {
+        std::fprintf(stderr, "%s: %s not written\n", argv[0], opts.out.c_str());
+        return 1;
+    }
+    if (!writePng(opts.out, img, &error)) {
         std::fprintf(stderr, "%s: %s\n", argv[0], error.c_str());
         return 1;
     }

@@ -58,6 +58,10 @@ set_tests_properties("lab07 headless: --inspect prints seed 000's ray tree" PROP
 wb_cli_fails("lab07 headless: --inspect outside the image fails" "--inspect 370,240 is outside the 64x48"
   ${lab07} --headless --scene seed000-part2 --size 64x48 --inspect 370,240
   --out ${CMAKE_BINARY_DIR}/test-out/inspect-out.png)
+# --threads takes digits only (the shell's parser): strtol read "+2" and " 2" as 2.
+wb_cli_fails("lab07 headless: --threads +2 is refused" "--threads: expected an integer 0..1024, got '\\+2'"
+  ${lab07} --headless --scene seed000-part2 --size 16x12 --threads +2
+  --out ${CMAKE_BINARY_DIR}/test-out/threads-plus.png)
 add_test(NAME "lab07 --help names every built-in scene" COMMAND ${lab07} --help)
 set_tests_properties("lab07 --help names every built-in scene" PROPERTIES
   PASS_REGULAR_EXPRESSION "diffuse-spheres.*seed000-part1-lit")

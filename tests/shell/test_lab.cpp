@@ -32,6 +32,10 @@ public:
             s_->longLabel = !s_->longLabel;
             return true;
         }
+        if (k == 'F') { // the headless render must then be neither written nor exit 0
+            failed_ = true;
+            return true;
+        }
         if (k != 'g') return false;
         s_->green = !s_->green;
         return true;
@@ -46,8 +50,10 @@ public:
         for (int i = 0; i < 60; ++i) ImGui::Text("line %d", i); // taller than the window: it scrolls
     }
     bool busy() const override { return s_->frames < 3; }
+    bool headlessFailed() const override { return failed_; }
 
 private:
+    bool failed_ = false;
     TestLabState own_;
     float value_ = 0.5f;
     TestLabState* s_;
