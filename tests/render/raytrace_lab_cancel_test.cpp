@@ -25,13 +25,7 @@ struct Context : wb::HeadlessContext {
 
 constexpr int kW = 320, kH = 240;
 
-wb::View windowView() {
-    wb::View v;
-    v.width = kW;
-    v.height = kH;
-    v.headless = false; // as in a window: draw() does not wait for the trace
-    return v;
-}
+wb::View windowView() { return wb::test::windowView(kW, kH); }
 
 } // namespace
 

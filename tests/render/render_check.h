@@ -19,6 +19,16 @@
 namespace wb::test {
 
 // Renders `lab` at w×h after replaying `keys` (the --keys syntax, e.g. "1g{left}").
+// A view as a window gives it: draw() returns at once instead of waiting for background
+// work (a trace, an experiment), so a test can watch busy() and the tiles arrive.
+inline View windowView(int w, int h) {
+    View v;
+    v.width = w;
+    v.height = h;
+    v.headless = false;
+    return v;
+}
+
 inline Image renderLab(Lab& lab, int w, int h, const std::string& keys = "") {
     std::vector<int> codes;
     std::string err;
