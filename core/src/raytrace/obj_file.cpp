@@ -144,12 +144,12 @@ struct ObjScan {
 //    here);
 //  - fastLine: one pass over the bytes with std::from_chars and no allocation, for the
 //    lines of a large file. It only ever says "this line is fine" when checkedLine
-//    would accept it with the same effects (see fastNumber and fastIndex); on anything
+//    would accept it with the same effects (see fastNumber and fastCorner); on anything
 //    else — a bad or unusual number, a limit crossed, a `+1`, a hex or `nan` word — it
 //    gives up before any effect and the line goes to checkedLine, so verdicts, messages
 //    and the order of errors stay those of checkedLine alone.
-// Measured (docs/bench/obj_load.md): on an 18 MB OBJ the pre-pass went from about as
-// long as tinyobjloader's own parse to a small fraction of it.
+// Measured (docs/bench/obj_load.md, 18 MB OBJ, 78,400 triangles): the pre-pass took
+// 115 ms, more than tinyobjloader's own parse (96 ms); now 12 ms.
 class ObjScanner {
   public:
     explicit ObjScanner(const std::string& path) : err_(path) {}
