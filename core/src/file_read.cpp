@@ -74,13 +74,27 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
         error = path + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
         return false;
     }
-    // 3. Read at most maxBytes + 1: a file that grows while read is still caught.
+    // 3. Read at most maxBytes + 1: a file that grows while read is still caught. Once
+    //    the size fstat gave is in, more is looked for through a small buffer: doubling
+    //    the string first (to read 0 bytes at the end) copied and zeroed the whole file
+    //    again, 16 -> 5 ms of an 18 MB OBJ (docs/bench/obj_load.md).
     out.resize(std::size_t(st.st_size));
     std::size_t have = 0;
     for (;;) {
         if (have == out.size()) {
-            if (out.size() > maxBytes) break;
-            out.resize(std::min(maxBytes + 1, std::max<std::size_t>(out.size() * 2, 4096)));
+            if (have > maxBytes) break;
+            char more[4096];
+            const ssize_t n = ::read(f.fd, more, std::min(sizeof more, maxBytes + 1 - have));
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                error = path + ": read error (" + std::strerror(errno) + ")";
+                out.clear();
+                return false;
+            }
+            if (n == 0) break;
+            out.append(more, std::size_t(n));
+            have += std::size_t(n);
+            continue;
         }
         const ssize_t n = ::read(f.fd, &out[have], out.size() - have);
         if (n < 0) {

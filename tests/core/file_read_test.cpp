@@ -50,6 +50,12 @@ TEST_CASE("file_read: a regular file is read whole, up to its cap", "[file_read]
     CHECK_THAT(err, Contains(p) && Contains("larger than 4 bytes"));
     CHECK(out.empty());
     std::remove(p.c_str());
+    // A file whose size stat cannot tell (/proc: 0 bytes) is read to its end, and its cap
+    // still holds (the bytes past the stat size are read through a small buffer).
+    REQUIRE(wb::readRegularFile("/proc/self/status", 1 << 20, out, err));
+    CHECK(out.find("Name:") == 0);
+    CHECK_FALSE(wb::readRegularFile("/proc/self/status", 10, out, err));
+    CHECK_THAT(err, Contains("larger than 10 bytes"));
 }
 
 TEST_CASE("file_read: FIFO, directory, device and missing files are refused at once",

@@ -29,14 +29,40 @@ constexpr std::size_t kObjMaxTriangles = 4000000;
 // larger value would become infinite.
 constexpr double kObjMaxCoordinate = 1e38;
 
+// Thread CPU seconds of each step of one load, so tests/bench/obj_load_bench can show
+// where the time goes without a profiler.
+struct ObjLoadTimes {
+    double read = 0;  // the file into memory (readRegularFile)
+    double scan = 0;  // the checking pre-pass: numbers, indices, line numbers
+    double parse = 0; // tinyobjloader's LoadObj on the text in memory (and any .mtl)
+    double build = 0; // arrays to triangles, materials, default view and light
+};
+
 struct ObjLoadReport {
     // Repairs made (missing .mtl, faces with < 3 vertices dropped, normals repaired): the
     // first kSceneMaxKeptWarnings messages, "file:line: what".
     std::vector<std::string> warnings;
     std::size_t warningCount = 0; // all warnings, kept or not
     std::size_t triangles = 0;    // after fan triangulation
+    ObjLoadTimes times;           // of this load (steps that ran; an error stops the clock)
 };
 
 SceneFile loadObjFile(const std::string& path, ObjLoadReport* report = nullptr);
+
+namespace detail {
+// The checking pre-pass of loadObjFile alone, for tests: what it found, or the error it
+// raised. `checkedOnly` sends every line through the line-by-line reference checks;
+// otherwise lines take the one-pass fast path that loadObjFile uses (which hands any
+// line it is unsure of to the reference), so the two must always agree.
+struct ObjPrepass {
+    std::string error;                   // the SceneFileError's message, or empty
+    std::vector<int> faceLines;          // lines of faces with 3 or more vertices
+    std::vector<int> droppedLines;       // lines of faces with fewer
+    std::vector<std::size_t> badNormals; // `vn` records repaired (0-based)
+    std::vector<int> badNormalLines;     // and their lines
+    std::size_t triangles = 0;           // after fan triangulation
+};
+ObjPrepass objPrepass(const std::string& text, const std::string& path, bool checkedOnly);
+} // namespace detail
 
 } // namespace wb::rt
