@@ -97,17 +97,17 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         }
         const int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
         const int x1 = std::min(gw, x0 + ts), y1 = std::min(gh, y0 + ts);
-        // One tracer per tile: its counters are not shared between threads (no
-        // contended atomics); the totals are added once per tile.
-        Tracer tracer(scene, model, opt.trace);
+        // The tile's rays are counted in plain integers and added to the totals once.
+        const Tracer tracer(scene, model, opt.trace);
+        RayCounts counts;
         long long nBad = 0;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 if (opt.cornerRays) {
                     corners[std::size_t(y) * std::size_t(gw) + std::size_t(x)] =
-                        tracer.trace(lookAt->rayAt(x, y, width, height));
+                        tracer.trace(lookAt->rayAt(x, y, width, height), counts);
                 } else {
-                    Color c = tracer.trace(camera.primaryRay(x, y, width, height));
+                    Color c = tracer.trace(camera.primaryRay(x, y, width, height), counts);
                     if (!finite(c)) {
                         ++nBad;
                         c = Color(0.0);
@@ -115,9 +115,9 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                     model.toRgb8(c, img.at(x, y));
                 }
             }
-        primary += tracer.primaryRays.load();
-        secondary += tracer.secondaryRays.load();
-        shadow += tracer.shadowRays.load();
+        primary += counts.primary;
+        secondary += counts.secondary;
+        shadow += counts.shadow;
         bad += nBad;
         if (opt.progress) {
             std::lock_guard<std::mutex> lock(progressMutex);

@@ -26,12 +26,11 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
     Color c = m.emission + ambient * scene.globalAmbient;
     // Eye space = world translated so that the viewer (the ray's origin) is at 0.
     const glm::dvec3 pos = hit.point - view.origin;
+    const glm::dvec3 toEye = wb::eyeDirection(true, pos); // once per hit, not per light
+    // Only the fields lightFactors reads are set per light (not its colours).
+    wb::Light gl;
     for (const LightSample& s : lights) {
         const Light& l = *s.light;
-        wb::Light gl;
-        gl.ambient = glm::dvec4(l.ambient, 1);
-        gl.diffuse = glm::dvec4(l.colour, 1);
-        gl.specular = glm::dvec4(l.colour, 1);
         gl.position = l.kind == Light::Kind::Point ? glm::dvec4(l.position - view.origin, 1)
                                                    : glm::dvec4(-l.direction, 0);
         gl.spotDirection = l.spotDirection;
@@ -41,7 +40,7 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
         gl.linearAttenuation = l.linearAttenuation;
         gl.quadraticAttenuation = l.quadraticAttenuation;
         // The factors only: lightTerms' colour sum is not used here.
-        const wb::LightTerms t = wb::lightFactors(gl, shininess, true, pos, hit.normal);
+        const wb::LightTerms t = wb::lightFactors(gl, shininess, toEye, pos, hit.normal);
         // The shadow feeler scales what comes from the light directly, not its ambient.
         c += t.attenuation * t.spot *
              (ambient * l.ambient + s.transmittance * (t.diffuse * diffuse * l.colour +

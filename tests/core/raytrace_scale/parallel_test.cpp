@@ -1,7 +1,8 @@
 // Parallel tiled rendering: the image is bit-identical for 1, 2 and 3 threads and any
 // tile size, and equal to the single-threaded reference renderer (render.h); the BVH
 // gives the same image as the plain loop; progress reports every tile once, serialised;
-// the cancel flag stops the frame; corner rays shoot (w+1)(h+1) eye rays.
+// the cancel flag stops the frame; corner rays shoot (w+1)(h+1) eye rays; the ray counts
+// equal a tracer's own counters.
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
@@ -29,6 +30,20 @@ TEST_CASE("rt_parallel: bit-identical for every thread count and tile size",
     const LookAtCamera cam = sf.camera();
     PhongModel model;
     const wb::Image ref = render(*sf.scene, cam, model, kW, kH);
+    // The rays one tracer counts (its atomics, per trace) for every pixel's ray: the
+    // tiles count theirs in RayCounts and add them once.
+    const Tracer counter(*sf.scene, model);
+    RayCounts local;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const Ray ray = cam.primaryRay(x, y, kW, kH);
+            const Color a = counter.trace(ray), b = counter.trace(ray, local);
+            REQUIRE(a == b);
+        }
+    CHECK(counter.primaryRays == kW * kH);
+    CHECK(local.primary == kW * kH);
+    CHECK(local.secondary == counter.secondaryRays);
+    CHECK(local.shadow == counter.shadowRays);
     for (auto [threads, tile] : {std::pair{1, 32}, std::pair{2, 7}, std::pair{3, 16}}) {
         INFO("threads " << threads << " tile " << tile);
         ParallelRenderOptions opt;
@@ -38,7 +53,9 @@ TEST_CASE("rt_parallel: bit-identical for every thread count and tile size",
         const wb::Image img = renderParallel(*sf.scene, cam, model, kW, kH, opt, &st);
         CHECK(img.data == ref.data);
         CHECK(st.primaryRays == kW * kH);
+        CHECK(st.secondaryRays == local.secondary);
         CHECK(st.secondaryRays > 0); // mirrored spheres
+        CHECK(st.shadowRays == local.shadow);
         CHECK(st.shadowRays > 0);
         CHECK(st.nonFinitePixels == 0);
         CHECK_FALSE(st.cancelled);
