@@ -90,6 +90,19 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
     std::mutex progressMutex;
     int tilesDone = 0; // guarded by progressMutex
 
+    // Corner rays: pixel (x, y) is the mean of its four corners, in the model's units;
+    // returns 1 for a non-finite colour (written as 0).
+    const auto averagePixel = [&](int x, int y) {
+        const auto at = [&](int cx, int cy) {
+            return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
+        };
+        Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
+        const bool ok = finite(c);
+        if (!ok) c = Color(0.0);
+        model.toRgb8(c, img.at(x, y));
+        return ok ? 0 : 1;
+    };
+
     auto renderTile = [&](int tile) {
         if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
             cancelled = true;
@@ -115,6 +128,13 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                     model.toRgb8(c, img.at(x, y));
                 }
             }
+        // The pixels whose four corners are all this tile's, at once (in parallel, and
+        // while they are in the cache); those on the tile's last corner row or column
+        // wait for the neighbour's corners (the pass after the tiles).
+        if (opt.cornerRays)
+            for (int y = y0; y + 1 < y1; ++y)
+                for (int x = x0; x + 1 < x1; ++x)
+                    nBad += averagePixel(x, y);
         primary += counts.primary;
         secondary += counts.secondary;
         shadow += counts.shadow;
@@ -139,20 +159,20 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
     forEachIndex(threads, tilesTotal, renderTile);
 
     if (opt.cornerRays && !cancelled) {
-        // Each pixel is the mean of its four corners, in the model's units.
-        forEachIndex(threads, height, [&](int y) {
-            for (int x = 0; x < width; ++x) {
-                const auto at = [&](int cx, int cy) {
-                    return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
-                };
-                Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
-                if (!finite(c)) {
-                    ++bad;
-                    c = Color(0.0);
-                }
-                model.toRgb8(c, img.at(x, y));
+        // The pixels the tiles left: those on a tile's last corner row or column, 6% of
+        // them with 32-pixel tiles, so one thread (a second parallel pass cost more in
+        // waking the workers than it saved).
+        long long nBad = 0;
+        for (int y = 0; y < height; ++y) {
+            if (y % ts == ts - 1) {
+                for (int x = 0; x < width; ++x)
+                    nBad += averagePixel(x, y);
+            } else {
+                for (int x = ts - 1; x < width; x += ts)
+                    nBad += averagePixel(x, y);
             }
-        });
+        }
+        bad += nBad;
     }
     if (stats) {
         stats->seconds =

@@ -12,6 +12,12 @@ namespace {
 double clamp01(double x) {
     return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
 }
+// std::lround for 0 <= v <= 255 (halves away from zero) without the libm call: the
+// truncation is the floor there and v − floor(v) is exact.
+uint8_t roundByte(double v) {
+    const int i = int(v);
+    return uint8_t(i + (v - double(i) >= 0.5 ? 1 : 0));
+}
 } // namespace
 
 Color PhongModel::background(const Scene& scene) const {
@@ -59,7 +65,7 @@ Color PhongModel::scale(const Color& c, double s) const {
 
 void PhongModel::toRgb8(const Color& c, uint8_t out[3]) const {
     for (int i = 0; i < 3; ++i)
-        out[i] = uint8_t(std::lround(clamp01(c[i]) * 255.0));
+        out[i] = roundByte(clamp01(c[i]) * 255.0);
 }
 
 } // namespace wb::rt

@@ -255,3 +255,43 @@ TEST_CASE("rt_phong: lightFactors equal the unshortened formula, degenerate vert
     CHECK(lit > cases / 3); // not vacuous: many lit vertices with highlights
     CHECK(highlights > cases / 4);
 }
+
+TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]") {
+    PhongModel model;
+    const auto expected = [](double v) {
+        const double x = std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0;
+        return int(std::lround(x * 255.0));
+    };
+    std::vector<double> values = {0.0,
+                                  -0.0,
+                                  1.0,
+                                  -1e-300,
+                                  1e-300,
+                                  2.0,
+                                  std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity(),
+                                  std::numeric_limits<double>::quiet_NaN()};
+    // Every tie k + 1/2 (as far as (k + 0.5)/255 lands on one) and its neighbours.
+    for (int k = 0; k < 256; ++k)
+        for (double v : {(k + 0.5) / 255, double(k) / 255}) {
+            values.push_back(v);
+            values.push_back(std::nextafter(v, 0.0));
+            values.push_back(std::nextafter(v, 2.0));
+        }
+    std::mt19937_64 g(16);
+    std::uniform_real_distribution<double> u(-0.1, 1.1);
+    for (int i = 0; i < 100000; ++i)
+        values.push_back(u(g));
+    int ties = 0;
+    for (double v : values) {
+        ties +=
+            std::clamp(v, 0.0, 1.0) * 255.0 - std::floor(std::clamp(v, 0.0, 1.0) * 255.0) == 0.5;
+        uint8_t out[3];
+        model.toRgb8(Color(v, 0.5, 1.0), out);
+        INFO("v = " << v);
+        REQUIRE(int(out[0]) == expected(v));
+        REQUIRE(int(out[1]) == 128); // 127.5: the tie goes up
+        REQUIRE(int(out[2]) == 255);
+    }
+    CHECK(ties > 100); // the ties were really tested
+}
