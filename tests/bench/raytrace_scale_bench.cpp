@@ -75,8 +75,8 @@ double median(std::vector<double> v) {
 struct Options {
     std::string outDir = WB_SOURCE_DIR "/docs/bench";
     std::string workDir = WB_BINARY_DIR "/bench-out";
-    int runs = 5;   // frames per measurement; the median is reported
-    int size = 512; // image size (SPD: 512)
+    int runs = 5;          // frames per measurement; the median is reported
+    int size = 512;        // image size (SPD: 512)
     bool traversal = true; // measure the traversal-only rate too (--frames-only skips it)
 };
 
