@@ -18,19 +18,35 @@ glm::dvec3 unit(const glm::dvec3& v) {
 }
 } // namespace
 
+glm::dvec3 eyeDirection(bool localViewer, const glm::dvec3& position) {
+    return localViewer ? unit(-position) : glm::dvec3(0, 0, 1);
+}
+
 LightTerms lightFactors(const Light& light, double shininess, bool localViewer,
+                        const glm::dvec3& position, const glm::dvec3& normal) {
+    return lightFactors(light, shininess, eyeDirection(localViewer, position), position, normal);
+}
+
+// Each length is taken once (the ray tracer calls this per hit and light): VP is the
+// vector over the distance d already known, and the half vector's own length test
+// (|ĥ| > 0) is the test of the length it was divided by (|v| > 0 and finite, v = VP +
+// toEye a sum of two unit-or-zero vectors, gives |v/|v|| ≈ 1).
+LightTerms lightFactors(const Light& light, double shininess, const glm::dvec3& toEye,
                         const glm::dvec3& position, const glm::dvec3& normal) {
     LightTerms t;
     const bool positional = light.position.w != 0;
     glm::dvec3 vp; // VP_pli: unit vector from the vertex towards the light
     if (positional) {
-        glm::dvec3 lightPos = glm::dvec3(light.position) / light.position.w;
-        glm::dvec3 toLight = lightPos - position;
-        double d = glm::length(toLight);
-        vp = unit(toLight);
-        double denom = light.constantAttenuation + light.linearAttenuation * d +
-                       light.quadraticAttenuation * d * d;
-        t.attenuation = 1.0 / std::max(denom, 1e-12);
+        // x / 1 is x: the ray tracer's lights have w = 1, no division for them.
+        const glm::dvec3 lightPos = light.position.w == 1
+                                        ? glm::dvec3(light.position)
+                                        : glm::dvec3(light.position) / light.position.w;
+        const glm::dvec3 toLight = lightPos - position;
+        const double d = glm::length(toLight);
+        vp = d > 0 ? toLight / d : glm::dvec3(0);
+        const double denom = light.constantAttenuation + light.linearAttenuation * d +
+                             light.quadraticAttenuation * d * d;
+        t.attenuation = denom == 1 ? 1.0 : 1.0 / std::max(denom, 1e-12); // 1/1 is 1
         if (light.spotCutoff != 180.0) {
             double cosAngle = dotClamped(-vp, unit(light.spotDirection));
             double cosCutoff = std::cos(light.spotCutoff * (M_PI / 180.0));
@@ -41,9 +57,10 @@ LightTerms lightFactors(const Light& light, double shininess, bool localViewer,
     }
     t.diffuse = dotClamped(normal, vp);
     if (t.diffuse != 0) { // f_i: no highlight on a surface the light does not reach
-        glm::dvec3 toEye = localViewer ? unit(-position) : glm::dvec3(0, 0, 1);
-        glm::dvec3 h = unit(vp + toEye);
-        t.specular = glm::length(h) > 0 ? std::pow(dotClamped(normal, h), shininess) : 0.0;
+        const glm::dvec3 v = vp + toEye;
+        const double len = glm::length(v);
+        // A zero half vector (light exactly behind the viewer): no highlight.
+        if (len > 0) t.specular = std::pow(dotClamped(normal, v / len), shininess);
     }
     return t;
 }

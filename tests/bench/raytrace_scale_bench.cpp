@@ -10,6 +10,10 @@
 // through Embree 3 too.
 //
 // Usage: raytrace_scale_bench [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]
+//                             [--frames-only [--scene NAME]]
+// --frames-only prints the frames' times to stdout (no report; NAME: scenes whose name
+// contains it, or several such parts separated by commas), for measuring the shading and
+// the thread scaling while working on them.
 #include "bench_scenes.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
@@ -71,8 +75,9 @@ double median(std::vector<double> v) {
 struct Options {
     std::string outDir = WB_SOURCE_DIR "/docs/bench";
     std::string workDir = WB_BINARY_DIR "/bench-out";
-    int runs = 5;   // frames per measurement; the median is reported
-    int size = 512; // image size (SPD: 512)
+    int runs = 5;          // frames per measurement; the median is reported
+    int size = 512;        // image size (SPD: 512)
+    bool traversal = true; // measure the traversal-only rate too (--frames-only skips it)
 };
 
 std::string fmt(const char* f, double v) {
@@ -198,7 +203,7 @@ FrameResult measure(const BenchScene& bs, const Options& o, bool quickRuns) {
         (threads == 1 ? r.frame1 : r.frameN) = median(t);
     }
     r.cpuN = median(cpu);
-    r.traversal1 = traversalRate(*sf.scene, cam, o.size, quickRuns ? 1 : 3);
+    if (o.traversal) r.traversal1 = traversalRate(*sf.scene, cam, o.size, quickRuns ? 1 : 3);
     return r;
 }
 
@@ -326,7 +331,8 @@ static std::string buildRateSection(bool quick) {
 
 int main(int argc, char** argv) {
     Options o;
-    bool quick = false, embreeOnly = false;
+    bool quick = false, embreeOnly = false, framesOnly = false;
+    std::string sceneFilter;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--out-dir") && i + 1 < argc)
             o.outDir = argv[++i];
@@ -339,12 +345,17 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--build-only")) {
             std::fputs(buildRateSection(quick).c_str(), stdout); // while tuning the build
             return 0;
+        } else if (!std::strcmp(argv[i], "--frames-only")) {
+            framesOnly = true;
+        } else if (!std::strcmp(argv[i], "--scene") && i + 1 < argc) {
+            sceneFilter = argv[++i];
         } else if (!std::strcmp(argv[i], "--embree-only")) {
             embreeOnly = true; // the Embree comparison to stdout (while tuning), no report
         } else {
             std::fprintf(
                 stderr,
-                "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only]\n",
+                "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only] "
+                "[--frames-only [--scene NAME]]\n",
                 argv[0]);
             return 2;
         }
@@ -360,6 +371,28 @@ int main(int argc, char** argv) {
 #else
     (void)embreeOnly;
 #endif
+    if (framesOnly) {
+        if (std::system(("mkdir -p '" + o.workDir + "'").c_str()) != 0) return 1;
+        std::printf("load %s\n%-14s %8s %9s %9s %6s %9s %6s\n", loadAverage().c_str(), "scene",
+                    "setup ms", "1 thr ms", "N thr ms", "wall x", "CPU N ms", "CPU x");
+        o.traversal = false;
+        for (const auto& bs : benchScenes(writeMesh(o.workDir))) {
+            bool wanted = sceneFilter.empty();
+            for (std::size_t a = 0; a <= sceneFilter.size() && !wanted;) {
+                const std::size_t b = std::min(sceneFilter.find(',', a), sceneFilter.size());
+                wanted = bs.name.find(sceneFilter.substr(a, b - a)) != std::string::npos;
+                a = b + 1;
+            }
+            if (!wanted) continue;
+            const FrameResult r = measure(bs, o, quick);
+            std::printf("%-14s %8.1f %9.1f %9.1f %6.2f %9.1f %6.2f\n", bs.name.c_str(),
+                        r.setupS * 1e3, r.frame1 * 1e3, r.frameN * 1e3, r.frame1 / r.frameN,
+                        r.cpuN * 1e3, hardwareThreads() * r.frame1 / r.cpuN);
+            std::fflush(stdout);
+        }
+        std::printf("load %s\n", loadAverage().c_str());
+        return 0;
+    }
     std::string cmd = "mkdir -p '" + o.workDir + "' '" + o.outDir + "'";
     if (std::system(cmd.c_str()) != 0) return 1;
     std::ostringstream md;

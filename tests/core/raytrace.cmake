@@ -10,6 +10,7 @@ wb_test(raytrace_test
     raytrace/render_test.cpp
     raytrace/tracer_observer_test.cpp
     raytrace/polygon_test.cpp
+    raytrace/sphere_test.cpp
   LIBS core)
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(raytrace_test PRIVATE WB_SANITIZED=1)

@@ -75,6 +75,14 @@ LightTerms lightTerms(const Light& light, const Material& material, bool localVi
 // and light), which needs only the material's shininess.
 LightTerms lightFactors(const Light& light, double shininess, bool localViewer,
                         const glm::dvec3& position, const glm::dvec3& normal);
+// The unit vector from a vertex at eye-space `position` to the viewer: −position
+// normalised for a local viewer (zero at the eye itself), +z for one at infinity.
+glm::dvec3 eyeDirection(bool localViewer, const glm::dvec3& position);
+// lightFactors with the viewer's direction `toEye` = eyeDirection(localViewer, position)
+// given, for a caller that evaluates several lights at one vertex and computes it once
+// (the ray tracer); bit for bit the factors of the overload above.
+LightTerms lightFactors(const Light& light, double shininess, const glm::dvec3& toEye,
+                        const glm::dvec3& position, const glm::dvec3& normal);
 
 // The colour GL computes for a vertex: emission + global ambient + every enabled
 // light, each channel clamped to [0, 1]; alpha is the material's diffuse alpha.

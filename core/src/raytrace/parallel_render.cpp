@@ -13,8 +13,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace wb::rt {
@@ -80,7 +82,12 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
     // The grid the tiles cover: pixels, or the (w+1)×(h+1) pixel corners.
     const int gw = opt.cornerRays ? width + 1 : width;
     const int gh = opt.cornerRays ? height + 1 : height;
-    std::vector<Color> corners(opt.cornerRays ? std::size_t(gw) * std::size_t(gh) : 0);
+    // Left uninitialised (6 MB at 512²: zeroing it was serial work in every frame); every
+    // corner is written by its tile before it is read, and a cancelled frame reads none
+    // but its finished tiles' own.
+    static_assert(std::is_trivially_default_constructible_v<Color>);
+    const std::unique_ptr<Color[]> corners(
+        opt.cornerRays ? new Color[std::size_t(gw) * std::size_t(gh)] : nullptr);
     const int ts = opt.tileSize;
     const int tilesX = (gw + ts - 1) / ts, tilesY = (gh + ts - 1) / ts;
     const int tilesTotal = tilesX * tilesY;
@@ -90,6 +97,19 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
     std::mutex progressMutex;
     int tilesDone = 0; // guarded by progressMutex
 
+    // Corner rays: pixel (x, y) is the mean of its four corners, in the model's units;
+    // returns 1 for a non-finite colour (written as 0).
+    const auto averagePixel = [&](int x, int y) {
+        const auto at = [&](int cx, int cy) {
+            return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
+        };
+        Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
+        const bool ok = finite(c);
+        if (!ok) c = Color(0.0);
+        model.toRgb8(c, img.at(x, y));
+        return ok ? 0 : 1;
+    };
+
     auto renderTile = [&](int tile) {
         if (opt.cancel && opt.cancel->load(std::memory_order_relaxed)) {
             cancelled = true;
@@ -97,17 +117,17 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         }
         const int x0 = (tile % tilesX) * ts, y0 = (tile / tilesX) * ts;
         const int x1 = std::min(gw, x0 + ts), y1 = std::min(gh, y0 + ts);
-        // One tracer per tile: its counters are not shared between threads (no
-        // contended atomics); the totals are added once per tile.
-        Tracer tracer(scene, model, opt.trace);
+        // The tile's rays are counted in plain integers and added to the totals once.
+        const Tracer tracer(scene, model, opt.trace);
+        RayCounts counts;
         long long nBad = 0;
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
                 if (opt.cornerRays) {
                     corners[std::size_t(y) * std::size_t(gw) + std::size_t(x)] =
-                        tracer.trace(lookAt->rayAt(x, y, width, height));
+                        tracer.trace(lookAt->rayAt(x, y, width, height), counts);
                 } else {
-                    Color c = tracer.trace(camera.primaryRay(x, y, width, height));
+                    Color c = tracer.trace(camera.primaryRay(x, y, width, height), counts);
                     if (!finite(c)) {
                         ++nBad;
                         c = Color(0.0);
@@ -115,9 +135,16 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                     model.toRgb8(c, img.at(x, y));
                 }
             }
-        primary += tracer.primaryRays.load();
-        secondary += tracer.secondaryRays.load();
-        shadow += tracer.shadowRays.load();
+        // The pixels whose four corners are all this tile's, at once (in parallel, and
+        // while they are in the cache); those on the tile's last corner row or column
+        // wait for the neighbour's corners (the pass after the tiles).
+        if (opt.cornerRays)
+            for (int y = y0; y + 1 < y1; ++y)
+                for (int x = x0; x + 1 < x1; ++x)
+                    nBad += averagePixel(x, y);
+        primary += counts.primary;
+        secondary += counts.secondary;
+        shadow += counts.shadow;
         bad += nBad;
         if (opt.progress) {
             std::lock_guard<std::mutex> lock(progressMutex);
@@ -139,20 +166,20 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
     forEachIndex(threads, tilesTotal, renderTile);
 
     if (opt.cornerRays && !cancelled) {
-        // Each pixel is the mean of its four corners, in the model's units.
-        forEachIndex(threads, height, [&](int y) {
-            for (int x = 0; x < width; ++x) {
-                const auto at = [&](int cx, int cy) {
-                    return corners[std::size_t(cy) * std::size_t(gw) + std::size_t(cx)];
-                };
-                Color c = 0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1));
-                if (!finite(c)) {
-                    ++bad;
-                    c = Color(0.0);
-                }
-                model.toRgb8(c, img.at(x, y));
+        // The pixels the tiles left: those on a tile's last corner row or column, 6% of
+        // them with 32-pixel tiles, so one thread (a second parallel pass cost more in
+        // waking the workers than it saved).
+        long long nBad = 0;
+        for (int y = 0; y < height; ++y) {
+            if (y % ts == ts - 1) {
+                for (int x = 0; x < width; ++x)
+                    nBad += averagePixel(x, y);
+            } else {
+                for (int x = ts - 1; x < width; x += ts)
+                    nBad += averagePixel(x, y);
             }
-        });
+        }
+        bad += nBad;
     }
     if (stats) {
         stats->seconds =

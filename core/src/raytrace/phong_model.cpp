@@ -12,6 +12,12 @@ namespace {
 double clamp01(double x) {
     return std::isfinite(x) ? std::clamp(x, 0.0, 1.0) : 0.0;
 }
+// std::lround for 0 <= v <= 255 (halves away from zero) without the libm call: the
+// truncation is the floor there and v − floor(v) is exact.
+uint8_t roundByte(double v) {
+    const int i = int(v);
+    return uint8_t(i + (v - double(i) >= 0.5 ? 1 : 0));
+}
 } // namespace
 
 Color PhongModel::background(const Scene& scene) const {
@@ -26,12 +32,11 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
     Color c = m.emission + ambient * scene.globalAmbient;
     // Eye space = world translated so that the viewer (the ray's origin) is at 0.
     const glm::dvec3 pos = hit.point - view.origin;
+    const glm::dvec3 toEye = wb::eyeDirection(true, pos); // once per hit, not per light
+    // Only the fields lightFactors reads are set per light (not its colours).
+    wb::Light gl;
     for (const LightSample& s : lights) {
         const Light& l = *s.light;
-        wb::Light gl;
-        gl.ambient = glm::dvec4(l.ambient, 1);
-        gl.diffuse = glm::dvec4(l.colour, 1);
-        gl.specular = glm::dvec4(l.colour, 1);
         gl.position = l.kind == Light::Kind::Point ? glm::dvec4(l.position - view.origin, 1)
                                                    : glm::dvec4(-l.direction, 0);
         gl.spotDirection = l.spotDirection;
@@ -41,7 +46,7 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
         gl.linearAttenuation = l.linearAttenuation;
         gl.quadraticAttenuation = l.quadraticAttenuation;
         // The factors only: lightTerms' colour sum is not used here.
-        const wb::LightTerms t = wb::lightFactors(gl, shininess, true, pos, hit.normal);
+        const wb::LightTerms t = wb::lightFactors(gl, shininess, toEye, pos, hit.normal);
         // The shadow feeler scales what comes from the light directly, not its ambient.
         c += t.attenuation * t.spot *
              (ambient * l.ambient + s.transmittance * (t.diffuse * diffuse * l.colour +
@@ -60,7 +65,7 @@ Color PhongModel::scale(const Color& c, double s) const {
 
 void PhongModel::toRgb8(const Color& c, uint8_t out[3]) const {
     for (int i = 0; i < 3; ++i)
-        out[i] = uint8_t(std::lround(clamp01(c[i]) * 255.0));
+        out[i] = roundByte(clamp01(c[i]) * 255.0);
 }
 
 } // namespace wb::rt

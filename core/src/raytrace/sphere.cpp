@@ -1,9 +1,8 @@
 #include "core/raytrace/sphere.h"
 
-#include "core/raytrace/quadratic.h"
-
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace wb::rt {
 
@@ -24,7 +23,11 @@ Sphere::Sphere(const glm::dvec3& c, double r) : centre(c), radius(r) {
 
 namespace {
 // The nearest root in (tMin, tMax] and the unit outward normal there (false: no hit).
-// Shared by intersect and occluded so both decide alike, bit for bit.
+// Shared by intersect and occluded so both decide alike, bit for bit; occluded
+// (kNormal = false) needs only whether the normal exists, not its length.
+// solveQuadratic(1, h, c, disc) written out for a = 1 (q / 1 is q): the same roots bit
+// for bit, and a ray that misses (disc < 0) costs one square root, not three.
+template <bool kNormal>
 inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, double tMin,
                     double tMax, double& tOut, glm::dvec3& nOut) {
     if (radius == 0) return false;
@@ -35,28 +38,40 @@ inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, dou
     const glm::dvec3 l = f - h * ray.direction;
     const double ll = glm::length(l);
     const double disc = (radius - ll) * (radius + ll);
+    if (!(disc >= 0) || !std::isfinite(h)) return false; // no real root
     const double fl = glm::length(f);
     const double c = (fl - radius) * (fl + radius);
-    const QuadraticRoots roots = solveQuadratic(1.0, h, c, disc);
-    if (roots.count == 0) return false;
-    double t = roots.t0;
+    if (!std::isfinite(c)) return false;
+    const double q = -(h + std::copysign(std::sqrt(disc), h));
+    double t0 = 0.0, t1 = 0.0; // q == 0: h == 0 and disc == 0, so c == 0: double root at 0
+    if (q != 0) {
+        t0 = q;
+        t1 = c / q;
+        if (t0 > t1) std::swap(t0, t1);
+    }
+    double t = t0;
     if (!(t > tMin && t <= tMax)) {
-        t = roots.t1;
+        t = t1;
         if (!(t > tMin && t <= tMax)) return false;
     }
-    glm::dvec3 n = ray.at(t) - centre;
-    const double nl = glm::length(n);
-    if (!(nl > 0)) return false;
-    tOut = t;
-    nOut = n / nl;
-    return true;
+    const glm::dvec3 n = ray.at(t) - centre;
+    if constexpr (!kNormal) {
+        tOut = t;
+        return glm::dot(n, n) > 0; // |n| > 0 without the square root
+    } else {
+        const double nl = glm::length(n);
+        if (!(nl > 0)) return false;
+        tOut = t;
+        nOut = n / nl;
+        return true;
+    }
 }
 } // namespace
 
 bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     double t;
     glm::dvec3 n;
-    if (!nearest(centre, radius, ray, tMin, tMax, t, n)) return false;
+    if (!nearest<true>(centre, radius, ray, tMin, tMax, t, n)) return false;
     const glm::dvec3 p = centre + radius * n; // refine onto the surface: error relative to |p|
     hit.t = t;
     hit.point = p;
@@ -76,7 +91,7 @@ glm::dvec2 Sphere::textureCoords(const Hit& hit) const {
 bool Sphere::occluded(const Ray& ray, double tMin, double tMax) const {
     double t;
     glm::dvec3 n;
-    return nearest(centre, radius, ray, tMin, tMax, t, n);
+    return nearest<false>(centre, radius, ray, tMin, tMax, t, n);
 }
 
 Aabb Sphere::bounds() const {

@@ -24,30 +24,49 @@ std::optional<glm::dvec3> refractDir(const glm::dvec3& v, const glm::dvec3& n, d
 double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
                              double dist, const Primitive* self) const {
     ++shadowRays;
+    return feelerTransmittance(origin, dir, tMin, dist, self);
+}
+
+double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
+                                   double dist, const Primitive* self) const {
     Ray feeler;
     feeler.origin = origin;
     feeler.direction = dir;
-    double k = 1.0;
+    // The visitor captures one reference: std::function keeps a functor of up to 16
+    // bytes in place, a bigger one (three references) costs a malloc and a free per
+    // feeler (4.5% of the balls 4 frame's instructions).
+    struct Walk {
+        const std::vector<Material>& materials;
+        double opaqueKt;
+        const Primitive* self;
+        double k = 1.0;
+    } walk{scene_.materials, settings_.opaqueKt, self};
     // Only the blockers' materials matter: no hit records (Primitive::occluded).
-    scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&](const Primitive& p) {
-        if (&p == self) return true; // a flat primitive cannot shadow its own point
-        const double kt = scene_.materials[size_t(p.material)].kt;
-        if (kt < settings_.opaqueKt) {
-            k = 0.0; // an opaque blocker: no need to look further
+    scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&walk](const Primitive& p) {
+        if (&p == walk.self) return true; // a flat primitive cannot shadow its own point
+        const double kt = walk.materials[size_t(p.material)].kt;
+        if (kt < walk.opaqueKt) {
+            walk.k = 0.0; // an opaque blocker: no need to look further
             return false;
         }
-        k *= kt;
+        walk.k *= kt;
         return true;
     });
-    return k;
+    return walk.k;
 }
+
+namespace {
+// feelerStart with eps = |offsetRayOrigin(p, n) − p| known (once per hit, not per light).
+double feelerStartAt(double eps, const glm::dvec3& n, const glm::dvec3& dir) {
+    return eps / std::max(glm::dot(dir, n), 1e-3);
+}
+} // namespace
 
 double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
     // How far along `dir` the point is as far from the surface as the RTG offset along
     // the normal would put it. The cosine is floored at 1e-3 so that a light at grazing
     // incidence (whose diffuse term is ~0 anyway) cannot push the start past blockers.
-    const double eps = glm::length(offsetRayOrigin(p, n) - p);
-    return eps / std::max(glm::dot(dir, n), 1e-3);
+    return feelerStartAt(glm::length(offsetRayOrigin(p, n) - p), n, dir);
 }
 
 std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
@@ -57,8 +76,19 @@ std::vector<LightSample> Tracer::sampleLights(const Hit& hit) const {
 }
 
 void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
+    RayCounts counts;
+    sampleLightsFrom(hit, offsetRayOrigin(hit.point, hit.normal), out, counts);
+    shadowRays += counts.shadow;
+}
+
+void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
+                              std::vector<LightSample>& out, RayCounts& counts) const {
     out.clear();
     out.reserve(scene_.lights.size());
+    // Per hit, not per light: the feelers' start distance at normal incidence and the
+    // primitive they must not count (a virtual call).
+    const double eps = glm::length(offsetOrigin - hit.point);
+    const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
     for (const Light& l : scene_.lights) {
         LightSample s;
         s.light = &l;
@@ -76,12 +106,13 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
             // The feeler is the exact segment point–light, started where it is as far off
             // the surface as the normal offset of reflected rays: a feeler that grazes a
             // blocker's border (seed 000's does, exactly) is judged on the true line.
-            const double t0 = feelerStart(hit.point, hit.normal, s.toLight);
-            const Primitive* self =
-                hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
-            s.transmittance = t0 < s.distance
-                                  ? transmittance(hit.point, s.toLight, t0, s.distance, self)
-                                  : 1.0; // the light is closer than the offset
+            const double t0 = feelerStartAt(eps, hit.normal, s.toLight);
+            if (t0 < s.distance) {
+                ++counts.shadow;
+                s.transmittance = feelerTransmittance(hit.point, s.toLight, t0, s.distance, self);
+            } else {
+                s.transmittance = 1.0; // the light is closer than the offset
+            }
         } else {
             s.transmittance = 0.0; // the surface faces away from the light
         }
@@ -90,11 +121,12 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
 }
 
 template <bool kObserve>
-Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget) const {
+Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
+                       RayCounts& counts) const {
     if (ray.depth == 0)
-        ++primaryRays;
+        ++counts.primary;
     else
-        ++secondaryRays;
+        ++counts.secondary;
     if constexpr (kObserve) observer->rayBegin(ray, kind);
     Hit hit;
     if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
@@ -109,9 +141,12 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
     const glm::dvec3 surface = (m.texture && hit.hasUv)
                                    ? sampleTexture(*m.texture, hit.primitive->textureCoords(hit))
                                    : m.colour;
+    // The reflected ray's origin; the shadow feelers start as far off the surface.
+    const glm::dvec3 offsetOrigin = offsetRayOrigin(hit.point, hit.normal);
     Color c;
     if constexpr (kObserve) { // observers may trace again from hit(): a vector of its own
-        const std::vector<LightSample> samples = sampleLights(hit);
+        std::vector<LightSample> samples;
+        sampleLightsFrom(hit, offsetOrigin, samples, counts);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
         observer->hit(ray, hit, m, surface, samples, c);
     } else {
@@ -119,7 +154,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         // used up by direct() before the recursion below, so nested rays can refill it.
         // (A shading model must not call trace() from direct().)
         thread_local std::vector<LightSample> samples;
-        sampleLights(hit, samples);
+        sampleLightsFrom(hit, offsetOrigin, samples, counts);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
     }
 
@@ -137,12 +172,12 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         } else if (reflect) {
             --budget;
             Ray r;
-            r.origin = offsetRayOrigin(hit.point, hit.normal);
+            r.origin = offsetOrigin;
             r.direction = reflectDir(ray.direction, hit.normal);
             r.weight = ray.weight * m.kr / share;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
-            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget);
+            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget, counts);
             if constexpr (kObserve) observer->childResult(RayKind::Reflected, rc, m.kr);
             c = model_.addScaled(c, rc, m.kr);
         } else if (kObserve && m.kr > 0) {
@@ -176,7 +211,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
                 t.weight = ray.weight * m.kt / share;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget);
+                const Color tc =
+                    traceRay<kObserve>(t, RayKind::Refracted, observer, budget, counts);
                 if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
                 c = model_.addScaled(c, tc, m.kt);
             } else if (kObserve) {
@@ -199,15 +235,32 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
     return c;
 }
 
+void Tracer::add(const RayCounts& counts) const {
+    // Only what changed: each is an atomic read-modify-write.
+    if (counts.primary) primaryRays += counts.primary;
+    if (counts.secondary) secondaryRays += counts.secondary;
+    if (counts.shadow) shadowRays += counts.shadow;
+}
+
 Color Tracer::trace(const Ray& ray) const {
+    RayCounts counts;
+    const Color c = trace(ray, counts);
+    add(counts);
+    return c;
+}
+
+Color Tracer::trace(const Ray& ray, RayCounts& counts) const {
     long budget = settings_.maxRaysPerSample;
-    return traceRay<false>(ray, RayKind::Primary, nullptr, budget);
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {
     if (!observer) return trace(ray);
     long budget = settings_.maxRaysPerSample;
-    return traceRay<true>(ray, RayKind::Primary, observer, budget);
+    RayCounts counts;
+    const Color c = traceRay<true>(ray, RayKind::Primary, observer, budget, counts);
+    add(counts);
+    return c;
 }
 
 } // namespace wb::rt

@@ -1,7 +1,8 @@
 // Parallel tiled rendering: the image is bit-identical for 1, 2 and 3 threads and any
 // tile size, and equal to the single-threaded reference renderer (render.h); the BVH
 // gives the same image as the plain loop; progress reports every tile once, serialised;
-// the cancel flag stops the frame; corner rays shoot (w+1)(h+1) eye rays.
+// the cancel flag stops the frame; corner rays shoot (w+1)(h+1) eye rays; the ray counts
+// equal a tracer's own counters.
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
@@ -29,6 +30,20 @@ TEST_CASE("rt_parallel: bit-identical for every thread count and tile size",
     const LookAtCamera cam = sf.camera();
     PhongModel model;
     const wb::Image ref = render(*sf.scene, cam, model, kW, kH);
+    // The rays one tracer counts (its atomics, per trace) for every pixel's ray: the
+    // tiles count theirs in RayCounts and add them once.
+    const Tracer counter(*sf.scene, model);
+    RayCounts local;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const Ray ray = cam.primaryRay(x, y, kW, kH);
+            const Color a = counter.trace(ray), b = counter.trace(ray, local);
+            REQUIRE(a == b);
+        }
+    CHECK(counter.primaryRays == kW * kH);
+    CHECK(local.primary == kW * kH);
+    CHECK(local.secondary == counter.secondaryRays);
+    CHECK(local.shadow == counter.shadowRays);
     for (auto [threads, tile] : {std::pair{1, 32}, std::pair{2, 7}, std::pair{3, 16}}) {
         INFO("threads " << threads << " tile " << tile);
         ParallelRenderOptions opt;
@@ -38,7 +53,9 @@ TEST_CASE("rt_parallel: bit-identical for every thread count and tile size",
         const wb::Image img = renderParallel(*sf.scene, cam, model, kW, kH, opt, &st);
         CHECK(img.data == ref.data);
         CHECK(st.primaryRays == kW * kH);
+        CHECK(st.secondaryRays == local.secondary);
         CHECK(st.secondaryRays > 0); // mirrored spheres
+        CHECK(st.shadowRays == local.shadow);
         CHECK(st.shadowRays > 0);
         CHECK(st.nonFinitePixels == 0);
         CHECK_FALSE(st.cancelled);
@@ -122,6 +139,27 @@ TEST_CASE("rt_parallel: corner rays shoot (w+1)(h+1) eye rays", "[raytrace][para
     CHECK(st1.primaryRays == (kW + 1) * (kH + 1));
     CHECK(st2.primaryRays == (kW + 1) * (kH + 1));
     CHECK(a.data == b.data);
+    // Each pixel is the mean of its four corner rays' colours, whichever tile (or the
+    // pass after the tiles, for a tile's last corner row and column) averaged it: the
+    // image built here from one tracer, for tile sizes that put the seams everywhere.
+    const Tracer tracer(*sf.scene, model, opt.trace);
+    std::vector<Color> corner(std::size_t((kW + 1) * (kH + 1)));
+    for (int y = 0; y <= kH; ++y)
+        for (int x = 0; x <= kW; ++x)
+            corner[std::size_t(y * (kW + 1) + x)] = tracer.trace(cam.rayAt(x, y, kW, kH));
+    wb::Image want(kW, kH, 3);
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const auto at = [&](int cx, int cy) { return corner[std::size_t(cy * (kW + 1) + cx)]; };
+            model.toRgb8(0.25 * (at(x, y) + at(x + 1, y) + at(x, y + 1) + at(x + 1, y + 1)),
+                         want.at(x, y));
+        }
+    CHECK(a.data == want.data);
+    for (int tile : {1, 2, 3, 31, 64, 72, 73, 200}) {
+        INFO("tile " << tile);
+        opt.tileSize = tile;
+        CHECK(renderParallel(*sf.scene, cam, model, kW, kH, opt).data == want.data);
+    }
     // Corner averaging stays close to centre sampling (edges blur by one pixel at most).
     const wb::Image c = render(*sf.scene, cam, model, kW, kH);
     CHECK(wb::compareImages(a, c).meanDiff < 3.0);
@@ -142,8 +180,7 @@ class NanModel : public PhongModel {
 };
 } // namespace
 
-TEST_CASE("rt_parallel: non-finite colours are counted and written as 0",
-          "[raytrace][parallel]") {
+TEST_CASE("rt_parallel: non-finite colours are counted and written as 0", "[raytrace][parallel]") {
     SceneFile sf = toScene(oneSphereScene());
     const LookAtCamera cam = sf.camera();
     const NanModel model;
@@ -158,6 +195,6 @@ TEST_CASE("rt_parallel: non-finite colours are counted and written as 0",
             black += p[0] == 0 && p[1] == 0 && p[2] == 0;
         }
     CHECK(st.nonFinitePixels > 0);
-    CHECK(st.nonFinitePixels <= black); // each counted pixel was written black
+    CHECK(st.nonFinitePixels <= black);  // each counted pixel was written black
     CHECK(st.nonFinitePixels < kW * kH); // the background stays finite
 }

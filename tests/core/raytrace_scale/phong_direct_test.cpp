@@ -1,8 +1,11 @@
 // The phong model's per-hit shading (issue 13: no GL material/colour sum per light; only
-// lightFactors) against the formula it replaced, written out here with the full
-// wb::lightTerms and GL structs: the same colour bit for bit on random hits, materials
-// and lights (point/directional, attenuation, spots, shadowed, facing away), and
-// lightFactors against lightTerms' factors.
+// lightFactors, each length taken once, the eye direction once per hit) against the
+// formula it replaced, written out here with the GL structs and lightFactors as it was
+// before (every unit vector and length recomputed): the same colour bit for bit on
+// random hits, materials and lights (point/directional, attenuation, spots, shadowed,
+// facing away); lightFactors (both overloads) against that copy on random and
+// degenerate vertices (light at the vertex, vertex at the eye, light behind the viewer,
+// tiny and huge distances, w != 1, NaN), and against lightTerms' factors.
 #include "core/lighting.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/scene.h"
@@ -10,14 +13,66 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 using namespace wb::rt;
 
 namespace {
 
-// PhongModel::direct as it was before issue 13 (commit 92489dc).
+double clampedDot(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::max(glm::dot(a, b), 0.0);
+}
+glm::dvec3 unitOrZero(const glm::dvec3& v) {
+    double len = glm::length(v);
+    return len > 0 ? v / len : glm::dvec3(0);
+}
+
+// wb::lightFactors as it was before the per-hit work was cut (commit e6c89b3), verbatim
+// but for the helpers' names.
+wb::LightTerms referenceFactors(const wb::Light& light, double shininess, bool localViewer,
+                                const glm::dvec3& position, const glm::dvec3& normal) {
+    wb::LightTerms t;
+    const bool positional = light.position.w != 0;
+    glm::dvec3 vp;
+    if (positional) {
+        glm::dvec3 lightPos = glm::dvec3(light.position) / light.position.w;
+        glm::dvec3 toLight = lightPos - position;
+        double d = glm::length(toLight);
+        vp = unitOrZero(toLight);
+        double denom = light.constantAttenuation + light.linearAttenuation * d +
+                       light.quadraticAttenuation * d * d;
+        t.attenuation = 1.0 / std::max(denom, 1e-12);
+        if (light.spotCutoff != 180.0) {
+            double cosAngle = clampedDot(-vp, unitOrZero(light.spotDirection));
+            double cosCutoff = std::cos(light.spotCutoff * (M_PI / 180.0));
+            t.spot = cosAngle >= cosCutoff ? std::pow(cosAngle, light.spotExponent) : 0.0;
+        }
+    } else {
+        vp = unitOrZero(glm::dvec3(light.position));
+    }
+    t.diffuse = clampedDot(normal, vp);
+    if (t.diffuse != 0) {
+        glm::dvec3 toEye = localViewer ? unitOrZero(-position) : glm::dvec3(0, 0, 1);
+        glm::dvec3 h = unitOrZero(vp + toEye);
+        t.specular = glm::length(h) > 0 ? std::pow(clampedDot(normal, h), shininess) : 0.0;
+    }
+    return t;
+}
+
+// Bit for bit, or both NaN (a NaN's payload is not the point).
+bool same(double a, double b) {
+    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
+}
+bool sameFactors(const wb::LightTerms& a, const wb::LightTerms& b) {
+    return same(a.attenuation, b.attenuation) && same(a.spot, b.spot) &&
+           same(a.diffuse, b.diffuse) && same(a.specular, b.specular);
+}
+
+// PhongModel::direct as it was before issue 13 (commit 92489dc), with lightTerms'
+// factors from the copy above.
 Color referenceDirect(const Scene& scene, const Ray& view, const Hit& hit, const Material& m,
                       const glm::dvec3& surface, const std::vector<LightSample>& lights) {
     wb::Material gm;
@@ -42,7 +97,7 @@ Color referenceDirect(const Scene& scene, const Ray& view, const Hit& hit, const
         gl.constantAttenuation = l.constantAttenuation;
         gl.linearAttenuation = l.linearAttenuation;
         gl.quadraticAttenuation = l.quadraticAttenuation;
-        const wb::LightTerms t = wb::lightTerms(gl, gm, true, pos, hit.normal);
+        const wb::LightTerms t = referenceFactors(gl, gm.shininess, true, pos, hit.normal);
         c += t.attenuation * t.spot *
              (glm::dvec3(gm.ambient) * l.ambient +
               s.transmittance * (t.diffuse * glm::dvec3(gm.diffuse) * l.colour +
@@ -132,4 +187,111 @@ TEST_CASE("rt_phong: lightFactors are lightTerms' factors", "[raytrace][phong]")
         REQUIRE(a.diffuse == b.diffuse);
         REQUIRE(a.specular == b.specular);
     }
+}
+
+TEST_CASE("rt_phong: lightFactors equal the unshortened formula, degenerate vertices too",
+          "[raytrace][phong]") {
+    std::mt19937_64 g(15);
+    std::uniform_real_distribution<double> u(0, 1);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    int lit = 0, highlights = 0, cases = 0;
+    auto check = [&](const wb::Light& l, double shininess, const glm::dvec3& p,
+                     const glm::dvec3& n) {
+        for (bool local : {true, false}) {
+            const wb::LightTerms ref = referenceFactors(l, shininess, local, p, n);
+            const wb::LightTerms a = wb::lightFactors(l, shininess, local, p, n);
+            const wb::LightTerms b =
+                wb::lightFactors(l, shininess, wb::eyeDirection(local, p), p, n);
+            INFO("light " << l.position.x << ' ' << l.position.y << ' ' << l.position.z << ' '
+                          << l.position.w << ", vertex " << p.x << ' ' << p.y << ' ' << p.z
+                          << ", local " << local);
+            REQUIRE(sameFactors(a, ref));
+            REQUIRE(sameFactors(b, ref));
+            lit += ref.diffuse > 0;
+            highlights += ref.specular > 0;
+            ++cases;
+        }
+    };
+    for (int i = 0; i < 3000; ++i) {
+        wb::Light l;
+        l.position = glm::dvec4(rnd3(g, -5, 5), i % 4 == 0 ? 0.0 : (i % 4 == 1 ? 2.5 : 1.0));
+        l.spotCutoff = i % 3 ? 180.0 : 10 + 80 * u(g);
+        l.spotExponent = 5 * u(g);
+        l.spotDirection = rnd3(g, -1, 1);
+        l.constantAttenuation = i % 5 == 0 ? 1.0 : u(g); // 1 with k1 = k2 = 0: denominator 1
+        l.linearAttenuation = i % 5 == 0 ? 0.0 : u(g);
+        l.quadraticAttenuation = i % 5 == 0 ? 0.0 : 0.1 * u(g);
+        const double shininess = i % 2 ? double(int(128 * u(g))) : 128 * u(g);
+        const glm::dvec3 p = rnd3(g, -5, 5), n = glm::normalize(rnd3(g, -1, 1));
+        check(l, shininess, p, n);
+    }
+    // Degenerate vertices: each where a shortened length test could differ.
+    const glm::dvec3 n = glm::normalize(glm::dvec3(0.3, -0.2, 1.0));
+    for (double s : {1e-300, 1e-160, 1e-20, 1.0, 1e20, 1e150, 1e200}) {
+        wb::Light l;
+        const glm::dvec3 p(0.5 * s, -0.25 * s, -s);
+        l.position = glm::dvec4(p, 1); // light at the vertex: VP = 0
+        check(l, 10, p, n);
+        check(l, 10, glm::dvec3(0.0), n);    // vertex at the eye: toEye = 0
+        l.position = glm::dvec4(2.0 * p, 1); // light behind the viewer: VP + toEye = 0
+        check(l, 10, p, n);
+        l.position = glm::dvec4(-p, 1);
+        check(l, 10, p, n);
+        l.position = glm::dvec4(s, 0.5 * s, 2 * s, 0); // directional, any length
+        check(l, 5, p, n);
+        l.position = glm::dvec4(0, 0, 0, 0); // directional, no direction
+        check(l, 5, p, n);
+        l.position = glm::dvec4(p.x, p.y, p.z + s * 1e-12, 1); // nearly at the vertex
+        check(l, 5, p, n);
+    }
+    wb::Light l;
+    l.position = glm::dvec4(1, nan, 0, 1);
+    check(l, 3, glm::dvec3(0.2, 0.1, -1), n);
+    l.position = glm::dvec4(1, 1, 1, 1);
+    check(l, 3, glm::dvec3(nan, 0.1, -1), n);
+    check(l, 3, glm::dvec3(0.2, 0.1, -1), glm::dvec3(nan));
+    l.position = glm::dvec4(std::numeric_limits<double>::infinity(), 1, 1, 1);
+    check(l, 3, glm::dvec3(0.2, 0.1, -1), n);
+    CHECK(lit > cases / 3); // not vacuous: many lit vertices with highlights
+    CHECK(highlights > cases / 4);
+}
+
+TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]") {
+    PhongModel model;
+    const auto expected = [](double v) {
+        const double x = std::isfinite(v) ? std::clamp(v, 0.0, 1.0) : 0.0;
+        return int(std::lround(x * 255.0));
+    };
+    std::vector<double> values = {0.0,
+                                  -0.0,
+                                  1.0,
+                                  -1e-300,
+                                  1e-300,
+                                  2.0,
+                                  std::numeric_limits<double>::infinity(),
+                                  -std::numeric_limits<double>::infinity(),
+                                  std::numeric_limits<double>::quiet_NaN()};
+    // Every tie k + 1/2 (as far as (k + 0.5)/255 lands on one) and its neighbours.
+    for (int k = 0; k < 256; ++k)
+        for (double v : {(k + 0.5) / 255, double(k) / 255}) {
+            values.push_back(v);
+            values.push_back(std::nextafter(v, 0.0));
+            values.push_back(std::nextafter(v, 2.0));
+        }
+    std::mt19937_64 g(16);
+    std::uniform_real_distribution<double> u(-0.1, 1.1);
+    for (int i = 0; i < 100000; ++i)
+        values.push_back(u(g));
+    int ties = 0;
+    for (double v : values) {
+        ties +=
+            std::clamp(v, 0.0, 1.0) * 255.0 - std::floor(std::clamp(v, 0.0, 1.0) * 255.0) == 0.5;
+        uint8_t out[3];
+        model.toRgb8(Color(v, 0.5, 1.0), out);
+        INFO("v = " << v);
+        REQUIRE(int(out[0]) == expected(v));
+        REQUIRE(int(out[1]) == 128); // 127.5: the tie goes up
+        REQUIRE(int(out[2]) == 255);
+    }
+    CHECK(ties > 100); // the ties were really tested
 }

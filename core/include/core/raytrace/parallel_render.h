@@ -31,8 +31,9 @@ struct ParallelRenderOptions {
     bool cornerRays = false;
     TraceSettings trace; // depth limit, weight cut-off
     // Called after each finished tile, from a worker thread, serialised by a mutex.
-    // With cornerRays the tiles are tiles of the corner grid and the image is filled
-    // only at the end (tile callbacks then carry image == nullptr).
+    // With cornerRays the tiles are tiles of the corner grid and the image is complete
+    // only at the end: a tile averages the pixels whose corners are all its own, the
+    // rest follow the last tile (tile callbacks then carry image == nullptr).
     std::function<void(const TileProgress&)> progress;
     const std::atomic<bool>* cancel = nullptr; // set to true to stop: tiles not started are skipped
 };

@@ -75,6 +75,13 @@ struct TraceObserver {
     virtual void rayEnd(const Color& /*colour*/) {}
 };
 
+// Rays one or more trace() calls shot (Tracer::trace(ray, counts)).
+struct RayCounts {
+    long long primary = 0;   // eye rays (depth 0)
+    long long secondary = 0; // reflected + refracted rays
+    long long shadow = 0;    // shadow feelers
+};
+
 class Tracer {
   public:
     Tracer(const Scene& scene, const ShadingModel& model, TraceSettings settings = {})
@@ -85,6 +92,10 @@ class Tracer {
 
     // Colour carried back along `ray`, in the model's units.
     Color trace(const Ray& ray) const;
+    // The same colour, its rays added to `counts` instead of the counters below: for a
+    // caller that sums them itself (renderParallel, once per tile) — the counters are
+    // atomics, and a read-modify-write per ray costs ~3% of a frame.
+    Color trace(const Ray& ray, RayCounts& counts) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -97,15 +108,26 @@ class Tracer {
     double transmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin, double dist,
                          const Primitive* self = nullptr) const;
 
-    // Counters for the bench and tests (relaxed atomics: cheap, thread-safe).
+    // Rays shot by trace() and the public sampleLights/transmittance, for the bench and
+    // tests (atomics, thread-safe; trace() adds its rays once, when it returns).
     mutable std::atomic<long long> primaryRays{0}, secondaryRays{0}, shadowRays{0};
 
   private:
+    // sampleLights with offsetRayOrigin(hit.point, hit.normal) given (traceRay needs it
+    // for the reflected ray too).
+    void sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
+                          std::vector<LightSample>& out, RayCounts& counts) const;
+    // transmittance without counting the feeler (the caller counts it).
+    double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
+                               double dist, const Primitive* self) const;
+    void add(const RayCounts& counts) const; // to the atomic counters
     // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
     // `budget`: child rays this trace() may still spawn (TraceSettings::maxRaysPerSample).
+    // `counts`: the rays it shoots are added there (trace() adds them to the atomics).
     template <bool kObserve>
-    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget) const;
+    Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
+                   RayCounts& counts) const;
 
     const Scene& scene_;
     const ShadingModel& model_;
