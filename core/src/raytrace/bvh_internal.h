@@ -6,19 +6,31 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace wb::rt::bvh_detail {
 
-inline float floatDown(double x) {
-    float f = float(x);
-    if (double(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+// std::nextafter(f, ∓inf) without the library call (every primitive's box goes through
+// these): one step of the bit pattern away from zero or towards it; ±0 steps to the
+// smallest denormal; +inf steps down to FLT_MAX, FLT_MAX·(−1) down to −inf. f is not NaN.
+inline float floatStep(float f, bool down) {
+    if (f == 0) return down ? -std::numeric_limits<float>::denorm_min()
+                            : std::numeric_limits<float>::denorm_min();
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    const bool negative = (u >> 31) != 0;
+    u = negative == down ? u + 1 : u - 1; // away from zero: +1 on the magnitude
+    std::memcpy(&f, &u, sizeof f);
     return f;
 }
+inline float floatDown(double x) {
+    const float f = float(x);
+    return double(f) > x ? floatStep(f, true) : f;
+}
 inline float floatUp(double x) {
-    float f = float(x);
-    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
+    const float f = float(x);
+    return double(f) < x ? floatStep(f, false) : f;
 }
 
 // A node of the binary tree as built (depth first, left child right after its parent).
