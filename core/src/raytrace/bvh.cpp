@@ -13,10 +13,14 @@
 #include <memory>
 #include <new>
 #include <stdexcept>
-#include <tbb/blocked_range.h>
+#include <tbb/task_arena.h>
+#ifdef WB_TSAN_THREADS
+#include <atomic>
+#include <thread>
+#else
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
-#include <tbb/task_arena.h>
+#endif
 #include <utility>
 #include <xmmintrin.h>
 #ifdef __linux__
@@ -109,6 +113,35 @@ constexpr std::size_t kBlock = 8192;
 constexpr std::size_t kBlockNode = 65536;
 constexpr std::size_t kParallelGrain = 2048;
 static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
+
+// The parallel parts: TBB normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON,
+// WB_TSAN_THREADS) std::threads, because Debian's TBB is not instrumented and TSan
+// cannot see its hand-offs (as renderParallel does). The work split is the same.
+template <class F>
+void parallelFor(std::size_t count, const F& f) {
+#ifdef WB_TSAN_THREADS
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i = next++; i < count; i = next++)
+            f(i);
+    };
+    std::thread helper(work);
+    work();
+    helper.join();
+#else
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) { f(i); });
+#endif
+}
+template <class A, class B>
+void parallelInvoke(const A& a, const B& b) {
+#ifdef WB_TSAN_THREADS
+    std::thread helper(b);
+    a();
+    helper.join();
+#else
+    tbb::parallel_invoke(a, b);
+#endif
+}
 
 // 1. Binning: the bin of a centroid, per axis, clamped in float before the conversion
 //    (a huge or NaN product converted to int is undefined behaviour; found by
@@ -249,7 +282,7 @@ struct Builder {
     template <class F>
     void forBlocks(std::size_t blocks, F&& f) const {
         if (parallel && blocks > 1)
-            tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t k) { f(k); });
+            parallelFor(blocks, f);
         else
             for (std::size_t k = 0; k < blocks; ++k)
                 f(k);
@@ -623,8 +656,8 @@ void buildTopParallel(const Builder& b, const Task& t, Subtree& out) {
             out.tally.sahCost = b.options.traversalCost * t.box.area() / b.rootArea;
             out.left = std::make_unique<Subtree>();
             out.right = std::make_unique<Subtree>();
-            tbb::parallel_invoke([&] { buildTopParallel(b, d.left, *out.left); },
-                                 [&] { buildTopParallel(b, d.right, *out.right); });
+            parallelInvoke([&] { buildTopParallel(b, d.left, *out.left); },
+                           [&] { buildTopParallel(b, d.right, *out.right); });
             return;
         }
         // A large group that cannot be split (coincident centroids): one task.
@@ -689,7 +722,7 @@ void stitch(Subtree& top, Nodes& nodes, Tally& total) {
         stack.push_back(s->right.get());
         stack.push_back(s->left.get());
     }
-    tbb::parallel_for(std::size_t(0), groups.size(), [&](std::size_t g) {
+    parallelFor(groups.size(), [&](std::size_t g) {
         const Subtree& s = *groups[g];
         const auto base = std::uint32_t(s.base);
         BuildNode* dst = nodes.data() + s.base;
@@ -776,7 +809,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             std::vector<std::size_t> valid(blocks + 1, 0);
             std::vector<Box4> boxes(blocks), cboxes(blocks);
             std::vector<std::uint8_t> ok(count);
-            tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t k) {
+            parallelFor(blocks, [&](std::size_t k) {
                 std::size_t v = 0;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
                     ok[i] = makeRef(*prims[i], std::uint32_t(i), bufB.data[i]);
@@ -799,7 +832,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                         }
                 valid[k + 1] += valid[k];
             }
-            tbb::parallel_for(std::size_t(0), blocks, [&](std::size_t k) {
+            parallelFor(blocks, [&](std::size_t k) {
                 Ref* dst = bufA.data.get() + valid[k];
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i)
                     if (ok[i]) *dst++ = bufB.data[i];
@@ -834,8 +867,8 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 order_[i] = prims[orderIndex_[i]].get();
         };
         if (parallel)
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kBlock),
-                              [&](const tbb::blocked_range<std::size_t>& r) { fill(r.begin(), r.end()); });
+            parallelFor((n + kBlock - 1) / kBlock,
+                        [&](std::size_t k) { fill(k * kBlock, std::min(n, (k + 1) * kBlock)); });
         else
             fill(0, n);
     };
