@@ -536,10 +536,11 @@ struct Builder {
 
     BuildNode nodeOf(const Task& t) const {
         BuildNode node;
-        for (int a = 0; a < 3; ++a) {
-            node.lo[a] = t.box.lo_(a);
-            node.hi[a] = t.box.hi_(a);
-        }
+        const __m128 lo = t.box.lo, hi = t.box.hi;
+        _mm_storeu_pd(&node.lo.x, _mm_cvtps_pd(lo));
+        _mm_store_sd(&node.lo.z, _mm_cvtps_pd(_mm_movehl_ps(lo, lo)));
+        _mm_storeu_pd(&node.hi.x, _mm_cvtps_pd(hi));
+        _mm_store_sd(&node.hi.z, _mm_cvtps_pd(_mm_movehl_ps(hi, hi)));
         node.offset = 0;
         node.count = 0;
         node.axis = 0;
@@ -616,6 +617,12 @@ void buildSubtree(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Ta
     const auto idx = nodes.size();
     nodes.push_back(b.nodeOf(t));
     tally.maxDepth = std::max(tally.maxDepth, t.depth);
+    if (t.end - t.begin == 1) { // half of all nodes: a leaf, as decide would say
+        b.emitLeaf(t, nodes[idx]);
+        ++tally.leaves;
+        tally.sahCost += b.options.intersectionCost * t.box.area() / b.rootArea;
+        return;
+    }
     const Decision d = b.decideAny(t, sc);
     if (d.leaf) {
         b.emitLeaf(t, nodes[idx]);
