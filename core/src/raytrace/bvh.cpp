@@ -558,22 +558,45 @@ struct Builder {
 };
 
 // Large build arrays: fresh memory costs a page fault per 4 KiB page (the kernel's
-// share was ~10% of a build in `perf`); in 2 MiB pages (Linux: transparent huge pages
-// on request) it is one fault per 2 MiB. Small ones come from malloc.
+// share was ~10% of a build in `perf`); in 2 MiB pages (Linux: a mapping of its own with
+// transparent huge pages on request) it is one fault per 2 MiB. Through malloc the
+// hint landed on glibc's heap at times and 1 build in 8 took twice as long (balls 5:
+// 40 instead of 21 ms); an own mapping measured 20-23 ms every time. Small arrays
+// and other systems: malloc.
 constexpr std::size_t kHuge = std::size_t(2) << 20;
 void* bigAlloc(std::size_t bytes) {
-    if (bytes < kHuge) {
-        void* p = std::malloc(bytes ? bytes : 1);
-        if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes >= kHuge) {
+        // Room for the alignment and, just below the aligned start, the mapping's base
+        // and length (the mapping starts at least a 4 KiB page below it).
+        const std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge;
+        void* base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (base == MAP_FAILED) throw std::bad_alloc();
+        const auto start = (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
+        char* p = reinterpret_cast<char*>(start);
+        madvise(p, length - std::size_t(p - static_cast<char*>(base)), MADV_HUGEPAGE); // a hint
+        std::memcpy(p - 16, &base, sizeof base);
+        std::memcpy(p - 8, &length, sizeof length);
         return p;
     }
-    const std::size_t rounded = (bytes + kHuge - 1) / kHuge * kHuge;
-    void* p = std::aligned_alloc(kHuge, rounded);
-    if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-    madvise(p, rounded, MADV_HUGEPAGE); // a hint: without it the pages are 4 KiB
 #endif
+    void* p = std::malloc(bytes ? bytes : 1);
+    if (!p) throw std::bad_alloc();
     return p;
+}
+void bigFree(void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes >= kHuge) {
+        void* base;
+        std::size_t length;
+        std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
+        std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
+        munmap(base, length);
+        return;
+    }
+#endif
+    (void)bytes;
+    std::free(p);
 }
 
 // The node array (not zeroed on resize: every node is written), in bigAlloc memory.
@@ -584,7 +607,7 @@ struct NoInit {
     template <class U>
     NoInit(const NoInit<U>&) noexcept {}
     T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
-    void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+    void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
         ::new (static_cast<void*>(p)) U;
@@ -765,10 +788,12 @@ bool makeRef(const Primitive& p, std::uint32_t index, Ref& r) {
 // 32-byte aligned storage of references (not zeroed: every one used is written).
 struct RefBuffer {
     struct Free {
-        void operator()(Ref* p) const { std::free(p); }
+        std::size_t n;
+        void operator()(Ref* p) const { bigFree(p, n * sizeof(Ref)); }
     };
     std::unique_ptr<Ref[], Free> data;
-    explicit RefBuffer(std::size_t n) : data(static_cast<Ref*>(bigAlloc(n * sizeof(Ref)))) {}
+    explicit RefBuffer(std::size_t n)
+        : data(static_cast<Ref*>(bigAlloc(n * sizeof(Ref))), Free{n}) {}
 };
 
 } // namespace
