@@ -64,9 +64,15 @@ struct alignas(16) Ref {
 };
 static_assert(sizeof(Ref) == 32, "two SSE loads");
 
-inline __m128 lanes012() { return _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1)); }
-inline __m128 loadLo(const Ref& r, __m128 mask) { return _mm_and_ps(_mm_load_ps(r.lo), mask); }
-inline __m128 loadHi(const Ref& r) { return _mm_load_ps(r.hi); }
+inline __m128 lanes012() {
+    return _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+}
+inline __m128 loadLo(const Ref& r, __m128 mask) {
+    return _mm_and_ps(_mm_load_ps(r.lo), mask);
+}
+inline __m128 loadHi(const Ref& r) {
+    return _mm_load_ps(r.hi);
+}
 // 0.5·lo + 0.5·hi per lane: the scalar Ref::centre exactly (IEEE single, no fusing).
 inline __m128 centroid(__m128 lo, __m128 hi) {
     const __m128 half = _mm_set1_ps(0.5f);
@@ -117,8 +123,7 @@ static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
 // The parallel parts: TBB normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON,
 // WB_TSAN_THREADS) std::threads, because Debian's TBB is not instrumented and TSan
 // cannot see its hand-offs (as renderParallel does). The work split is the same.
-template <class F>
-void parallelFor(std::size_t count, const F& f) {
+template <class F> void parallelFor(std::size_t count, const F& f) {
 #ifdef WB_TSAN_THREADS
     std::atomic<std::size_t> next{0};
     auto work = [&] {
@@ -132,8 +137,7 @@ void parallelFor(std::size_t count, const F& f) {
     tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) { f(i); });
 #endif
 }
-template <class A, class B>
-void parallelInvoke(const A& a, const B& b) {
+template <class A, class B> void parallelInvoke(const A& a, const B& b) {
 #ifdef WB_TSAN_THREADS
     std::thread helper(b);
     a();
@@ -147,8 +151,8 @@ void parallelInvoke(const A& a, const B& b) {
 //    (a huge or NaN product converted to int is undefined behaviour; found by
 //    fuzz_nff): max(NaN, 0) is 0 in SSE, as the scalar !(f >= 0) test was.
 struct BinSetup {
-    int nb = 0;             // bins per axis
-    float scale[3] = {};    // bins per unit of centroid extent; 0: axis not binnable
+    int nb = 0;              // bins per axis
+    float scale[3] = {};     // bins per unit of centroid extent; 0: axis not binnable
     __m128 clo, cscale, top; // the same as vectors; top = nb − 1
     bool binnable = false;
     BinSetup(const Box4& cbox, int bins) : nb(bins) {
@@ -242,7 +246,8 @@ void sweep(const BinSetup& s, Scratch& sc, Split& best) {
             lc += count[b - 1];
             const std::size_t rc = sc.rightCount[std::size_t(b)];
             if (rc == 0) break;
-            const double cost = double(lc) * left.area() + double(rc) * sc.rightArea[std::size_t(b)];
+            const double cost =
+                double(lc) * left.area() + double(rc) * sc.rightArea[std::size_t(b)];
             if (cost < best.cost) {
                 best.cost = cost;
                 best.axis = a;
@@ -279,8 +284,7 @@ struct Builder {
     std::uint32_t* order = nullptr; // scene index per leaf slot
     bool parallel = false;          // blocks and subtrees as TBB tasks
 
-    template <class F>
-    void forBlocks(std::size_t blocks, F&& f) const {
+    template <class F> void forBlocks(std::size_t blocks, F&& f) const {
         if (parallel && blocks > 1)
             parallelFor(blocks, f);
         else
@@ -300,8 +304,9 @@ struct Builder {
                 axis = a;
             }
         const std::size_t mid = t.begin + (t.end - t.begin) / 2;
-        std::nth_element(refs + t.begin, refs + mid, refs + t.end,
-                         [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
+        std::nth_element(
+            refs + t.begin, refs + mid, refs + t.end,
+            [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
         d.axis = axis;
         d.left = Task{t.begin, mid, t.depth + 1, t.buffer, {}, {}};
         d.right = Task{mid, t.end, t.depth + 1, t.buffer, {}, {}};
@@ -340,8 +345,8 @@ struct Builder {
             const __m128 lo = loadLo(in[i], mask), hi = loadHi(in[i]);
             const __m128 c = centroid(lo, hi);
             // All ones where the reference goes left (its bin on Axis below the split).
-            const __m128 left = _mm_castsi128_ps(
-                _mm_shuffle_epi32(_mm_cmplt_epi32(s.bins(c), split), Axis * 0x55));
+            const __m128 left =
+                _mm_castsi128_ps(_mm_shuffle_epi32(_mm_cmplt_epi32(s.bins(c), split), Axis * 0x55));
             const std::size_t goesLeft = std::size_t(_mm_movemask_ps(left) & 1);
             Ref* dst = goesLeft ? l : r;
             _mm_store_ps(dst->lo, _mm_load_ps(in[i].lo));
@@ -453,9 +458,9 @@ struct Builder {
         const std::size_t n = t.end - t.begin;
         const double boxArea = t.box.area();
         const double parentArea = boxArea > 0 ? boxArea : 1e-300;
-        const double splitCost =
-            best.axis < 0 ? std::numeric_limits<double>::infinity()
-                          : options.traversalCost + options.intersectionCost * best.cost / parentArea;
+        const double splitCost = best.axis < 0 ? std::numeric_limits<double>::infinity()
+                                               : options.traversalCost + options.intersectionCost *
+                                                                             best.cost / parentArea;
         const bool canSah = best.axis >= 0;
         const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && d.leafCost <= splitCost;
         // Coincident centroids cannot be binned: a modest group becomes one leaf.
@@ -516,8 +521,8 @@ struct Builder {
         Ref* out = buf[1 - t.buffer];
         std::vector<Box4> lcs(blocks), rcs(blocks);
         forBlocks(blocks, [&](std::size_t k) {
-            scatter(refs + k * kBlock, blockLen(k), out + t.begin + leftAt[k], out + mid + rightAt[k],
-                    s, best.axis, best.bin, lcs[k], rcs[k]);
+            scatter(refs + k * kBlock, blockLen(k), out + t.begin + leftAt[k],
+                    out + mid + rightAt[k], s, best.axis, best.bin, lcs[k], rcs[k]);
         });
         Box4 lc, rc;
         for (std::size_t k = 0; k < blocks; ++k) {
@@ -570,9 +575,11 @@ void* bigAlloc(std::size_t bytes) {
         // Room for the alignment and, just below the aligned start, the mapping's base
         // and length (the mapping starts at least a 4 KiB page below it).
         const std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge;
-        void* base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        void* base =
+            mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         if (base == MAP_FAILED) throw std::bad_alloc();
-        const auto start = (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
+        const auto start =
+            (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
         char* p = reinterpret_cast<char*>(start);
         madvise(p, length - std::size_t(p - static_cast<char*>(base)), MADV_HUGEPAGE); // a hint
         std::memcpy(p - 16, &base, sizeof base);
@@ -600,30 +607,21 @@ void bigFree(void* p, std::size_t bytes) noexcept {
 }
 
 // The node array (not zeroed on resize: every node is written), in bigAlloc memory.
-template <class T>
-struct NoInit {
+template <class T> struct NoInit {
     using value_type = T;
     NoInit() = default;
-    template <class U>
-    NoInit(const NoInit<U>&) noexcept {}
+    template <class U> NoInit(const NoInit<U>&) noexcept {}
     T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
     void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
         ::new (static_cast<void*>(p)) U;
     }
-    template <class U, class... A>
-    void construct(U* p, A&&... a) {
+    template <class U, class... A> void construct(U* p, A&&... a) {
         ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
     }
-    template <class U>
-    bool operator==(const NoInit<U>&) const noexcept {
-        return true;
-    }
-    template <class U>
-    bool operator!=(const NoInit<U>&) const noexcept {
-        return false;
-    }
+    template <class U> bool operator==(const NoInit<U>&) const noexcept { return true; }
+    template <class U> bool operator!=(const NoInit<U>&) const noexcept { return false; }
 };
 using Nodes = std::vector<BuildNode, NoInit<BuildNode>>;
 
@@ -776,10 +774,12 @@ bool makeRef(const Primitive& p, std::uint32_t index, Ref& r) {
     // Finite doubles and floats: x − x is 0 (NaN for ±inf and NaN).
     const __m128d zd = _mm_setzero_pd();
     const int finite =
-        _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.lo.x), _mm_loadu_pd(&b.lo.x)), zd)) &
-        _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.hi.x), _mm_loadu_pd(&b.hi.x)), zd)) &
-        _mm_movemask_pd(_mm_cmpeq_pd(_mm_sub_pd(_mm_set_pd(b.hi.z, b.lo.z), _mm_set_pd(b.hi.z, b.lo.z)),
-                                     zd));
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.lo.x), _mm_loadu_pd(&b.lo.x)), zd)) &
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.hi.x), _mm_loadu_pd(&b.hi.x)), zd)) &
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_set_pd(b.hi.z, b.lo.z), _mm_set_pd(b.hi.z, b.lo.z)), zd));
     const int fits = _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(lo, lo), _mm_setzero_ps())) &
                      _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(hi, hi), _mm_setzero_ps()));
     return finite == 3 && (fits & 7) == 7 && !b.empty() && b.bounded();
@@ -875,7 +875,8 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         stats_.unbounded = unbounded_.size();
         if (n == 0) return;
         orderIndex_.resize(n);
-        Builder b{options, rootBox.area() > 0 ? rootBox.area() : 1.0,
+        Builder b{options,
+                  rootBox.area() > 0 ? rootBox.area() : 1.0,
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
                   parallel};

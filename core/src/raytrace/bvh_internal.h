@@ -17,8 +17,9 @@ namespace wb::rt::bvh_detail {
 // these): one step of the bit pattern away from zero or towards it; ±0 steps to the
 // smallest denormal; +inf steps down to FLT_MAX, FLT_MAX·(−1) down to −inf. f is not NaN.
 inline float floatStep(float f, bool down) {
-    if (f == 0) return down ? -std::numeric_limits<float>::denorm_min()
-                            : std::numeric_limits<float>::denorm_min();
+    if (f == 0)
+        return down ? -std::numeric_limits<float>::denorm_min()
+                    : std::numeric_limits<float>::denorm_min();
     std::uint32_t u;
     std::memcpy(&u, &f, sizeof u);
     const bool negative = (u >> 31) != 0;
@@ -50,13 +51,14 @@ inline void floatBoxOutward(const double* lo, const double* hi, __m128& flo, __m
         // floatStep in lanes: the magnitude ±1 by the sign; ±0 to ∓/± the smallest denormal.
         const __m128i u = _mm_castps_si128(f);
         const __m128i sgn2 = _mm_add_epi32(_mm_srai_epi32(u, 31), _mm_srai_epi32(u, 31));
-        const __m128i delta = down ? _mm_sub_epi32(_mm_set1_epi32(-1), sgn2)
-                                   : _mm_add_epi32(_mm_set1_epi32(1), sgn2);
+        const __m128i delta =
+            down ? _mm_sub_epi32(_mm_set1_epi32(-1), sgn2) : _mm_add_epi32(_mm_set1_epi32(1), sgn2);
         const __m128i zero = _mm_castps_si128(_mm_cmpeq_ps(f, _mm_setzero_ps()));
         const __m128i tiny = _mm_set1_epi32(down ? std::int32_t(0x80000001u) : 1);
         const __m128i step = _mm_or_si128(_mm_and_si128(zero, tiny),
                                           _mm_andnot_si128(zero, _mm_add_epi32(u, delta)));
-        return _mm_castsi128_ps(_mm_or_si128(_mm_and_si128(wrong, step), _mm_andnot_si128(wrong, u)));
+        return _mm_castsi128_ps(
+            _mm_or_si128(_mm_and_si128(wrong, step), _mm_andnot_si128(wrong, u)));
     };
     flo = round(lo, true);
     fhi = round(hi, false);

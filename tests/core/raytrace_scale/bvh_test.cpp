@@ -226,8 +226,7 @@ TEST_CASE("rt_bvh: boxes near float's range build and are found (fuzz_nff crashe
     CHECK(h.primitive == s.primitives[1].get());
 }
 
-TEST_CASE("rt_bvh: outward float rounding is std::nextafter's step, and tight",
-          "[raytrace][bvh]") {
+TEST_CASE("rt_bvh: outward float rounding is std::nextafter's step, and tight", "[raytrace][bvh]") {
     // floatDown/floatUp step the bit pattern instead of calling nextafterf (every
     // primitive's box goes through them); the reference is the library's step.
     auto bits = [](float f) {
@@ -244,10 +243,25 @@ TEST_CASE("rt_bvh: outward float rounding is std::nextafter's step, and tight",
         return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
     };
     const double fmax = std::numeric_limits<float>::max();
-    std::vector<double> xs = {0.0,  -0.0,        1e-50, -1e-50,     1e-45,        -1e-45,
-                              1.0,  1 + 1e-12,   -1.0,  -1 - 1e-12, fmax,         -fmax,
-                              fmax * (1 + 1e-9), -fmax * (1 + 1e-9), 3.5e38,      -3.5e38,
-                              1e300, -1e300,     std::numeric_limits<double>::infinity(),
+    std::vector<double> xs = {0.0,
+                              -0.0,
+                              1e-50,
+                              -1e-50,
+                              1e-45,
+                              -1e-45,
+                              1.0,
+                              1 + 1e-12,
+                              -1.0,
+                              -1 - 1e-12,
+                              fmax,
+                              -fmax,
+                              fmax * (1 + 1e-9),
+                              -fmax * (1 + 1e-9),
+                              3.5e38,
+                              -3.5e38,
+                              1e300,
+                              -1e300,
+                              std::numeric_limits<double>::infinity(),
                               -std::numeric_limits<double>::infinity()};
     std::mt19937_64 g(3);
     std::uniform_real_distribution<double> u(-1, 1);
