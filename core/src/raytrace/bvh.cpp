@@ -40,9 +40,11 @@ namespace {
 //    record (two SSE loads); centroids, bin indices of all three axes, bin boxes and
 //    the children's centroid bounds are SSE operations;
 //  - the children's boxes come from the bins (unions of the same float boxes, so
-//    exact); their centroid bounds are gathered while partitioning, in place;
+//    exact); the partition is a branchless stable scatter into a second buffer (the
+//    children continue there) that gathers their centroid bounds on the way;
+//  - one- and two-primitive nodes (~70% of all nodes on balls 5) skip the bins;
 //  - nodes of more than kBlockNode primitives are binned and partitioned in fixed
-//    blocks (per-block bins, then a stable scatter into a second buffer), in
+//    blocks (per-block bins, then the scatter block by block), in
 //    parallel with TBB when the build has threads: the top levels are no longer one
 //    task each. Blocks are fixed by the node's range, not by the thread count, so the
 //    order of the references — and the tree — is the same for any number of threads;
@@ -365,7 +367,7 @@ struct Builder {
         rc.hi = rhi;
     }
 
-    // A node of at most kBlockNode references: leaf or split, in place.
+    // A node of at most kBlockNode references: leaf or split.
     Decision decide(const Task& t, Scratch& sc) const {
         Decision d;
         const std::size_t n = t.end - t.begin;
