@@ -837,8 +837,9 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 }
             }
         } else {
-            // Blocks: references into buffer B at their scene index, then compacted
-            // into A (the same order as the loop above).
+            // Blocks: references into buffer A at their scene index; if some were
+            // unbounded, compacted into B and the buffers swapped (the same order as
+            // the loop above).
             const std::size_t blocks = (count + kBlock - 1) / kBlock;
             std::vector<std::size_t> valid(blocks + 1, 0);
             std::vector<Box4> boxes(blocks), cboxes(blocks);
@@ -846,9 +847,9 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             parallelFor(blocks, [&](std::size_t k) {
                 std::size_t v = 0;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
-                    ok[i] = makeRef(*prims[i], std::uint32_t(i), bufB.data[i]);
+                    ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
                     if (ok[i]) {
-                        account(bufB.data[i], boxes[k], cboxes[k]);
+                        account(bufA.data[i], boxes[k], cboxes[k]);
                         ++v;
                     }
                 }
@@ -866,11 +867,14 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                         }
                 valid[k + 1] += valid[k];
             }
-            parallelFor(blocks, [&](std::size_t k) {
-                Ref* dst = bufA.data.get() + valid[k];
-                for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i)
-                    if (ok[i]) *dst++ = bufB.data[i];
-            });
+            if (valid[blocks] != count) {
+                parallelFor(blocks, [&](std::size_t k) {
+                    Ref* dst = bufB.data.get() + valid[k];
+                    for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i)
+                        if (ok[i]) *dst++ = bufA.data[i];
+                });
+                std::swap(bufA.data, bufB.data);
+            }
             n = valid[blocks];
         }
         stats_.primitives = n;
