@@ -6,14 +6,26 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <emmintrin.h>
 #include <limits>
 #include <memory>
+#include <new>
 #include <stdexcept>
-#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
+#ifdef WB_TSAN_THREADS
+#include <atomic>
+#include <thread>
+#else
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#endif
 #include <utility>
 #include <xmmintrin.h>
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 namespace wb::rt {
 
@@ -21,286 +33,770 @@ using namespace bvh_detail;
 
 namespace {
 
-// A primitive's box in float, rounded outward: the build works in float (half the
-// memory traffic of double); node boxes are unions of these, so they still enclose
-// every primitive exactly.
-struct Ref {
-    float lo[3], hi[3];
+// The binned SAH build (Wald 2007) in SSE on float boxes. Every decision is the one of
+// the scalar builder it replaced (same bins, the same SAH costs in double, the same
+// ties), so the tree is the same; what changed is how the work is done:
+//  - a primitive's box is fetched once through the virtual bounds() into a 32-byte
+//    record (two SSE loads); centroids, bin indices of all three axes, bin boxes and
+//    the children's centroid bounds are SSE operations;
+//  - the children's boxes come from the bins (unions of the same float boxes, so
+//    exact); the partition is a branchless stable scatter into a second buffer (the
+//    children continue there) that gathers their centroid bounds on the way;
+//  - one- and two-primitive nodes (~70% of all nodes on balls 5) skip the bins;
+//  - nodes of more than kBlockNode primitives are binned and partitioned in fixed
+//    blocks (per-block bins, then the scatter block by block), in
+//    parallel with TBB when the build has threads: the top levels are no longer one
+//    task each. Blocks are fixed by the node's range, not by the thread count, so the
+//    order of the references — and the tree — is the same for any number of threads;
+//  - below kParallelGrain a subtree is built depth first by one task straight into a
+//    node array (with one thread: the final array), leaves write their primitives at
+//    their own index range (the references are in leaf order already).
+
+// A primitive's box in float, rounded outward (node boxes are unions of these, so they
+// still enclose every primitive exactly), and its scene index in lane 3 of the first
+// half. Lane 3 is masked off before any arithmetic (an index read as a float is a
+// denormal or NaN).
+struct alignas(16) Ref {
+    float lo[3];
     std::uint32_t prim;
+    float hi[3];
+    float zero; // lane 3 of the hi load: 0
     // Halves first: lo + hi overflows to inf for boxes near float's range.
     float centre(int a) const { return 0.5f * lo[a] + 0.5f * hi[a]; }
 };
+static_assert(sizeof(Ref) == 32, "two SSE loads");
 
-struct FBox {
-    float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-                   std::numeric_limits<float>::infinity()};
-    float hi[3] = {-std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
-                   -std::numeric_limits<float>::infinity()};
-    void extend(const float* l, const float* h) {
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = l[a] < lo[a] ? l[a] : lo[a];
-            hi[a] = h[a] > hi[a] ? h[a] : hi[a];
-        }
+inline __m128 lanes012() {
+    return _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+}
+inline __m128 loadLo(const Ref& r, __m128 mask) {
+    return _mm_and_ps(_mm_load_ps(r.lo), mask);
+}
+inline __m128 loadHi(const Ref& r) {
+    return _mm_load_ps(r.hi);
+}
+// 0.5·lo + 0.5·hi per lane: the scalar Ref::centre exactly (IEEE single, no fusing).
+inline __m128 centroid(__m128 lo, __m128 hi) {
+    const __m128 half = _mm_set1_ps(0.5f);
+    return _mm_add_ps(_mm_mul_ps(lo, half), _mm_mul_ps(hi, half));
+}
+
+// A float box in two SSE registers (lane 3 unused).
+struct Box4 {
+    __m128 lo = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    __m128 hi = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+    void extend(__m128 l, __m128 h) {
+        lo = _mm_min_ps(lo, l);
+        hi = _mm_max_ps(hi, h);
     }
-    void extend(const FBox& b) { extend(b.lo, b.hi); }
-    void extendPoint(float x, float y, float z) {
-        const float p[3] = {x, y, z};
-        extend(p, p);
+    void extend(const Box4& b) { extend(b.lo, b.hi); }
+    void extendPoint(__m128 p) { extend(p, p); }
+    float lane(__m128 v, int a) const {
+        alignas(16) float f[4];
+        _mm_store_ps(f, v);
+        return f[a];
     }
+    float lo_(int a) const { return lane(lo, a); }
+    float hi_(int a) const { return lane(hi, a); }
+    // Surface area in double from the float corners (the SAH's unit):
+    // 2·((dx·dy + dy·dz) + dz·dx), the extents' differences taken in double.
     double area() const {
-        const double dx = double(hi[0]) - lo[0], dy = double(hi[1]) - lo[1],
-                     dz = double(hi[2]) - lo[2];
-        return 2 * (dx * dy + dy * dz + dz * dx);
+        const __m128d dxy = _mm_sub_pd(_mm_cvtps_pd(hi), _mm_cvtps_pd(lo));
+        const __m128d dz =
+            _mm_sub_sd(_mm_cvtps_pd(_mm_movehl_ps(hi, hi)), _mm_cvtps_pd(_mm_movehl_ps(lo, lo)));
+        const __m128d p = _mm_mul_pd(dxy, _mm_shuffle_pd(dxy, dz, 1)); // dx·dy, dy·dz
+        const __m128d s = _mm_add_sd(p, _mm_unpackhi_pd(p, p));
+        return 2 * _mm_cvtsd_f64(_mm_add_sd(s, _mm_mul_sd(dz, dxy)));
     }
 };
-
-// Bin of a centroid: clamped in float before the conversion (a huge or NaN product
-// converted to int is undefined behaviour; found by fuzz_nff).
-inline int binOf(float centre, float lo, float scale, int nb) {
-    float f = (centre - lo) * scale;
-    if (!(f >= 0)) f = 0;
-    if (f > float(nb - 1)) f = float(nb - 1);
-    return int(f);
-}
 
 // Beyond this depth the builder splits at the object median, so the tree depth stays
 // below kMaxDepth = kMedianDepth + log2(any input size) + slack.
 constexpr int kMedianDepth = 80;
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
+// Nodes above this many primitives are binned and partitioned in blocks of kBlock
+// (in parallel when the build has threads); above kParallelGrain their children are
+// separate TBB tasks. kBlockNode > kMaxLeaf: a blocked node is never a leaf.
+constexpr std::size_t kBlock = 8192;
+constexpr std::size_t kBlockNode = 65536;
+constexpr std::size_t kParallelGrain = 2048;
+static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
 
-// 1. One node's decision: a leaf, or a binned SAH split (object median below
-//    kMedianDepth and for coincident centroids) with the refs partitioned and the
-//    children's bounds computed in one pass.
-struct Task {
-    std::size_t begin, end;
-    int depth;
-    FBox box, cbox; // bounds of the boxes and of the centroids
+// The parallel parts: TBB normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON,
+// WB_TSAN_THREADS) std::threads, because Debian's TBB is not instrumented and TSan
+// cannot see its hand-offs (as renderParallel does). The work split is the same.
+template <class F> void parallelFor(std::size_t count, const F& f) {
+#ifdef WB_TSAN_THREADS
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i = next++; i < count; i = next++)
+            f(i);
+    };
+    std::thread helper(work);
+    work();
+    helper.join();
+#else
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) { f(i); });
+#endif
+}
+template <class A, class B> void parallelInvoke(const A& a, const B& b) {
+#ifdef WB_TSAN_THREADS
+    std::thread helper(b);
+    a();
+    helper.join();
+#else
+    tbb::parallel_invoke(a, b);
+#endif
+}
+
+// 1. Binning: the bin of a centroid, per axis, clamped in float before the conversion
+//    (a huge or NaN product converted to int is undefined behaviour; found by
+//    fuzz_nff): max(NaN, 0) is 0 in SSE, as the scalar !(f >= 0) test was.
+struct BinSetup {
+    int nb = 0;              // bins per axis
+    float scale[3] = {};     // bins per unit of centroid extent; 0: axis not binnable
+    __m128 clo, cscale, top; // the same as vectors; top = nb − 1
+    bool binnable = false;
+    BinSetup(const Box4& cbox, int bins) : nb(bins) {
+        for (int a = 0; a < 3; ++a) {
+            const float ext = cbox.hi_(a) - cbox.lo_(a);
+            // Slightly under nb/ext so the largest centroid falls in bin nb−1.
+            scale[a] = ext > 0 ? float(nb) * (1 - 1e-6f) / ext : 0.0f;
+            binnable = binnable || scale[a] > 0;
+        }
+        clo = cbox.lo;
+        cscale = _mm_set_ps(0, scale[2], scale[1], scale[0]);
+        top = _mm_set1_ps(float(nb - 1));
+    }
+    __m128i bins(__m128 c) const {
+        __m128 f = _mm_mul_ps(_mm_sub_ps(c, clo), cscale);
+        f = _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), top);
+        return _mm_cvttps_epi32(f);
+    }
 };
+
+// Bins of one range of references: boxes and counts, [axis·nb + bin].
+void binRange(const Ref* refs, std::size_t n, const BinSetup& s, Box4* box, std::uint32_t* count) {
+    const int nb = s.nb;
+    for (int k = 0; k < 3 * nb; ++k) {
+        box[k] = Box4{};
+        count[k] = 0;
+    }
+    const __m128 mask = lanes012();
+    Box4 *bx = box, *by = box + nb, *bz = box + 2 * nb;
+    std::uint32_t *cx = count, *cy = count + nb, *cz = count + 2 * nb;
+    for (std::size_t i = 0; i < n; ++i) {
+        const __m128 lo = loadLo(refs[i], mask), hi = loadHi(refs[i]);
+        const __m128i b = s.bins(centroid(lo, hi));
+        const int b0 = _mm_cvtsi128_si32(b), b1 = _mm_extract_epi16(b, 2),
+                  b2 = _mm_extract_epi16(b, 4); // bins < 256: the low half of lanes 1, 2
+        bx[b0].extend(lo, hi);
+        ++cx[b0];
+        by[b1].extend(lo, hi);
+        ++cy[b1];
+        bz[b2].extend(lo, hi);
+        ++cz[b2];
+    }
+}
+
+// Per-thread (per-task) scratch of one node's decision.
 struct Scratch {
-    std::vector<FBox> binBox;
+    std::vector<Box4> binBox, rightBox;
     std::vector<std::uint32_t> binCount;
     std::vector<double> rightArea;
     std::vector<std::size_t> rightCount;
     explicit Scratch(int maxBins)
-        : binBox(size_t(3 * maxBins)), binCount(size_t(3 * maxBins)), rightArea(size_t(maxBins)),
-          rightCount(size_t(maxBins)) {}
+        : binBox(std::size_t(3 * maxBins)), rightBox(std::size_t(maxBins)),
+          binCount(std::size_t(3 * maxBins)), rightArea(std::size_t(maxBins)),
+          rightCount(std::size_t(maxBins)) {}
 };
+
+// The best binned split: SAH cost lc·A(left) + rc·A(right) over every bin boundary of
+// every binnable axis, the first of equal costs (axis 0 first, low bins first).
+struct Split {
+    int axis = -1, bin = 0;
+    double cost = std::numeric_limits<double>::infinity();
+    Box4 left, right; // the children's boxes (unions of their bins)
+};
+
+void sweep(const BinSetup& s, Scratch& sc, Split& best) {
+    // An empty bin changes neither box nor count: its boundary costs the same as the one
+    // before it (never strictly better), and the area of an unchanged box is not taken again.
+    const int nb = s.nb;
+    for (int a = 0; a < 3; ++a) {
+        if (s.scale[a] == 0) continue;
+        const Box4* box = sc.binBox.data() + a * nb;
+        const std::uint32_t* count = sc.binCount.data() + a * nb;
+        Box4 acc;
+        std::size_t cnt = 0;
+        double area = 0;
+        for (int b = nb - 1; b > 0; --b) {
+            if (count[b]) {
+                acc.extend(box[b]);
+                cnt += count[b];
+                area = acc.area();
+            }
+            sc.rightArea[std::size_t(b)] = area;
+            sc.rightCount[std::size_t(b)] = cnt;
+            sc.rightBox[std::size_t(b)] = acc;
+        }
+        Box4 left;
+        std::size_t lc = 0;
+        for (int b = 1; b < nb; ++b) {
+            if (!count[b - 1]) continue;
+            left.extend(box[b - 1]);
+            lc += count[b - 1];
+            const std::size_t rc = sc.rightCount[std::size_t(b)];
+            if (rc == 0) break;
+            const double cost =
+                double(lc) * left.area() + double(rc) * sc.rightArea[std::size_t(b)];
+            if (cost < best.cost) {
+                best.cost = cost;
+                best.axis = a;
+                best.bin = b;
+                best.left = left;
+                best.right = sc.rightBox[std::size_t(b)];
+            }
+        }
+    }
+}
+
+// 2. One node: a task is a range of references in one of the two buffers, with the
+//    bounds of their boxes and of their centroids.
+struct Task {
+    std::size_t begin = 0, end = 0;
+    int depth = 0;
+    int buffer = 0; // which of the two reference buffers holds the range
+    Box4 box, cbox;
+};
+
+// The decision of a node: a leaf, or two children with their references partitioned.
 struct Decision {
     bool leaf = false;
     double leafCost = 0;
     int axis = 0;
-    Task left{}, right{};
+    Task left, right;
 };
 
-Decision decide(std::vector<Ref>& refs, const Task& task, const BvhOptions& options, Scratch& sc) {
-    Decision d;
-    const std::size_t n = task.end - task.begin;
-    const double parentArea = task.box.area() > 0 ? task.box.area() : 1e-300;
-    // Small nodes need few bins (n + 1 separate n distinct centroids well enough);
-    // clearing and sweeping 16 bins for 2 primitives would dominate the build.
-    const int nb = int(std::min<std::size_t>(std::size_t(options.bins), n + 1));
-    int bestAxis = -1, bestBin = 0;
-    double bestCost = std::numeric_limits<double>::infinity();
-    float scale[3], clo[3];
-    for (int a = 0; a < 3; ++a) {
-        clo[a] = task.cbox.lo[a];
-        const float ext = task.cbox.hi[a] - task.cbox.lo[a];
-        // Slightly under nb/ext so the largest centroid falls in bin nb−1.
-        scale[a] = ext > 0 ? float(nb) * (1 - 1e-6f) / ext : 0.0f;
+// Shared state of one build.
+struct Builder {
+    const BvhOptions& options;
+    double rootArea = 1;
+    Ref* buf[2] = {nullptr, nullptr};
+    std::uint32_t* order = nullptr; // scene index per leaf slot
+    bool parallel = false;          // blocks and subtrees as TBB tasks
+
+    template <class F> void forBlocks(std::size_t blocks, F&& f) const {
+        if (parallel && blocks > 1)
+            parallelFor(blocks, f);
+        else
+            for (std::size_t k = 0; k < blocks; ++k)
+                f(k);
     }
-    const bool binnable = scale[0] > 0 || scale[1] > 0 || scale[2] > 0;
-    if (n > 1 && binnable && task.depth < kMedianDepth) {
-        std::fill(sc.binBox.begin(), sc.binBox.begin() + 3 * nb, FBox{});
-        std::fill(sc.binCount.begin(), sc.binCount.begin() + 3 * nb, 0u);
-        for (std::size_t i = task.begin; i < task.end; ++i) {
-            const Ref& r = refs[i];
-            for (int a = 0; a < 3; ++a) {
-                const int b = binOf(r.centre(a), clo[a], scale[a], nb);
-                sc.binBox[size_t(a * nb + b)].extend(r.lo, r.hi);
-                ++sc.binCount[size_t(a * nb + b)];
-            }
-        }
-        for (int a = 0; a < 3; ++a) {
-            if (scale[a] == 0) continue;
-            FBox acc;
-            std::size_t cnt = 0;
-            for (int b = nb - 1; b > 0; --b) {
-                acc.extend(sc.binBox[size_t(a * nb + b)]);
-                cnt += sc.binCount[size_t(a * nb + b)];
-                sc.rightArea[size_t(b)] = cnt ? acc.area() : 0.0;
-                sc.rightCount[size_t(b)] = cnt;
-            }
-            FBox left;
-            std::size_t lc = 0;
-            for (int b = 1; b < nb; ++b) {
-                left.extend(sc.binBox[size_t(a * nb + b - 1)]);
-                lc += sc.binCount[size_t(a * nb + b - 1)];
-                const std::size_t rc = sc.rightCount[size_t(b)];
-                if (lc == 0 || rc == 0) continue;
-                const double cost = double(lc) * left.area() + double(rc) * sc.rightArea[size_t(b)];
-                if (cost < bestCost) {
-                    bestCost = cost;
-                    bestAxis = a;
-                    bestBin = b;
-                }
-            }
-        }
-    }
-    d.leafCost = options.intersectionCost * double(n);
-    const double splitCost =
-        bestAxis < 0 ? std::numeric_limits<double>::infinity()
-                     : options.traversalCost + options.intersectionCost * bestCost / parentArea;
-    const bool canSah = bestAxis >= 0;
-    const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && d.leafCost <= splitCost;
-    // Coincident centroids cannot be binned: a modest group becomes one leaf.
-    const bool stuck = !canSah && task.depth < kMedianDepth && n <= 256;
-    if (n <= kMaxLeaf && (n == 1 || wantLeaf || stuck)) {
-        d.leaf = true;
-        return d;
-    }
-    std::size_t mid;
-    int axis;
-    if (canSah) {
-        axis = bestAxis;
-        const float lo = clo[axis], sca = scale[axis];
-        auto it = std::partition(
-            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(task.end),
-            [&](const Ref& r) { return binOf(r.centre(axis), lo, sca, nb) < bestBin; });
-        mid = std::size_t(it - refs.begin());
-    } else {
-        // Object median on the widest centroid axis (deep trees, coincident centroids).
+
+    // Object median on the widest centroid axis (deep trees, coincident centroids), in
+    // place; the children's bounds in one more pass.
+    void medianSplit(const Task& t, Decision& d) const {
+        Ref* refs = buf[t.buffer];
         float best = -1;
-        axis = 0;
+        int axis = 0;
         for (int a = 0; a < 3; ++a)
-            if (task.cbox.hi[a] - task.cbox.lo[a] > best) {
-                best = task.cbox.hi[a] - task.cbox.lo[a];
+            if (t.cbox.hi_(a) - t.cbox.lo_(a) > best) {
+                best = t.cbox.hi_(a) - t.cbox.lo_(a);
                 axis = a;
             }
-        mid = task.begin + n / 2;
+        const std::size_t mid = t.begin + (t.end - t.begin) / 2;
         std::nth_element(
-            refs.begin() + std::ptrdiff_t(task.begin), refs.begin() + std::ptrdiff_t(mid),
-            refs.begin() + std::ptrdiff_t(task.end),
+            refs + t.begin, refs + mid, refs + t.end,
             [axis](const Ref& x, const Ref& y) { return x.centre(axis) < y.centre(axis); });
+        d.axis = axis;
+        d.left = Task{t.begin, mid, t.depth + 1, t.buffer, {}, {}};
+        d.right = Task{mid, t.end, t.depth + 1, t.buffer, {}, {}};
+        const __m128 mask = lanes012();
+        for (std::size_t i = t.begin; i < t.end; ++i) {
+            Task& c = i < mid ? d.left : d.right;
+            const __m128 lo = loadLo(refs[i], mask), hi = loadHi(refs[i]);
+            c.box.extend(lo, hi);
+            c.cbox.extendPoint(centroid(lo, hi));
+        }
     }
-    d.axis = axis;
-    d.left = Task{task.begin, mid, task.depth + 1, {}, {}};
-    d.right = Task{mid, task.end, task.depth + 1, {}, {}};
-    for (std::size_t i = task.begin; i < task.end; ++i) {
-        Task& t = i < mid ? d.left : d.right;
-        t.box.extend(refs[i].lo, refs[i].hi);
-        t.cbox.extendPoint(refs[i].centre(0), refs[i].centre(1), refs[i].centre(2));
+
+    // Stable, branchless partition of in[0, n) into the other buffer: references whose
+    // bin on `axis` is below `bin` to l[...], the others to r[...]; the centroid bounds
+    // of both sides on the way. (A branch per reference mispredicts half the time.)
+    static void scatter(const Ref* in, std::size_t n, Ref* l, Ref* r, const BinSetup& s, int axis,
+                        int bin, Box4& lc, Box4& rc) {
+        switch (axis) {
+        case 0:
+            return scatterAxis<0>(in, n, l, r, s, bin, lc, rc);
+        case 1:
+            return scatterAxis<1>(in, n, l, r, s, bin, lc, rc);
+        default:
+            return scatterAxis<2>(in, n, l, r, s, bin, lc, rc);
+        }
     }
-    return d;
+    template <int Axis>
+    static void scatterAxis(const Ref* in, std::size_t n, Ref* l, Ref* r, const BinSetup& s,
+                            int bin, Box4& lc, Box4& rc) {
+        const __m128 mask = lanes012();
+        const __m128i split = _mm_set1_epi32(bin);
+        const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+        const __m128 ninf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+        __m128 llo = lc.lo, lhi = lc.hi, rlo = rc.lo, rhi = rc.hi;
+        for (std::size_t i = 0; i < n; ++i) {
+            const __m128 lo = loadLo(in[i], mask), hi = loadHi(in[i]);
+            const __m128 c = centroid(lo, hi);
+            // All ones where the reference goes left (its bin on Axis below the split).
+            const __m128 left =
+                _mm_castsi128_ps(_mm_shuffle_epi32(_mm_cmplt_epi32(s.bins(c), split), Axis * 0x55));
+            const std::size_t goesLeft = std::size_t(_mm_movemask_ps(left) & 1);
+            Ref* dst = goesLeft ? l : r;
+            _mm_store_ps(dst->lo, _mm_load_ps(in[i].lo));
+            _mm_store_ps(dst->hi, hi);
+            l += goesLeft;
+            r += 1 - goesLeft;
+            const __m128 cl = _mm_and_ps(left, c), cr = _mm_andnot_ps(left, c);
+            llo = _mm_min_ps(llo, _mm_or_ps(cl, _mm_andnot_ps(left, inf)));
+            lhi = _mm_max_ps(lhi, _mm_or_ps(cl, _mm_andnot_ps(left, ninf)));
+            rlo = _mm_min_ps(rlo, _mm_or_ps(cr, _mm_and_ps(left, inf)));
+            rhi = _mm_max_ps(rhi, _mm_or_ps(cr, _mm_and_ps(left, ninf)));
+        }
+        lc.lo = llo;
+        lc.hi = lhi;
+        rc.lo = rlo;
+        rc.hi = rhi;
+    }
+
+    // A node of at most kBlockNode references: leaf or split.
+    Decision decide(const Task& t, Scratch& sc) const {
+        Decision d;
+        const std::size_t n = t.end - t.begin;
+        d.leafCost = options.intersectionCost * double(n);
+        if (n == 1) {
+            d.leaf = true;
+            return d;
+        }
+        if (n == 2 && t.depth < kMedianDepth) return decidePair(t);
+        Ref* refs = buf[t.buffer];
+        // Small nodes need few bins (n + 1 separate n distinct centroids well enough);
+        // clearing and sweeping 16 bins for 2 primitives would dominate the build.
+        const int nb = int(std::min<std::size_t>(std::size_t(options.bins), n + 1));
+        const BinSetup s(t.cbox, nb);
+        Split best;
+        if (s.binnable && t.depth < kMedianDepth) {
+            binRange(refs + t.begin, n, s, sc.binBox.data(), sc.binCount.data());
+            sweep(s, sc, best);
+        }
+        if (finish(t, best, d)) return d;
+        if (best.axis >= 0) {
+            std::size_t left = 0; // from the bins
+            for (int b = 0; b < best.bin; ++b)
+                left += sc.binCount[std::size_t(best.axis * nb + b)];
+            const std::size_t mid = t.begin + left;
+            Ref* out = buf[1 - t.buffer];
+            Box4 lc, rc;
+            scatter(refs + t.begin, n, out + t.begin, out + mid, s, best.axis, best.bin, lc, rc);
+            d.axis = best.axis;
+            d.left = Task{t.begin, mid, t.depth + 1, 1 - t.buffer, best.left, lc};
+            d.right = Task{mid, t.end, t.depth + 1, 1 - t.buffer, best.right, rc};
+        } else {
+            medianSplit(t, d);
+        }
+        return d;
+    }
+
+    // Two primitives (half of all inner nodes): what binning them would decide, without
+    // the bins. On the first binnable axis the lower centroid is alone in bin 0 (it is
+    // the bounds' lo) and the other lands in bin >= 1 (its offset is the whole extent,
+    // about nb bins), so the split is one|one at bin 1, cost A(low) + A(high) (the other
+    // axes give the same sum: never strictly better).
+    Decision decidePair(const Task& t) const {
+        Decision d;
+        d.leafCost = options.intersectionCost * 2;
+        Ref* refs = buf[t.buffer] + t.begin;
+        const float nb = float(std::min(options.bins, 3));
+        Split best;
+        for (int a = 0; a < 3; ++a) {
+            const float ext = t.cbox.hi_(a) - t.cbox.lo_(a);
+            if (ext > 0 && nb * (1 - 1e-6f) / ext > 0) {
+                best.axis = a;
+                best.bin = 1;
+                break;
+            }
+        }
+        const __m128 mask = lanes012();
+        __m128 lo0 = loadLo(refs[0], mask), hi0 = loadHi(refs[0]);
+        __m128 lo1 = loadLo(refs[1], mask), hi1 = loadHi(refs[1]);
+        __m128 c0 = centroid(lo0, hi0), c1 = centroid(lo1, hi1);
+        if (best.axis >= 0) {
+            alignas(16) float f0[4], f1[4];
+            _mm_store_ps(f0, c0);
+            _mm_store_ps(f1, c1);
+            if (f1[best.axis] < f0[best.axis]) {
+                std::swap(refs[0], refs[1]);
+                std::swap(lo0, lo1);
+                std::swap(hi0, hi1);
+                std::swap(c0, c1);
+            }
+            best.left.extend(lo0, hi0);
+            best.right.extend(lo1, hi1);
+            best.cost = 1.0 * best.left.area() + 1.0 * best.right.area();
+        }
+        if (finish(t, best, d)) return d;
+        if (best.axis < 0) { // not binnable: object median (depth < kMedianDepth: a leaf above)
+            medianSplit(t, d);
+            return d;
+        }
+        d.axis = best.axis;
+        d.left = Task{t.begin, t.begin + 1, t.depth + 1, t.buffer, best.left, {}};
+        d.right = Task{t.begin + 1, t.end, t.depth + 1, t.buffer, best.right, {}};
+        d.left.cbox.extendPoint(c0);
+        d.right.cbox.extendPoint(c1);
+        return d;
+    }
+
+    // The leaf test of the SAH: true (d.leaf) when the node stays a leaf.
+    bool finish(const Task& t, const Split& best, Decision& d) const {
+        const std::size_t n = t.end - t.begin;
+        const double boxArea = t.box.area();
+        const double parentArea = boxArea > 0 ? boxArea : 1e-300;
+        const double splitCost = best.axis < 0 ? std::numeric_limits<double>::infinity()
+                                               : options.traversalCost + options.intersectionCost *
+                                                                             best.cost / parentArea;
+        const bool canSah = best.axis >= 0;
+        const bool wantLeaf = n <= std::size_t(options.maxLeafSize) && d.leafCost <= splitCost;
+        // Coincident centroids cannot be binned: a modest group becomes one leaf.
+        const bool stuck = !canSah && t.depth < kMedianDepth && n <= 256;
+        d.leaf = n <= kMaxLeaf && (n == 1 || wantLeaf || stuck);
+        return d.leaf;
+    }
+
+    // A node of more than kBlockNode references: binned per block, partitioned by a
+    // stable scatter of each block into the other buffer (blocks fixed by the range,
+    // so the order is the same for any thread count). Never a leaf (kBlockNode > kMaxLeaf).
+    Decision decideBlocked(const Task& t, Scratch& sc) const {
+        Decision d;
+        const std::size_t n = t.end - t.begin;
+        d.leafCost = options.intersectionCost * double(n);
+        const Ref* refs = buf[t.buffer] + t.begin;
+        const int nb = options.bins;
+        const BinSetup s(t.cbox, nb);
+        const std::size_t blocks = (n + kBlock - 1) / kBlock, per = std::size_t(3 * nb);
+        auto blockLen = [&](std::size_t k) { return std::min(kBlock, n - k * kBlock); };
+        Split best;
+        std::vector<std::uint32_t> counts;
+        if (s.binnable && t.depth < kMedianDepth) {
+            std::vector<Box4> boxes(blocks * per);
+            counts.resize(blocks * per);
+            forBlocks(blocks, [&](std::size_t k) {
+                binRange(refs + k * kBlock, blockLen(k), s, &boxes[k * per], &counts[k * per]);
+            });
+            for (std::size_t j = 0; j < per; ++j) {
+                Box4 b;
+                std::uint32_t c = 0;
+                for (std::size_t k = 0; k < blocks; ++k) {
+                    b.extend(boxes[k * per + j]);
+                    c += counts[k * per + j];
+                }
+                sc.binBox[j] = b;
+                sc.binCount[j] = c;
+            }
+            sweep(s, sc, best);
+        }
+        if (finish(t, best, d)) return d; // cannot happen (n > kMaxLeaf)
+        if (best.axis < 0) {
+            medianSplit(t, d);
+            return d;
+        }
+        // Left counts of each block from its bins, their prefix sums: where it writes.
+        std::vector<std::size_t> leftAt(blocks + 1), rightAt(blocks + 1);
+        leftAt[0] = 0;
+        rightAt[0] = 0;
+        for (std::size_t k = 0; k < blocks; ++k) {
+            std::size_t left = 0;
+            for (int b = 0; b < best.bin; ++b)
+                left += counts[k * per + std::size_t(best.axis * nb + b)];
+            leftAt[k + 1] = leftAt[k] + left;
+            rightAt[k + 1] = rightAt[k] + (blockLen(k) - left);
+        }
+        const std::size_t mid = t.begin + leftAt[blocks];
+        Ref* out = buf[1 - t.buffer];
+        std::vector<Box4> lcs(blocks), rcs(blocks);
+        forBlocks(blocks, [&](std::size_t k) {
+            scatter(refs + k * kBlock, blockLen(k), out + t.begin + leftAt[k],
+                    out + mid + rightAt[k], s, best.axis, best.bin, lcs[k], rcs[k]);
+        });
+        Box4 lc, rc;
+        for (std::size_t k = 0; k < blocks; ++k) {
+            lc.extend(lcs[k]);
+            rc.extend(rcs[k]);
+        }
+        d.axis = best.axis;
+        d.left = Task{t.begin, mid, t.depth + 1, 1 - t.buffer, best.left, lc};
+        d.right = Task{mid, t.end, t.depth + 1, 1 - t.buffer, best.right, rc};
+        return d;
+    }
+
+    Decision decideAny(const Task& t, Scratch& sc) const {
+        return t.end - t.begin > kBlockNode ? decideBlocked(t, sc) : decide(t, sc);
+    }
+
+    BuildNode nodeOf(const Task& t) const {
+        BuildNode node;
+        const __m128 lo = t.box.lo, hi = t.box.hi;
+        _mm_storeu_pd(&node.lo.x, _mm_cvtps_pd(lo));
+        _mm_store_sd(&node.lo.z, _mm_cvtps_pd(_mm_movehl_ps(lo, lo)));
+        _mm_storeu_pd(&node.hi.x, _mm_cvtps_pd(hi));
+        _mm_store_sd(&node.hi.z, _mm_cvtps_pd(_mm_movehl_ps(hi, hi)));
+        node.offset = 0;
+        node.count = 0;
+        node.axis = 0;
+        return node;
+    }
+
+    // Leaves keep their references' range: they are in leaf order already.
+    void emitLeaf(const Task& t, BuildNode& node) const {
+        node.offset = std::uint32_t(t.begin);
+        node.count = std::uint16_t(t.end - t.begin);
+        const Ref* refs = buf[t.buffer];
+        for (std::size_t i = t.begin; i < t.end; ++i)
+            order[i] = refs[i].prim;
+    }
+};
+
+// Large build arrays: fresh memory costs a page fault per 4 KiB page (the kernel's
+// share was ~10% of a build in `perf`); in 2 MiB pages (Linux: a mapping of its own with
+// transparent huge pages on request) it is one fault per 2 MiB. Through malloc the
+// hint landed on glibc's heap at times and 1 build in 8 took twice as long (balls 5:
+// 40 instead of 21 ms); an own mapping measured 20-23 ms every time. Small arrays
+// and other systems: malloc.
+constexpr std::size_t kHuge = std::size_t(2) << 20;
+void* bigAlloc(std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes >= kHuge) {
+        // Room for the alignment and, just below the aligned start, the mapping's base
+        // and length (the mapping starts at least a 4 KiB page below it).
+        const std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge;
+        void* base =
+            mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (base == MAP_FAILED) throw std::bad_alloc();
+        const auto start =
+            (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
+        char* p = reinterpret_cast<char*>(start);
+        madvise(p, length - std::size_t(p - static_cast<char*>(base)), MADV_HUGEPAGE); // a hint
+        std::memcpy(p - 16, &base, sizeof base);
+        std::memcpy(p - 8, &length, sizeof length);
+        return p;
+    }
+#endif
+    void* p = std::malloc(bytes ? bytes : 1);
+    if (!p) throw std::bad_alloc();
+    return p;
+}
+void bigFree(void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    if (bytes >= kHuge) {
+        void* base;
+        std::size_t length;
+        std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
+        std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
+        munmap(base, length);
+        return;
+    }
+#endif
+    (void)bytes;
+    std::free(p);
 }
 
-BuildNode nodeOf(const Task& t) {
-    BuildNode node;
-    for (int a = 0; a < 3; ++a) {
-        node.lo[a] = t.box.lo[a];
-        node.hi[a] = t.box.hi[a];
+// The node array (not zeroed on resize: every node is written), in bigAlloc memory.
+template <class T> struct NoInit {
+    using value_type = T;
+    NoInit() = default;
+    template <class U> NoInit(const NoInit<U>&) noexcept {}
+    T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+        ::new (static_cast<void*>(p)) U;
     }
-    node.offset = 0;
-    node.count = 0;
-    node.axis = 0;
-    return node;
-}
+    template <class U, class... A> void construct(U* p, A&&... a) {
+        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
+    template <class U> bool operator==(const NoInit<U>&) const noexcept { return true; }
+    template <class U> bool operator!=(const NoInit<U>&) const noexcept { return false; }
+};
+using Nodes = std::vector<BuildNode, NoInit<BuildNode>>;
 
-// 2. A subtree built by one thread, depth first (left child right after its parent),
-//    with offsets local to its own node and primitive arrays.
-struct Sequential {
-    std::vector<BuildNode> nodes;
-    std::vector<std::uint32_t> prims; // scene indices in leaf order
+// Counters of a subtree; its SAH cost summed in depth-first order.
+struct Tally {
     int leaves = 0, maxDepth = 0;
     double sahCost = 0;
 };
 
-void buildSequential(std::vector<Ref>& refs, const Task& root, const BvhOptions& options,
-                     double rootArea, Sequential& out) {
-    Scratch sc(options.bins);
-    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::pair<Task, std::uint32_t>> stack{{root, kNone}}; // task, parent to link
-    while (!stack.empty()) {
-        const auto [task, parent] = stack.back();
-        stack.pop_back();
-        const auto idx = std::uint32_t(out.nodes.size());
-        if (parent != kNone) out.nodes[parent].offset = idx;
-        BuildNode node = nodeOf(task);
-        out.maxDepth = std::max(out.maxDepth, task.depth);
-        const Decision d = decide(refs, task, options, sc);
-        if (d.leaf) {
-            node.offset = std::uint32_t(out.prims.size());
-            node.count = std::uint16_t(task.end - task.begin);
-            for (std::size_t i = task.begin; i < task.end; ++i)
-                out.prims.push_back(refs[i].prim);
-            out.nodes.push_back(node);
-            ++out.leaves;
-            out.sahCost += d.leafCost * task.box.area() / rootArea;
-            continue;
-        }
-        node.axis = std::uint16_t(d.axis);
-        out.nodes.push_back(node);
-        out.sahCost += options.traversalCost * task.box.area() / rootArea;
-        // Right first on the stack so the left child is built next, right after its parent.
-        stack.push_back({d.right, idx});
-        stack.push_back({d.left, kNone});
+// 3. A subtree built depth first by one task (left child right after its parent),
+//    appended to `nodes`; inner offsets are indices into `nodes` (the final array with
+//    one thread, the task's own array in the parallel build).
+void buildSubtree(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Tally& tally) {
+    const auto idx = nodes.size();
+    nodes.push_back(b.nodeOf(t));
+    tally.maxDepth = std::max(tally.maxDepth, t.depth);
+    if (t.end - t.begin == 1) { // half of all nodes: a leaf, as decide would say
+        b.emitLeaf(t, nodes[idx]);
+        ++tally.leaves;
+        tally.sahCost += b.options.intersectionCost * t.box.area() / b.rootArea;
+        return;
     }
+    const Decision d = b.decideAny(t, sc);
+    if (d.leaf) {
+        b.emitLeaf(t, nodes[idx]);
+        ++tally.leaves;
+        tally.sahCost += d.leafCost * t.box.area() / b.rootArea;
+        return;
+    }
+    nodes[idx].axis = std::uint16_t(d.axis);
+    tally.sahCost += b.options.traversalCost * t.box.area() / b.rootArea;
+    buildSubtree(b, d.left, nodes, sc, tally);
+    nodes[idx].offset = std::uint32_t(nodes.size());
+    buildSubtree(b, d.right, nodes, sc, tally);
 }
 
-// 3. The parallel build: nodes with many primitives are split here and their two
-//    children built as parallel TBB tasks; smaller ones go to buildSequential. Every
-//    decision is the sequential one, so the tree is the same for any thread count.
-constexpr std::size_t kParallelGrain = 2048; // below this a subtree is one task
+// 4. The top of the tree: nodes of more than kParallelGrain references are split here
+//    and their children built as two TBB tasks (parallel) or one after the other (one
+//    thread: straight into the final array); smaller subtrees are one task each. The
+//    SAH cost is summed per subtree and the sums in depth-first order either way, so
+//    it is the same number for any thread count.
 struct Subtree {
     bool split = false;
-    BuildNode node{};                     // split: this node (offset set when emitted)
+    BuildNode node{};                     // split: this node (offset set when stitched)
     std::unique_ptr<Subtree> left, right; // split: the children
-    Sequential seq;                       // !split: built by one task
+    Nodes nodes;                          // !split: built by one task
+    Tally tally;                          // split: this node only
+    std::size_t base = 0;                 // index of the first node in the final array
 };
 
-void buildParallel(std::vector<Ref>& refs, const Task& task, const BvhOptions& options,
-                   double rootArea, Subtree& out) {
-    if (task.end - task.begin <= kParallelGrain) {
-        buildSequential(refs, task, options, rootArea, out.seq);
-        return;
+void buildTopParallel(const Builder& b, const Task& t, Subtree& out) {
+    Scratch sc(b.options.bins);
+    if (t.end - t.begin > kParallelGrain) {
+        const Decision d = b.decideAny(t, sc);
+        if (!d.leaf) {
+            out.split = true;
+            out.node = b.nodeOf(t);
+            out.node.axis = std::uint16_t(d.axis);
+            out.tally.maxDepth = t.depth;
+            out.tally.sahCost = b.options.traversalCost * t.box.area() / b.rootArea;
+            out.left = std::make_unique<Subtree>();
+            out.right = std::make_unique<Subtree>();
+            parallelInvoke([&] { buildTopParallel(b, d.left, *out.left); },
+                           [&] { buildTopParallel(b, d.right, *out.right); });
+            return;
+        }
+        // A large group that cannot be split (coincident centroids): one task.
     }
-    Scratch sc(options.bins);
-    const Decision d = decide(refs, task, options, sc);
-    if (d.leaf) { // a large group that cannot be split (coincident centroids)
-        buildSequential(refs, task, options, rootArea, out.seq);
-        return;
-    }
-    out.split = true;
-    out.node = nodeOf(task);
-    out.node.axis = std::uint16_t(d.axis);
-    out.left = std::make_unique<Subtree>();
-    out.right = std::make_unique<Subtree>();
-    out.seq.maxDepth = task.depth;
-    out.seq.sahCost = options.traversalCost * task.box.area() / rootArea;
-    tbb::parallel_invoke([&] { buildParallel(refs, d.left, options, rootArea, *out.left); },
-                         [&] { buildParallel(refs, d.right, options, rootArea, *out.right); });
+    out.nodes.reserve(2 * (t.end - t.begin));
+    buildSubtree(b, t, out.nodes, sc, out.tally);
 }
 
-// 4. The subtrees into one depth-first array, offsets made global.
-void emitSubtree(const Subtree& t, std::vector<BuildNode>& nodes, std::vector<std::uint32_t>& prims,
-                 BvhStats& stats) {
-    stats.maxDepth = std::max(stats.maxDepth, t.seq.maxDepth);
-    stats.sahCost += t.seq.sahCost;
+void buildTopSequential(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Tally& total) {
+    if (t.end - t.begin > kParallelGrain) {
+        const auto idx = nodes.size();
+        nodes.push_back(b.nodeOf(t));
+        const Decision d = b.decideAny(t, sc);
+        if (!d.leaf) {
+            nodes[idx].axis = std::uint16_t(d.axis);
+            total.maxDepth = std::max(total.maxDepth, t.depth);
+            total.sahCost += b.options.traversalCost * t.box.area() / b.rootArea;
+            buildTopSequential(b, d.left, nodes, sc, total);
+            nodes[idx].offset = std::uint32_t(nodes.size());
+            buildTopSequential(b, d.right, nodes, sc, total);
+            return;
+        }
+        nodes.pop_back(); // a large leaf group: built below as one subtree
+    }
+    Tally tally; // offsets: buildSubtree appends to the final array, so they are global
+    buildSubtree(b, t, nodes, sc, tally);
+    total.leaves += tally.leaves;
+    total.maxDepth = std::max(total.maxDepth, tally.maxDepth);
+    total.sahCost += tally.sahCost;
+}
+
+// 5. The parallel build's subtrees into one depth-first array: bases first (a walk of
+//    the few top nodes), then every subtree copied by its own task.
+void placeSubtrees(Subtree& t, std::size_t& next, std::vector<Subtree*>& groups, Tally& total) {
+    t.base = next;
+    total.maxDepth = std::max(total.maxDepth, t.tally.maxDepth);
+    total.sahCost += t.tally.sahCost;
     if (t.split) {
-        const std::size_t idx = nodes.size();
-        nodes.push_back(t.node);
-        emitSubtree(*t.left, nodes, prims, stats);
-        nodes[idx].offset = std::uint32_t(nodes.size());
-        emitSubtree(*t.right, nodes, prims, stats);
+        ++next;
+        placeSubtrees(*t.left, next, groups, total);
+        t.node.offset = std::uint32_t(next);
+        placeSubtrees(*t.right, next, groups, total);
         return;
     }
-    const auto base = std::uint32_t(nodes.size()), pbase = std::uint32_t(prims.size());
-    for (BuildNode n : t.seq.nodes) {
-        n.offset += n.count ? pbase : base;
-        nodes.push_back(n);
-    }
-    prims.insert(prims.end(), t.seq.prims.begin(), t.seq.prims.end());
-    stats.leaves += t.seq.leaves;
+    total.leaves += t.tally.leaves;
+    next += t.nodes.size();
+    groups.push_back(&t);
 }
+
+void stitch(Subtree& top, Nodes& nodes, Tally& total) {
+    std::size_t count = 0;
+    std::vector<Subtree*> groups;
+    placeSubtrees(top, count, groups, total);
+    nodes.resize(count);
+    // The split nodes.
+    std::vector<Subtree*> stack{&top};
+    while (!stack.empty()) {
+        Subtree* s = stack.back();
+        stack.pop_back();
+        if (!s->split) continue;
+        nodes[s->base] = s->node;
+        stack.push_back(s->right.get());
+        stack.push_back(s->left.get());
+    }
+    parallelFor(groups.size(), [&](std::size_t g) {
+        const Subtree& s = *groups[g];
+        const auto base = std::uint32_t(s.base);
+        BuildNode* dst = nodes.data() + s.base;
+        for (const BuildNode& n : s.nodes) {
+            *dst = n;
+            if (n.count == 0) dst->offset += base;
+            ++dst;
+        }
+    });
+}
+
+// References of a primitive: false if its box is unbounded, empty, non-finite or
+// beyond float's range (|x| > 3.4e38: as good as unbounded here).
+bool makeRef(const Primitive& p, std::uint32_t index, Ref& r) {
+    const Aabb b = p.bounds();
+    __m128 lo, hi;
+    floatBoxOutward(&b.lo.x, &b.hi.x, lo, hi);
+    _mm_store_ps(r.lo, lo);
+    _mm_store_ps(r.hi, hi); // lane 3: r.zero = 0
+    r.prim = index;
+    // Finite doubles and floats: x − x is 0 (NaN for ±inf and NaN).
+    const __m128d zd = _mm_setzero_pd();
+    const int finite =
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.lo.x), _mm_loadu_pd(&b.lo.x)), zd)) &
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.hi.x), _mm_loadu_pd(&b.hi.x)), zd)) &
+        _mm_movemask_pd(
+            _mm_cmpeq_pd(_mm_sub_pd(_mm_set_pd(b.hi.z, b.lo.z), _mm_set_pd(b.hi.z, b.lo.z)), zd));
+    const int fits = _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(lo, lo), _mm_setzero_ps())) &
+                     _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(hi, hi), _mm_setzero_ps()));
+    return finite == 3 && (fits & 7) == 7 && !b.empty() && b.bounded();
+}
+
+// 32-byte aligned storage of references (not zeroed: every one used is written).
+struct RefBuffer {
+    struct Free {
+        std::size_t n;
+        void operator()(Ref* p) const { bigFree(p, n * sizeof(Ref)); }
+    };
+    std::unique_ptr<Ref[], Free> data;
+    explicit RefBuffer(std::size_t n)
+        : data(static_cast<Ref*>(bigAlloc(n * sizeof(Ref))), Free{n}) {}
+};
 
 } // namespace
 
@@ -314,61 +810,111 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         throw std::invalid_argument("Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0, "
                                     "width 2 or 4, buildThreads >= 0");
     const auto start = std::chrono::steady_clock::now();
-
-    std::vector<Ref> refs;
-    refs.reserve(prims.size());
-    FBox rootBox, rootCBox;
-    for (std::size_t i = 0; i < prims.size(); ++i) {
-        const Aabb b = prims[i]->bounds();
-        const bool finite = std::isfinite(b.lo.x) && std::isfinite(b.lo.y) &&
-                            std::isfinite(b.lo.z) && std::isfinite(b.hi.x) &&
-                            std::isfinite(b.hi.y) && std::isfinite(b.hi.z);
-        Ref r;
-        for (int a = 0; a < 3; ++a) {
-            r.lo[a] = floatDown(b.lo[a]);
-            r.hi[a] = floatUp(b.hi[a]);
-        }
-        // Boxes beyond float's range (|x| > 3.4e38) are as good as unbounded here.
-        const bool fits = std::isfinite(r.lo[0]) && std::isfinite(r.lo[1]) &&
-                          std::isfinite(r.lo[2]) && std::isfinite(r.hi[0]) &&
-                          std::isfinite(r.hi[1]) && std::isfinite(r.hi[2]);
-        if (!finite || b.empty() || !b.bounded() || !fits) {
-            unbounded_.push_back(prims[i].get());
-            unboundedIndex_.push_back(std::uint32_t(i));
-            continue;
-        }
-        r.prim = std::uint32_t(i);
-        rootBox.extend(r.lo, r.hi);
-        rootCBox.extendPoint(r.centre(0), r.centre(1), r.centre(2));
-        refs.push_back(r);
-    }
-    std::vector<BuildNode> build;
-    stats_.primitives = refs.size();
-    stats_.unbounded = unbounded_.size();
-    order_.reserve(refs.size());
-    if (!refs.empty()) {
-        const double rootArea = rootBox.area() > 0 ? rootBox.area() : 1.0;
-        const Task root{0, refs.size(), 0, rootBox, rootCBox};
-        Subtree top;
-        auto run = [&] {
-            if (options.buildThreads == 1)
-                buildSequential(refs, root, options, rootArea, top.seq);
-            else
-                buildParallel(refs, root, options, rootArea, top);
+    const bool parallel = options.buildThreads != 1;
+    Nodes build;
+    auto run = [&] {
+        // References: boxes fetched once, in scene order (unbounded ones set aside).
+        const std::size_t count = prims.size();
+        RefBuffer bufA(count), bufB(count);
+        std::size_t n = 0;
+        Box4 rootBox, rootCBox;
+        const __m128 mask = lanes012();
+        auto account = [&](const Ref& r, Box4& box, Box4& cbox) {
+            const __m128 lo = loadLo(r, mask), hi = loadHi(r);
+            box.extend(lo, hi);
+            cbox.extendPoint(centroid(lo, hi));
         };
-        if (options.buildThreads > 1)
-            tbb::task_arena(options.buildThreads).execute(run);
-        else
-            run();
-        build.reserve(2 * refs.size());
-        std::vector<std::uint32_t> leafPrims;
-        leafPrims.reserve(refs.size());
-        emitSubtree(top, build, leafPrims, stats_);
-        for (std::uint32_t i : leafPrims) {
-            order_.push_back(prims[i].get());
-            orderIndex_.push_back(i);
+        if (!parallel || count <= kBlock) {
+            for (std::size_t i = 0; i < count; ++i) {
+                if (i + 8 < count) __builtin_prefetch(prims[i + 8].get()); // its vtable, box
+                Ref& r = bufA.data[n];
+                if (makeRef(*prims[i], std::uint32_t(i), r)) {
+                    account(r, rootBox, rootCBox);
+                    ++n;
+                } else {
+                    unbounded_.push_back(prims[i].get());
+                    unboundedIndex_.push_back(std::uint32_t(i));
+                }
+            }
+        } else {
+            // Blocks: references into buffer A at their scene index; if some were
+            // unbounded, compacted into B and the buffers swapped (the same order as
+            // the loop above).
+            const std::size_t blocks = (count + kBlock - 1) / kBlock;
+            std::vector<std::size_t> valid(blocks + 1, 0);
+            std::vector<Box4> boxes(blocks), cboxes(blocks);
+            std::vector<std::uint8_t> ok(count);
+            parallelFor(blocks, [&](std::size_t k) {
+                std::size_t v = 0;
+                for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
+                    ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
+                    if (ok[i]) {
+                        account(bufA.data[i], boxes[k], cboxes[k]);
+                        ++v;
+                    }
+                }
+                valid[k + 1] = v;
+            });
+            for (std::size_t k = 0; k < blocks; ++k) {
+                rootBox.extend(boxes[k]);
+                rootCBox.extend(cboxes[k]);
+                const std::size_t e = std::min(count, (k + 1) * kBlock);
+                if (valid[k + 1] != e - k * kBlock)
+                    for (std::size_t i = k * kBlock; i < e; ++i)
+                        if (!ok[i]) {
+                            unbounded_.push_back(prims[i].get());
+                            unboundedIndex_.push_back(std::uint32_t(i));
+                        }
+                valid[k + 1] += valid[k];
+            }
+            if (valid[blocks] != count) {
+                parallelFor(blocks, [&](std::size_t k) {
+                    Ref* dst = bufB.data.get() + valid[k];
+                    for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i)
+                        if (ok[i]) *dst++ = bufA.data[i];
+                });
+                std::swap(bufA.data, bufB.data);
+            }
+            n = valid[blocks];
         }
-    }
+        stats_.primitives = n;
+        stats_.unbounded = unbounded_.size();
+        if (n == 0) return;
+        orderIndex_.resize(n);
+        Builder b{options,
+                  rootBox.area() > 0 ? rootBox.area() : 1.0,
+                  {bufA.data.get(), bufB.data.get()},
+                  orderIndex_.data(),
+                  parallel};
+        const Task root{0, n, 0, 0, rootBox, rootCBox};
+        Tally total;
+        if (parallel) {
+            Subtree top;
+            buildTopParallel(b, root, top);
+            stitch(top, build, total);
+        } else {
+            build.reserve(2 * n);
+            Scratch sc(options.bins);
+            buildTopSequential(b, root, build, sc, total);
+        }
+        stats_.leaves = total.leaves;
+        stats_.maxDepth = total.maxDepth;
+        stats_.sahCost = total.sahCost;
+        order_.resize(n);
+        auto fill = [&](std::size_t lo, std::size_t hi) {
+            for (std::size_t i = lo; i < hi; ++i)
+                order_[i] = prims[orderIndex_[i]].get();
+        };
+        if (parallel)
+            parallelFor((n + kBlock - 1) / kBlock,
+                        [&](std::size_t k) { fill(k * kBlock, std::min(n, (k + 1) * kBlock)); });
+        else
+            fill(0, n);
+    };
+    if (options.buildThreads > 1)
+        tbb::task_arena(options.buildThreads).execute(run);
+    else
+        run();
     // Flatten: one Node per inner build node, holding its children's boxes.
     stats_.nodes = int(build.size());
     if (build.size() == 1) {

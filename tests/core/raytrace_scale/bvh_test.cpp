@@ -2,7 +2,8 @@
 // of every bounded primitive kind plus an unbounded plane, for random rays, the nearest
 // hit has the same t and primitive, forEachHit visits the same set, occluded agrees
 // with "some hit exists"; float boxes give the same hits; degenerate inputs (coincident
-// centroids, one primitive, none, huge counts of equal boxes) build and stay shallow.
+// centroids, one primitive, none, huge counts of equal boxes) build and stay shallow;
+// the blocked top of big trees gives the same tree for any thread count.
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/plane.h"
@@ -10,8 +11,13 @@
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
+// The outward rounding shared by the build and the wide tree (internal header).
+#include "../../../core/src/raytrace/bvh_internal.h"
+
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstring>
 #include <random>
 #include <set>
 
@@ -218,4 +224,164 @@ TEST_CASE("rt_bvh: boxes near float's range build and are found (fuzz_nff crashe
     Hit h;
     CHECK(bvh.intersect(far, 0, 1e300, h));
     CHECK(h.primitive == s.primitives[1].get());
+}
+
+TEST_CASE("rt_bvh: outward float rounding is std::nextafter's step, and tight", "[raytrace][bvh]") {
+    // floatDown/floatUp step the bit pattern instead of calling nextafterf (every
+    // primitive's box goes through them); the reference is the library's step.
+    auto bits = [](float f) {
+        std::uint32_t u;
+        std::memcpy(&u, &f, sizeof u);
+        return u;
+    };
+    auto refDown = [](double x) {
+        const float f = float(x);
+        return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+    };
+    auto refUp = [](double x) {
+        const float f = float(x);
+        return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    };
+    const double fmax = std::numeric_limits<float>::max();
+    std::vector<double> xs = {0.0,
+                              -0.0,
+                              1e-50,
+                              -1e-50,
+                              1e-45,
+                              -1e-45,
+                              1.0,
+                              1 + 1e-12,
+                              -1.0,
+                              -1 - 1e-12,
+                              fmax,
+                              -fmax,
+                              fmax * (1 + 1e-9),
+                              -fmax * (1 + 1e-9),
+                              3.5e38,
+                              -3.5e38,
+                              1e300,
+                              -1e300,
+                              std::numeric_limits<double>::infinity(),
+                              -std::numeric_limits<double>::infinity()};
+    std::mt19937_64 g(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::uniform_int_distribution<int> e(-160, 130);
+    for (int i = 0; i < 100000; ++i)
+        xs.push_back(std::ldexp(u(g), e(g)));
+    for (double x : xs) {
+        INFO("x = " << x);
+        const float d = wb::rt::bvh_detail::floatDown(x), up = wb::rt::bvh_detail::floatUp(x);
+        REQUIRE(bits(d) == bits(refDown(x)));
+        REQUIRE(bits(up) == bits(refUp(x)));
+        // Outward and tight: the float below/above, never further.
+        CHECK(double(d) <= x);
+        CHECK(double(up) >= x);
+        if (std::isfinite(x) && std::abs(x) < fmax) {
+            CHECK(double(std::nextafter(d, std::numeric_limits<float>::infinity())) > x);
+            CHECK(double(std::nextafter(up, -std::numeric_limits<float>::infinity())) < x);
+        }
+    }
+    CHECK(std::isnan(wb::rt::bvh_detail::floatDown(std::nan(""))));
+    // The build rounds a box's six values at once (SSE): the same bits as one by one.
+    std::uniform_int_distribution<std::size_t> pick(0, xs.size() - 1);
+    for (int i = 0; i < 50000; ++i) {
+        const double lo[3] = {xs[pick(g)], xs[pick(g)], xs[pick(g)]};
+        const double hi[3] = {xs[pick(g)], xs[pick(g)], xs[pick(g)]};
+        __m128 flo, fhi;
+        wb::rt::bvh_detail::floatBoxOutward(lo, hi, flo, fhi);
+        alignas(16) float l[4], h[4];
+        _mm_store_ps(l, flo);
+        _mm_store_ps(h, fhi);
+        for (int a = 0; a < 3; ++a) {
+            INFO("lo " << lo[a] << " hi " << hi[a]);
+            REQUIRE(bits(l[a]) == bits(wb::rt::bvh_detail::floatDown(lo[a])));
+            REQUIRE(bits(h[a]) == bits(wb::rt::bvh_detail::floatUp(hi[a])));
+        }
+        REQUIRE(bits(l[3]) == 0u);
+        REQUIRE(bits(h[3]) == 0u);
+    }
+}
+
+TEST_CASE("rt_bvh: two primitives: split when apart, one leaf when they overlap",
+          "[raytrace][bvh]") {
+    // The builder decides two-primitive nodes without bins; the SAH says: split
+    // (cost 1 + (A1 + A2)/A < 2) for spheres far apart, a leaf (cost 2) for two
+    // nearly equal overlapping ones (1 + ~2 > 2), a leaf for coincident centres.
+    for (double gap : {10.0, 0.01, 0.0}) {
+        Scene s;
+        s.add(Sphere({0, 0, 0}, 1), 0);
+        s.add(Sphere({gap, gap * 0.5, 0}, 1.001), 0);
+        Bvh bvh(s.primitives);
+        INFO("gap " << gap);
+        CHECK(bvh.stats().nodes == (gap > 1 ? 3 : 1));
+        compareWithBruteForce(s, bvh, 200, 17);
+    }
+}
+
+TEST_CASE("rt_bvh: nodes over 65536 primitives (blocked binning and partition) give the same "
+          "tree for any thread count and the brute-force hits",
+          "[raytrace][bvh]") {
+    // The top nodes of a big scene are binned and partitioned in fixed blocks, in
+    // parallel with threads; the blocks do not depend on the thread count, so neither
+    // does the tree. 70,000 primitives: the root takes that path.
+    std::mt19937_64 g(21);
+    Scene s;
+    std::uniform_real_distribution<double> r(0.01, 0.08);
+    for (int i = 0; i < 70000; ++i) {
+        const glm::dvec3 c = rnd3(g, -10, 10);
+        if (i == 30000) // unbounded, outside the tree: the parallel set-up compacts around it
+            s.add(Plane({0, 0, -11}, {0, 0, 1}), 0);
+        if (i % 3 == 2)
+            s.add(Triangle(c, c + 0.1 * rnd3(g, -1, 1), c + 0.1 * rnd3(g, -1, 1)), 0);
+        else
+            s.add(Sphere(c, r(g)), 0);
+    }
+    auto build = [&](int threads, int width) {
+        BvhOptions o;
+        o.buildThreads = threads;
+        o.width = width;
+        return std::make_unique<Bvh>(s.primitives, o);
+    };
+    const auto one = build(1, 4);
+    CHECK(one->stats().primitives == 70000u);
+    CHECK(one->stats().unbounded == 1u);
+    CHECK(one->stats().nodes == 2 * one->stats().leaves - 1);
+    for (int threads : {2, 0}) {
+        INFO("threads " << threads);
+        const auto other = build(threads, 4);
+        CHECK(other->stats().nodes == one->stats().nodes);
+        CHECK(other->stats().leaves == one->stats().leaves);
+        CHECK(other->stats().maxDepth == one->stats().maxDepth);
+        CHECK(other->stats().sahCost == one->stats().sahCost); // summed in the same order
+        const auto& a = one->wideNodes();
+        const auto& b = other->wideNodes();
+        REQUIRE(a.size() == b.size());
+        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Bvh::WideNode)) == 0);
+    }
+    const auto two = build(2, 2); // the binary tree, built in parallel
+    CHECK(two->stats().sahCost == one->stats().sahCost);
+    compareWithBruteForce(s, *one, 60, 5);
+    compareWithBruteForce(s, *two, 60, 6);
+}
+
+TEST_CASE("rt_bvh: 70,000 coincident centroids (blocked node, object median) stay shallow",
+          "[raytrace][bvh]") {
+    Scene s;
+    for (int i = 0; i < 70000; ++i)
+        s.add(Sphere({1, 2, 3}, 1.0 + i * 1e-6), 0);
+    BvhOptions o1, o2;
+    o1.buildThreads = 1;
+    o2.buildThreads = 2;
+    Bvh b1(s.primitives, o1), b2(s.primitives, o2);
+    CHECK(b1.stats().maxDepth < 40); // object-median fallback: ~log2(70000/256) + 1
+    CHECK(b2.stats().nodes == b1.stats().nodes);
+    REQUIRE(b1.wideNodes().size() == b2.wideNodes().size());
+    CHECK(std::memcmp(b1.wideNodes().data(), b2.wideNodes().data(),
+                      b1.wideNodes().size() * sizeof(Bvh::WideNode)) == 0);
+    Ray ray;
+    ray.origin = {1, 2, 10};
+    ray.direction = {0, 0, -1};
+    Hit h;
+    REQUIRE(b2.intersect(ray, 0, 1e9, h));
+    CHECK(h.primitive == s.primitives.back().get()); // the largest sphere is hit first
 }
