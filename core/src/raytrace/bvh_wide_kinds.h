@@ -1,0 +1,47 @@
+#pragma once
+// What the wide BVH's collapse (bvh_wide.cpp) and its walks (bvh_wide_impl.h, one per
+// instruction set) share: the primitive kinds of the leaves, their margins, and the
+// table of one SIMD path's entry points. Included before any code compiled for AVX2,
+// so these inline definitions are plain x86-64 code in every translation unit.
+#include "core/raytrace/bvh.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace wb::rt {
+
+namespace bvh_detail {
+// Exact code per kind: Sphere and Triangle are called directly, SmoothTriangle (the
+// triangle test, then its normal) and the rest through the virtual call.
+constexpr std::uint8_t kOther = 0, kSphere = 1, kTriangle = 2, kSmoothTriangle = 3;
+// Runs of a leaf sorted by their float test: spheres, triangles (both kinds), the rest
+// (a float test of their own box).
+constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
+constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
+constexpr float kTriMargin = 0x1p-19f;    // relative error bound of the triangle test's inputs
+// Exit distances use 1/d·(1 + 2^-19) rounded to float (≥ 1/d·(1 + 2^-20)), which covers
+// the near side's three roundings (difference, 1/d, product) and the far side's two
+// (difference, product) with room to spare: a box the exact ray enters is never missed.
+constexpr double kInvFarScale = 1 + 0x1p-19;
+// BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
+constexpr int kAutoWidthAvx2 = 8;
+inline std::uint8_t runOf(std::uint8_t kind) {
+    return kind == kSphere
+               ? kRunSphere
+               : (kind == kTriangle || kind == kSmoothTriangle ? kRunTriangle : kRunOther);
+}
+} // namespace bvh_detail
+
+// One SIMD path and width of the wide walk: what Bvh's queries call.
+struct Bvh::WidePath {
+    int width; // 4 or 8 children per node
+    bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
+    bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
+    bool (*occluded)(const Bvh&, const Ray&, double, double);
+    void (*forEachHit)(const Bvh&, const Ray&, double, double,
+                       const std::function<bool(const Hit&)>&);
+    void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
+                           const std::function<bool(const Primitive&)>&);
+};
+
+} // namespace wb::rt
