@@ -83,10 +83,11 @@ bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
 // portable baseline), and with AVX2 the 4- and 8-wide AVX2 walks.
 struct WidePaths {
     std::vector<std::unique_ptr<Bvh>> trees;
-    explicit WidePaths(const std::vector<std::unique_ptr<Primitive>>& prims) {
+    explicit WidePaths(const std::vector<std::unique_ptr<Primitive>>& prims,
+                       const BvhOptions& base = {}) {
         const bool avx2 = __builtin_cpu_supports("avx2");
         for (int k = 0; k < (avx2 ? 3 : 1); ++k) {
-            BvhOptions o;
+            BvhOptions o = base;
             o.width = k == 2 ? 8 : 4;
             o.simd = k == 0 ? BvhSimd::Sse2 : BvhSimd::Avx2;
             trees.push_back(std::make_unique<Bvh>(prims, o));
@@ -169,10 +170,15 @@ int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt1993
             corner[a] = (g() & 1) ? lo[a] : hi[a];
         }
         Ray ray;
-        switch (i % 4) {
+        switch (i % 5) {
         case 0: // through a corner from anywhere
             ray.origin = rnd3(g, -14 * scale, 14 * scale);
             ray.direction = glm::normalize(corner - ray.origin);
+            break;
+        case 4: // through a corner from the origin 0: no widening of the origin, only the
+                // exit distances' stretch keeps entry <= exit there
+            ray.origin = glm::dvec3(0.0);
+            ray.direction = glm::normalize(corner);
             break;
         case 1: { // along an edge: two zero direction components, in two face planes
             const int a = int(g() % 3);
@@ -532,4 +538,85 @@ TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread co
         }
     }
     CHECK_THROWS_AS(build(-1), std::invalid_argument);
+}
+
+TEST_CASE("rt_bvh_wide: rays from the origin 0 through box corners that are triangle vertices",
+          "[raytrace][bvh]") {
+    // Triangles on float-exact vertices whose first vertex is the least in every
+    // coordinate, so it is a corner of the triangle's box and, for some, of the leaf's
+    // and the nodes' boxes (floats, not widened by the build). A ray from the origin 0
+    // (not widened either) through that vertex enters and leaves the box at the same
+    // exact t: only the exit distances' stretch keeps the computed entry <= exit.
+    std::mt19937_64 g(91);
+    std::uniform_real_distribution<float> u(-20.0f, 20.0f), e(0.01f, 2.0f);
+    Scene s;
+    std::vector<glm::dvec3> corners;
+    for (int i = 0; i < 400; ++i) {
+        const glm::dvec3 a(u(g), u(g), u(g));
+        const glm::dvec3 b = a + glm::dvec3(e(g), e(g), e(g)), c = a + glm::dvec3(e(g), e(g), e(g));
+        if (glm::length(a) < 1) continue;
+        s.add(Triangle(a, b, c), 0);
+        corners.push_back(a);
+    }
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    int hits = 0;
+    for (const glm::dvec3& a : corners) {
+        Ray ray;
+        ray.origin = glm::dvec3(0.0);
+        ray.direction = glm::normalize(a);
+        hits += compareRay(r, ray);
+        ray.direction = a; // not normalised: t = 1 at the vertex
+        hits += compareRay(r, ray);
+    }
+    CHECK(hits > 200);
+}
+
+TEST_CASE("rt_bvh_wide: scenes of one kind, so leaves hold full runs of four", "[raytrace][bvh]") {
+    // In the mixed scene the kinds alternate, and the SAH makes small leaves, so a leaf
+    // rarely holds four of one run; here every leaf's run is as long as the leaf, and
+    // costly nodes make leaves of up to 7, so every lane of the leaves' float tests
+    // (spheres, triangles, the other kinds' boxes) and the tail mask decide something.
+    for (int kind = 0; kind < 3; ++kind) {
+        INFO("kind " << kind);
+        std::mt19937_64 g(std::uint64_t(60 + kind));
+        std::uniform_real_distribution<double> rr(0.05, 0.6);
+        Scene s;
+        for (int i = 0; i < 600; ++i) {
+            const glm::dvec3 c = rnd3(g, -10, 10);
+            if (kind == 0)
+                s.add(Sphere(c, rr(g)), 0);
+            else if (kind == 1)
+                s.add(Triangle(c, c + rnd3(g, -1, 1), c + rnd3(g, -1, 1)), 0);
+            else if (i % 3 == 0)
+                s.add(Cone(c, rr(g), c + rnd3(g, -1, 1) + glm::dvec3(0.01), rr(g)), 0);
+            else if (i % 3 == 1)
+                s.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(rr(g), rr(g), rr(g))), 0);
+            else
+                s.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1, 1))), 0);
+        }
+        BruteForce brute(s.primitives);
+        BvhOptions bo;
+        bo.width = 2;
+        Bvh binary(s.primitives, bo);
+        BvhOptions big;
+        big.maxLeafSize = 7;
+        big.traversalCost = 8;
+        const WidePaths wide(s.primitives, big);
+        const Refs r{brute, binary, wide};
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -14, 14);
+            const Aabb b = s.primitives[g() % s.primitives.size()]->bounds();
+            ray.direction = glm::normalize(0.5 * (b.lo + b.hi) + 0.3 * rnd3(g, -1, 1) - ray.origin);
+            hits += compareRay(r, ray);
+        }
+        CHECK(hits > 150);
+        CHECK(adversarialRays(r, g, 400, 1.0) > 50);
+    }
 }
