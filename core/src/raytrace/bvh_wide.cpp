@@ -125,7 +125,7 @@ void Bvh::sortLeaf(std::uint32_t first, std::uint32_t cnt) {
                     tv_[j * 3 + a][i] = float((*vs[j])[a]);
                     mag += std::abs((*vs[j])[a]);
                 }
-            tm_[i] = float(mag) * kTriMargin;
+            tm_[i] = float(2 * mag) * kTriMargin; // see the triangle test's δ
         } else {
             // Rounded outward; a box float cannot hold (or an empty one) is never rejected.
             const Aabb bx = order_[i]->bounds();

@@ -12,7 +12,7 @@
 //
 // 1. Per ray: the near/far planes picked by byte offsets from the direction's signs; the
 //    origin in float widened by |o|max·2^-21 per axis (its rounding is at most
-//    |o|max·2^-24), 1/d in float for entries and 1/d·(1 + 2^-19) for exits (bvh_wide_kinds.h),
+//    |o|max·2^-24), 1/d in float for entries and 1/d·(1 + 2^-19) for exits (kInvFarScaleF),
 //    tMin lowered and the limit raised by 2^-20: a box the exact ray enters is never
 //    missed. Rays float cannot carry (|o| > 1e30, a direction component beyond 1e±30)
 //    take the same walk with each box tested in double.
@@ -54,13 +54,13 @@ template <class L> struct Bvh::WideWalk {
     struct RayData {
         std::size_t nearOff[3], farOff[3]; // byte offsets of the near and far planes in a Node
         V on[3], of[3];                    // origin moved by ∓eps for near and ±eps for far planes
-        V inv[3], invFar[3];               // 1/d and 1/d·(1 + 2^-19) in float (see above)
+        V inv[3], invFar[3];               // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
         V tMin;                            // lowered tMin
         bool useFloat = false;             // boxes tested in float (else in double)
-        bool unitD = false;                // unit direction: the float sphere test applies
+        bool unitD = false; // unit direction (and useFloat): the float sphere test applies
         int neg[3] = {0, 0, 0};            // direction sign per axis
-        glm::dvec3 o{0.0}, d{0.0}, invd{0.0}; // the ray in double
-        // Sphere test (set up at the first sphere run): origin, direction, |o|₁·margin.
+        glm::dvec3 o{0.0}, d{0.0}, invd{0.0}; // the ray in double (invd: double walk only)
+        // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
         __m128 fo[3], fd[3], om;
         // Triangle test (set up at the first triangle run): the watertight shear (kz the
@@ -70,6 +70,7 @@ template <class L> struct Bvh::WideWalk {
         __m128 to[3], shx, shy, tom;
 
         void sphereSetup() {
+            unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
             for (int a = 0; a < 3; ++a) {
                 fo[a] = _mm_set1_ps(float(o[a]));
                 fd[a] = _mm_set1_ps(float(d[a]));
@@ -92,7 +93,7 @@ template <class L> struct Bvh::WideWalk {
             to[2] = _mm_set1_ps(float(o[kz]));
             shx = _mm_set1_ps(float(d[kx] / d[kz]));
             shy = _mm_set1_ps(float(d[ky] / d[kz]));
-            tom = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) *
+            tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
                               bvh_detail::kTriMargin);
             triReady = true;
         }
@@ -116,7 +117,8 @@ template <class L> struct Bvh::WideWalk {
         for (std::uint32_t run = first; run < end;) {
             const std::uint32_t rEnd = run + b.run_[run];
             const std::uint8_t runKind = runOf(b.kind_[run]);
-            if (runKind == kRunOther ? !r.useFloat : !r.unitD) {
+            if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
+            if (runKind == kRunSphere ? !r.unitD : !r.useFloat) {
                 for (std::uint32_t i = run; i < rEnd; ++i)
                     if (!visit(i)) return false;
                 run = rEnd;
@@ -125,7 +127,6 @@ template <class L> struct Bvh::WideWalk {
             for (std::uint32_t i = run; i < rEnd; i += 4) {
                 int mask;
                 if (runKind == kRunSphere) {
-                    if (!r.sphReady) r.sphereSetup();
                     // Squared distance of each centre from the ray's line against (r +
                     // margin)²: a sphere the exact code can hit (disc >= 0) is never rejected.
                     const __m128 fx = _mm_sub_ps(r.fo[0], _mm_loadu_ps(&b.sx_[i]));
@@ -150,7 +151,7 @@ template <class L> struct Bvh::WideWalk {
                     // only when one is surely negative and another surely positive: e bounds
                     // their float error (inputs off by δ after rounding vertices and origin,
                     // the shear and the differences; products and their difference rounded).
-                    __m128 px[3], py[3], mag = _mm_setzero_ps();
+                    __m128 px[3], py[3];
                     const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
                     for (int j = 0; j < 3; ++j) {
                         const __m128 X =
@@ -161,9 +162,6 @@ template <class L> struct Bvh::WideWalk {
                             _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[2]][i]), r.to[2]);
                         px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
                         py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
-                        mag = _mm_add_ps(mag, _mm_add_ps(_mm_and_ps(X, absMask),
-                                                         _mm_add_ps(_mm_and_ps(Y, absMask),
-                                                                    _mm_and_ps(Z, absMask))));
                     }
                     const __m128 u =
                         _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
@@ -175,9 +173,9 @@ template <class L> struct Bvh::WideWalk {
                     for (int j = 0; j < 3; ++j)
                         q = _mm_add_ps(q, _mm_add_ps(_mm_and_ps(px[j], absMask),
                                                      _mm_and_ps(py[j], absMask)));
-                    // δ = (|v|₁ + |o|₁ + Σ|v − o|)·2^-19; e = 2δ(Q + 2δ) + Q²·2^-20.
-                    const __m128 delta = _mm_add_ps(_mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom),
-                                                    _mm_mul_ps(mag, _mm_set1_ps(kTriMargin)));
+                    // δ = (|v|₁ + |o|₁ + Σ|v − o|₁)·2^-19 (sums over the three vertices) is
+                    // at most (2·Σ|v|₁ + 4·|o|₁)·2^-19 = tm_ + tom; e = 2δ(Q + 2δ) + Q²·2^-20.
+                    const __m128 delta = _mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom);
                     const __m128 twoD = _mm_add_ps(delta, delta);
                     const __m128 e =
                         _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
@@ -245,32 +243,48 @@ template <class L> struct Bvh::WideWalk {
         RayData r;
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-        bool ok = om < 1e30;
+        // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
+        // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
+        const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
+        const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
+            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+            return _mm_movemask_pd(_mm_or_pd(
+                _mm_cmpeq_pd(av, _mm_setzero_pd()),
+                _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        };
+        const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
+        constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
         for (int a = 0; a < 3; ++a) {
-            r.neg[a] = std::signbit(d[a]);
-            ok = ok && (d[a] == 0 || (std::abs(d[a]) >= 1e-30 && std::abs(d[a]) <= 1e30));
-            const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float),
-                              hi = offsetof(Node, hi) + std::size_t(a) * W * sizeof(float);
-            r.nearOff[a] = r.neg[a] ? hi : lo;
-            r.farOff[a] = r.neg[a] ? lo : hi;
+            r.neg[a] = (signs >> a) & 1;
+            const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float);
+            r.nearOff[a] = lo + (r.neg[a] ? kHiMinusLo : 0);
+            r.farOff[a] = lo + (r.neg[a] ? 0 : kHiMinusLo);
         }
         r.useFloat = ok;
-        r.unitD = ok && std::abs(glm::dot(d, d) - 1) < 1e-6;
         r.o = o;
         r.d = d;
-        r.invd = 1.0 / d;
         if (ok) {
+            // 1/d in float, all three in one division (a zero component gives ±inf, the
+            // slab then no limit, as in double); see kInvFarScale for the roundings.
+            const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+            const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+            alignas(16) float inv[4], invFar[4];
+            _mm_store_ps(inv, finv);
+            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(kInvFarScaleF)));
             const float eps = float(om) * 0x1p-21f;
             for (int a = 0; a < 3; ++a) {
                 const float fo = float(o[a]);
                 const float s = r.neg[a] ? -eps : eps;
                 r.on[a] = L::set1(fo + s);
                 r.of[a] = L::set1(fo - s);
-                r.inv[a] = L::set1(float(r.invd[a]));
-                r.invFar[a] = L::set1(float(r.invd[a] * kInvFarScale));
+                r.inv[a] = L::set1(inv[a]);
+                r.invFar[a] = L::set1(invFar[a]);
             }
             const float ftMin = float(tMin);
             r.tMin = L::set1(ftMin - std::abs(ftMin) * 0x1p-20f);
+        } else {
+            r.invd = 1.0 / d;
         }
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
@@ -289,6 +303,10 @@ template <class L> struct Bvh::WideWalk {
         std::uint32_t cur = 0;
         while (true) {
             const Node& nd = nodes[cur];
+            // The links (the fourth cache line of an 8-wide node) are read only after the
+            // box test: fetch them alongside the boxes.
+            if constexpr (sizeof(Node) > 128)
+                _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
             alignas(32) float t[W];
             int mask;
             if (r.useFloat) {

@@ -19,10 +19,13 @@ constexpr std::uint8_t kOther = 0, kSphere = 1, kTriangle = 2, kSmoothTriangle =
 constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
 constexpr float kTriMargin = 0x1p-19f;    // relative error bound of the triangle test's inputs
-// Exit distances use 1/d·(1 + 2^-19) rounded to float (≥ 1/d·(1 + 2^-20)), which covers
-// the near side's three roundings (difference, 1/d, product) and the far side's two
-// (difference, product) with room to spare: a box the exact ray enters is never missed.
-constexpr double kInvFarScale = 1 + 0x1p-19;
+// The slab test in float: entry = (near − o')·inv, exit = (far − o'')·invFar, where
+// inv = 1/float(d) and invFar = inv·(1 + 2^-19), each rounded (u = 2^-24; o', o'' are the
+// origin widened for its own rounding). Then inv <= (1/d)(1 + 2u), so an entry comes out
+// at most (1 + 4u) times its exact value, and invFar >= (1/d)(1 − 3u)(1 + 32u), so an
+// exit at least (1 + 27u) times its exact value: entry <= exit whenever the exact ray
+// enters the box, and a box it enters is never missed.
+constexpr float kInvFarScaleF = 1 + 0x1p-19f;
 // BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
 constexpr int kAutoWidthAvx2 = 8;
 inline std::uint8_t runOf(std::uint8_t kind) {
