@@ -66,7 +66,8 @@ template <class L> struct Bvh::WideWalk {
         // Triangle test (set up at the first triangle run): the watertight shear (kz the
         // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
         bool triReady = false;
-        int k[3] = {0, 1, 2};
+        TriangleShear sh;     // in double: the exact tests of plain triangles reuse it
+        int k[3] = {0, 1, 2}; // sh's axes
         __m128 to[3], shx, shy, tom;
 
         void sphereSetup() {
@@ -80,19 +81,17 @@ template <class L> struct Bvh::WideWalk {
             sphReady = true;
         }
         void triangleSetup() {
-            // The watertight test's axes (triangle.cpp): kz dominant, kx/ky swapped for d[kz] < 0.
-            const glm::dvec3 ad = glm::abs(d);
-            const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-            int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-            if (d[kz] < 0) std::swap(kx, ky);
-            k[0] = kx;
-            k[1] = ky;
-            k[2] = kz;
-            to[0] = _mm_set1_ps(float(o[kx]));
-            to[1] = _mm_set1_ps(float(o[ky]));
-            to[2] = _mm_set1_ps(float(o[kz]));
-            shx = _mm_set1_ps(float(d[kx] / d[kz]));
-            shy = _mm_set1_ps(float(d[ky] / d[kz]));
+            // The watertight test's axes and shear (triangle.cpp): kz dominant, kx/ky
+            // swapped for d[kz] < 0.
+            sh = triangleShear(d);
+            k[0] = sh.kx;
+            k[1] = sh.ky;
+            k[2] = sh.kz;
+            to[0] = _mm_set1_ps(float(o[sh.kx]));
+            to[1] = _mm_set1_ps(float(o[sh.ky]));
+            to[2] = _mm_set1_ps(float(o[sh.kz]));
+            shx = _mm_set1_ps(float(sh.sx));
+            shy = _mm_set1_ps(float(sh.sy));
             tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
                               bvh_detail::kTriMargin);
             triReady = true;
@@ -106,7 +105,7 @@ template <class L> struct Bvh::WideWalk {
             return b.wnodes8_;
     }
 
-    // Runs the leaf's float tests and calls visit(i) for every candidate i (an index into
+    // Runs the leaf's float tests and calls visit(i, r) for every candidate i (an index into
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
     template <class Visit>
@@ -120,7 +119,7 @@ template <class L> struct Bvh::WideWalk {
             if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
             if (runKind == kRunSphere ? !r.unitD : !r.useFloat) {
                 for (std::uint32_t i = run; i < rEnd; ++i)
-                    if (!visit(i)) return false;
+                    if (!visit(i, &r)) return false;
                 run = rEnd;
                 continue;
             }
@@ -206,7 +205,7 @@ template <class L> struct Bvh::WideWalk {
                 while (mask) {
                     const int l = __builtin_ctz(unsigned(mask));
                     mask &= mask - 1;
-                    if (!visit(i + std::uint32_t(l))) return false;
+                    if (!visit(i + std::uint32_t(l), &r)) return false;
                 }
             }
             run = rEnd;
@@ -214,7 +213,7 @@ template <class L> struct Bvh::WideWalk {
         return true;
     }
 
-    // Calls leaf(i) for the primitives of every leaf the ray's segment (tMin, tMax] may
+    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin, tMax] may
     // meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
     // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
     template <bool kAnyHit, class Leaf>
@@ -236,7 +235,7 @@ template <class L> struct Bvh::WideWalk {
             }
             if (!(t0 <= t1)) return;
             for (std::uint32_t i = 0; i < b.rootLeafCount_; ++i)
-                if (!leaf(i)) return;
+                if (!leaf(i, nullptr)) return; // no ray data: the exact tests set up their own
             return;
         }
         const std::vector<Node>& nodes = nodesOf(b);
@@ -420,22 +419,27 @@ template <class L> struct Bvh::WideWalk {
 
     // The exact decisions, called directly for the kinds the leaves know (the same
     // functions the virtual calls would reach: kSphere and kTriangle are exact types).
-    static bool exactIntersect(const Primitive& p, std::uint8_t kind, const Ray& ray, double tMin,
-                               double tMax, Hit& hit) {
+    // A plain triangle takes the shear the leaf test computed, if it did (the same bits as
+    // Triangle::intersect computing it).
+    static bool exactIntersect(const Primitive& p, std::uint8_t kind, const RayData* r,
+                               const Ray& ray, double tMin, double tMax, Hit& hit) {
         if (kind == bvh_detail::kSphere)
             return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
-        if (kind == bvh_detail::kTriangle)
-            return static_cast<const Triangle&>(p).Triangle::intersect(ray, tMin, tMax, hit);
+        if (kind == bvh_detail::kTriangle) {
+            const auto& t = static_cast<const Triangle&>(p);
+            return r && r->triReady ? t.intersectSheared(ray, r->sh, tMin, tMax, hit)
+                              : t.Triangle::intersect(ray, tMin, tMax, hit);
+        }
         return p.intersect(ray, tMin, tMax, hit);
     }
-    static bool exactOccluded(const Primitive& p, std::uint8_t kind, const Ray& ray, double tMin,
-                              double tMax) {
+    static bool exactOccluded(const Primitive& p, std::uint8_t kind, const RayData* r,
+                              const Ray& ray, double tMin, double tMax) {
         if (kind == bvh_detail::kSphere)
             return static_cast<const Sphere&>(p).Sphere::occluded(ray, tMin, tMax);
         if (kind == bvh_detail::kTriangle) {
             // Triangle keeps Primitive::occluded, which is its intersect with a scratch hit.
             Hit h;
-            return static_cast<const Triangle&>(p).Triangle::intersect(ray, tMin, tMax, h);
+            return exactIntersect(p, kind, r, ray, tMin, tMax, h);
         }
         return p.occluded(ray, tMin, tMax);
     }
@@ -448,11 +452,12 @@ template <class L> struct Bvh::WideWalk {
         const Primitive* best = nullptr;
         std::uint8_t bestKind = bvh_detail::kOther;
         std::uint32_t bestIndex = 0;
-        auto offer = [&](const Primitive& p, std::uint8_t kind, std::uint32_t index) {
+        auto offer = [&](const Primitive& p, std::uint8_t kind, std::uint32_t index,
+                         const RayData* r) {
             const double before = tMax;
-            if (!exactIntersect(p, kind, ray, tMin, tMax, hit)) return;
+            if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
             if (best && hit.t == before && index < bestIndex) {
-                exactIntersect(*best, bestKind, ray, tMin, before, hit);
+                exactIntersect(*best, bestKind, r, ray, tMin, before, hit);
                 return;
             }
             best = &p;
@@ -461,9 +466,9 @@ template <class L> struct Bvh::WideWalk {
             tMax = hit.t;
         };
         for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
-            offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i]);
-        walk<false>(b, ray, tMin, tMax, [&](std::uint32_t i) {
-            offer(*b.order_[i], b.kind_[i], b.orderIndex_[i]);
+            offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
+        walk<false>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            offer(*b.order_[i], b.kind_[i], b.orderIndex_[i], r);
             return true;
         });
         return best != nullptr;
@@ -473,8 +478,8 @@ template <class L> struct Bvh::WideWalk {
         for (const Primitive* p : b.unbounded_)
             if (p->occluded(ray, tMin, tMax)) return true;
         bool any = false;
-        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i) {
-            any = exactOccluded(*b.order_[i], b.kind_[i], ray, tMin, tMax);
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            any = exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax);
             return !any;
         });
         return any;
@@ -485,8 +490,8 @@ template <class L> struct Bvh::WideWalk {
         Hit h;
         for (const Primitive* p : b.unbounded_)
             if (p->intersect(ray, tMin, tMax, h) && !visit(h)) return;
-        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i) {
-            return !(exactIntersect(*b.order_[i], b.kind_[i], ray, tMin, tMax, h) && !visit(h));
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            return !(exactIntersect(*b.order_[i], b.kind_[i], r, ray, tMin, tMax, h) && !visit(h));
         });
     }
 
@@ -494,8 +499,8 @@ template <class L> struct Bvh::WideWalk {
                                const std::function<bool(const Primitive&)>& visit) {
         for (const Primitive* p : b.unbounded_)
             if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
-        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i) {
-            return !(exactOccluded(*b.order_[i], b.kind_[i], ray, tMin, tMax) &&
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            return !(exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax) &&
                      !visit(*b.order_[i]));
         });
     }
