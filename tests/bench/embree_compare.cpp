@@ -375,7 +375,8 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             if (occ != ourOcc)
                 std::fprintf(stderr, "%s: the SIMD paths disagree on occlusion\n", it.name.c_str());
         if (binOcc != ourOcc)
-            std::fprintf(stderr, "%s: binary and wide BVH disagree on occlusion\n", it.name.c_str());
+            std::fprintf(stderr, "%s: binary and wide BVH disagree on occlusion\n",
+                         it.name.c_str());
         const double ourEye = tEye[0], binEye = tEye[1], emEye = tEye[2];
         const double ourShadow = tShadow[0], binShadow = tShadow[1], emShadow = tShadow[2];
         if (sink < 0) std::puts("");

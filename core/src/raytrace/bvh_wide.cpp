@@ -15,13 +15,11 @@
 #include "core/raytrace/bvh.h"
 
 #include "bvh_internal.h"
+#include "bvh_wide_impl.h" // the SSE2 walk (Lanes4<0>)
 #include "bvh_wide_kinds.h"
 #include "core/raytrace/smooth_triangle.h"
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
-
-#include <emmintrin.h>
-#include <xmmintrin.h>
 
 #include <algorithm>
 #include <array>
@@ -34,32 +32,11 @@
 
 namespace wb::rt {
 
-namespace sse {
-// SSE2, four lanes: the baseline every x86-64 has.
-struct L4 {
-    static constexpr int W = 4;
-    using V = __m128;
-    static V set1(float x) { return _mm_set1_ps(x); }
-    static V load(const float* p) { return _mm_load_ps(p); }
-    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
-    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
-    static V min(V a, V b) { return _mm_min_ps(a, b); }
-    static V max(V a, V b) { return _mm_max_ps(a, b); }
-    static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
-    static void store(float* p, V v) { _mm_store_ps(p, v); }
-    static __m128 low(V v) { return v; }
-};
-} // namespace sse
-
-} // namespace wb::rt
-
-#include "bvh_wide_impl.h"
-
-namespace wb::rt {
-
 using namespace bvh_detail;
 
-const Bvh::WidePath* Bvh::ssePath(int) { return WideWalk<sse::L4>::path(false); }
+const Bvh::WidePath* Bvh::ssePath(int) {
+    return WideWalk<Lanes4<0>>::path(false);
+}
 
 namespace {
 
@@ -149,8 +126,7 @@ void Bvh::sortLeaf(std::uint32_t first, std::uint32_t cnt) {
     }
 }
 
-template <int W>
-void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
+template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
     const auto* build = static_cast<const BuildNode*>(buildNodes);
     auto area = [&](std::size_t i) {
         const glm::dvec3 e = build[i].hi - build[i].lo;
@@ -180,7 +156,8 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
             kids[size_t(best)] = open + 1;
             kids[size_t(nk)] = build[open].offset;
             areas[size_t(best)] = build[open + 1].count == 0 ? area(open + 1) : -1;
-            areas[size_t(nk)] = build[build[open].offset].count == 0 ? area(build[open].offset) : -1;
+            areas[size_t(nk)] =
+                build[build[open].offset].count == 0 ? area(build[open].offset) : -1;
             ++nk;
         }
         WideNodeT<W> w;

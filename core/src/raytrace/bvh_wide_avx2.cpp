@@ -29,21 +29,6 @@
 
 namespace wb::rt::avx2 {
 
-// Four lanes in VEX encoding (the SSE2 walk's code with AVX's three-operand forms).
-struct L4 {
-    static constexpr int W = 4;
-    using V = __m128;
-    static V set1(float x) { return _mm_set1_ps(x); }
-    static V load(const float* p) { return _mm_load_ps(p); }
-    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
-    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
-    static V min(V a, V b) { return _mm_min_ps(a, b); }
-    static V max(V a, V b) { return _mm_max_ps(a, b); }
-    static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
-    static void store(float* p, V v) { _mm_store_ps(p, v); }
-    static __m128 low(V v) { return v; }
-};
-
 // Eight lanes: a node of eight children tested at once.
 struct L8 {
     static constexpr int W = 8;
@@ -62,11 +47,11 @@ struct L8 {
 
 } // namespace wb::rt::avx2
 
-#include "bvh_wide_impl.h"
+#include "bvh_wide_impl.h" // Lanes4 (here VEX-encoded) and the walk
 
 namespace wb::rt {
 // Instantiated here, inside the AVX2 region.
-template struct Bvh::WideWalk<avx2::L4>;
+template struct Bvh::WideWalk<Lanes4<1>>;
 template struct Bvh::WideWalk<avx2::L8>;
 } // namespace wb::rt
 
@@ -79,7 +64,7 @@ template struct Bvh::WideWalk<avx2::L8>;
 namespace wb::rt {
 
 const Bvh::WidePath* Bvh::avx2Path(int width) {
-    return width == 8 ? WideWalk<avx2::L8>::path(true) : WideWalk<avx2::L4>::path(true);
+    return width == 8 ? WideWalk<avx2::L8>::path(true) : WideWalk<Lanes4<1>>::path(true);
 }
 
 } // namespace wb::rt

@@ -1,8 +1,9 @@
 // The wide BVH's walk, templated on the SIMD lanes of its node test: bvh_wide.cpp
 // compiles it with SSE2 for 4-wide nodes (the portable baseline), bvh_wide_avx2.cpp
 // with AVX2 for 4- and 8-wide nodes (chosen at run time). Every function here is a
-// member of Bvh::WideWalk<Lanes>, and each file's Lanes live in a namespace of their own,
-// so no function compiled for AVX2 can stand in for an SSE2 one at link time. Include
+// member of Bvh::WideWalk<Lanes>, and each file's Lanes are types of their own (Lanes4<0>,
+// Lanes4<1>, avx2::L8), so no function compiled for AVX2 can stand in for an SSE2 one at
+// link time. Include
 // it after bvh_wide_kinds.h, bvh_internal.h and the headers below (bvh_wide_avx2.cpp
 // includes them before it turns AVX2 on).
 //
@@ -43,6 +44,22 @@
 
 namespace wb::rt {
 
+// Four lanes: SSE2 in bvh_wide.cpp, the same code VEX-encoded in bvh_wide_avx2.cpp; the
+// tag (0 and 1) keeps each file's instantiations its own.
+template <int Tag> struct Lanes4 {
+    static constexpr int W = 4;
+    using V = __m128;
+    static V set1(float x) { return _mm_set1_ps(x); }
+    static V load(const float* p) { return _mm_load_ps(p); }
+    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static V min(V a, V b) { return _mm_min_ps(a, b); }
+    static V max(V a, V b) { return _mm_max_ps(a, b); }
+    static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
+    static void store(float* p, V v) { _mm_store_ps(p, v); }
+    static __m128 low(V v) { return v; }
+};
+
 template <class L> struct Bvh::WideWalk {
     static constexpr int W = L::W;
     using V = typename L::V;
@@ -53,12 +70,12 @@ template <class L> struct Bvh::WideWalk {
     // Per-ray data.
     struct RayData {
         std::size_t nearOff[3], farOff[3]; // byte offsets of the near and far planes in a Node
-        V on[3], of[3];                    // origin moved by ∓eps for near and ±eps for far planes
-        V inv[3], invFar[3];               // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
-        V tMin;                            // lowered tMin
-        bool useFloat = false;             // boxes tested in float (else in double)
-        bool unitD = false; // unit direction (and useFloat): the float sphere test applies
-        int neg[3] = {0, 0, 0};            // direction sign per axis
+        V on[3], of[3];         // origin moved by ∓eps for near and ±eps for far planes
+        V inv[3], invFar[3];    // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
+        V tMin;                 // lowered tMin
+        bool useFloat = false;  // boxes tested in float (else in double)
+        bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
+        int neg[3] = {0, 0, 0}; // direction sign per axis
         glm::dvec3 o{0.0}, d{0.0}, invd{0.0}; // the ray in double (invd: double walk only)
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
@@ -137,8 +154,8 @@ template <class L> struct Bvh::WideWalk {
                     const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, r.fd[0]));
                     const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, r.fd[1]));
                     const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, r.fd[2]));
-                    const __m128 ll = _mm_add_ps(
-                        _mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)), _mm_mul_ps(lz, lz));
+                    const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
+                                                 _mm_mul_ps(lz, lz));
                     const __m128 rm = _mm_add_ps(_mm_loadu_ps(&b.sr_[i]),
                                                  _mm_add_ps(r.om, _mm_loadu_ps(&b.sm_[i])));
                     // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
@@ -162,16 +179,13 @@ template <class L> struct Bvh::WideWalk {
                         px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
                         py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
                     }
-                    const __m128 u =
-                        _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
-                    const __m128 v =
-                        _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
-                    const __m128 w =
-                        _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
+                    const __m128 u = _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
+                    const __m128 v = _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
+                    const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
                     __m128 q = _mm_setzero_ps();
                     for (int j = 0; j < 3; ++j)
-                        q = _mm_add_ps(q, _mm_add_ps(_mm_and_ps(px[j], absMask),
-                                                     _mm_and_ps(py[j], absMask)));
+                        q = _mm_add_ps(
+                            q, _mm_add_ps(_mm_and_ps(px[j], absMask), _mm_and_ps(py[j], absMask)));
                     // δ = (|v|₁ + |o|₁ + Σ|v − o|₁)·2^-19 (sums over the three vertices) is
                     // at most (2·Σ|v|₁ + 4·|o|₁)·2^-19 = tm_ + tom; e = 2δ(Q + 2δ) + Q²·2^-20.
                     const __m128 delta = _mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom);
@@ -192,12 +206,10 @@ template <class L> struct Bvh::WideWalk {
                     for (int a = 0; a < 3; ++a) {
                         const __m128 nearP = _mm_loadu_ps(&b.ob_[r.neg[a] ? 3 + a : a][i]);
                         const __m128 farP = _mm_loadu_ps(&b.ob_[r.neg[a] ? a : 3 + a][i]);
-                        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearP, L::low(r.on[a])),
-                                                   L::low(r.inv[a])),
-                                        t0);
-                        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(farP, L::low(r.of[a])),
-                                                   L::low(r.invFar[a])),
-                                        t1);
+                        t0 = _mm_max_ps(
+                            _mm_mul_ps(_mm_sub_ps(nearP, L::low(r.on[a])), L::low(r.inv[a])), t0);
+                        t1 = _mm_min_ps(
+                            _mm_mul_ps(_mm_sub_ps(farP, L::low(r.of[a])), L::low(r.invFar[a])), t1);
                     }
                     mask = _mm_movemask_ps(_mm_cmple_ps(t0, t1));
                 }
@@ -213,8 +225,8 @@ template <class L> struct Bvh::WideWalk {
         return true;
     }
 
-    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin, tMax] may
-    // meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
+    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
+    // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
     // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
     template <bool kAnyHit, class Leaf>
     static void walk(const Bvh& b, const Ray& ray, double tMin, double& tMax, Leaf&& leaf) {
@@ -248,9 +260,9 @@ template <class L> struct Bvh::WideWalk {
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
         auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
             const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-            return _mm_movemask_pd(_mm_or_pd(
-                _mm_cmpeq_pd(av, _mm_setzero_pd()),
-                _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
         };
         const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
         constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
@@ -428,7 +440,7 @@ template <class L> struct Bvh::WideWalk {
         if (kind == bvh_detail::kTriangle) {
             const auto& t = static_cast<const Triangle&>(p);
             return r && r->triReady ? t.intersectSheared(ray, r->sh, tMin, tMax, hit)
-                              : t.Triangle::intersect(ray, tMin, tMax, hit);
+                                    : t.Triangle::intersect(ray, tMin, tMax, hit);
         }
         return p.intersect(ray, tMin, tMax, hit);
     }

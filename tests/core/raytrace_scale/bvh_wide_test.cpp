@@ -26,9 +26,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
-#include <string>
 #include <random>
 #include <set>
+#include <string>
 
 using namespace wb::rt;
 
@@ -154,8 +154,8 @@ bool compareRayOn(const Refs& r, const Bvh& wide, const Ray& ray, double tMin, d
 
 // Rays aimed at corners, along edges and from faces of the wide nodes' child boxes.
 template <class Node>
-int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt19937_64& g,
-                      int count, double scale) {
+int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt19937_64& g, int count,
+                      double scale) {
     REQUIRE_FALSE(nodes.empty());
     constexpr int kW = int(sizeof(Node::count) / sizeof(Node::count[0]));
     int hits = 0;
@@ -280,7 +280,8 @@ TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is an error",
         int width;
         bool avx2;
     };
-    for (const Case& c : {Case{"sse4", 4, false}, Case{"avx4", 4, avx2}, Case{"avx8", avx2 ? 8 : 4, avx2}}) {
+    for (const Case& c :
+         {Case{"sse4", 4, false}, Case{"avx4", 4, avx2}, Case{"avx8", avx2 ? 8 : 4, avx2}}) {
         INFO(c.value);
         setenv("WB_BVH_PATH", c.value, 1);
         Bvh b(s.primitives);

@@ -134,9 +134,9 @@ class Bvh : public Aggregate {
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     // Wide trees only:
-    const WidePath* path_ = nullptr; // the SIMD path and width traversed
-    std::vector<WideNode> wnodes_;   // width 4
-    std::vector<WideNode8> wnodes8_; // width 8
+    const WidePath* path_ = nullptr;            // the SIMD path and width traversed
+    std::vector<WideNode> wnodes_;              // width 4
+    std::vector<WideNode8> wnodes8_;            // width 8
     std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
