@@ -231,22 +231,4 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     }
 }
 
-bool Bvh::intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-    return path_->intersect(*this, ray, tMin, tMax, hit);
-}
-
-void Bvh::forEachHitWide(const Ray& ray, double tMin, double tMax,
-                         const std::function<bool(const Hit&)>& visit) const {
-    path_->forEachHit(*this, ray, tMin, tMax, visit);
-}
-
-void Bvh::forEachBlockerWide(const Ray& ray, double tMin, double tMax,
-                             const std::function<bool(const Primitive&)>& visit) const {
-    path_->forEachBlocker(*this, ray, tMin, tMax, visit);
-}
-
-bool Bvh::occludedWide(const Ray& ray, double tMin, double tMax) const {
-    return path_->occluded(*this, ray, tMin, tMax);
-}
-
 } // namespace wb::rt

@@ -1,12 +1,11 @@
 #pragma once
 // What the wide BVH's collapse (bvh_wide.cpp) and its walks (bvh_wide_impl.h, one per
-// instruction set) share: the primitive kinds of the leaves, their margins, and the
-// table of one SIMD path's entry points. Included before any code compiled for AVX2,
-// so these inline definitions are plain x86-64 code in every translation unit.
+// instruction set) share: the primitive kinds of the leaves and their margins. Included
+// before any code compiled for AVX2, so these inline definitions are plain x86-64 code
+// in every translation unit.
 #include "core/raytrace/bvh.h"
 
 #include <cstdint>
-#include <functional>
 
 namespace wb::rt {
 
@@ -34,17 +33,5 @@ inline std::uint8_t runOf(std::uint8_t kind) {
                : (kind == kTriangle || kind == kSmoothTriangle ? kRunTriangle : kRunOther);
 }
 } // namespace bvh_detail
-
-// One SIMD path and width of the wide walk: what Bvh's queries call.
-struct Bvh::WidePath {
-    int width; // 4 or 8 children per node
-    bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
-    bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
-    bool (*occluded)(const Bvh&, const Ray&, double, double);
-    void (*forEachHit)(const Bvh&, const Ray&, double, double,
-                       const std::function<bool(const Hit&)>&);
-    void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
-                           const std::function<bool(const Primitive&)>&);
-};
 
 } // namespace wb::rt

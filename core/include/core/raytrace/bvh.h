@@ -16,6 +16,7 @@
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -112,19 +113,38 @@ class Bvh : public Aggregate {
     // Wide trees: the collapse (bvh_wide.cpp), the walk templated on the SIMD lanes
     // (bvh_wide_impl.h, compiled for SSE2 in bvh_wide.cpp and for AVX2 in
     // bvh_wide_avx2.cpp), entered through the path chosen at build time.
-    struct WidePath; // the entry points of one SIMD path and width
+    // The entry points of one SIMD path and width (bvh_wide_impl.h fills them in).
+    struct WidePath {
+        int width; // 4 or 8 children per node
+        bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
+        bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
+        bool (*occluded)(const Bvh&, const Ray&, double, double);
+        void (*forEachHit)(const Bvh&, const Ray&, double, double,
+                           const std::function<bool(const Hit&)>&);
+        void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
+                               const std::function<bool(const Primitive&)>&);
+    };
     template <class Lanes> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
     static const WidePath* avx2Path(int width); // bvh_wide_avx2.cpp: width 4 or 8
     void collapseWide(const void* buildNodes, std::size_t count);
     template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
-    bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const;
+    // Inline: one indirect call from the query to the walk (a cheap ray's cost counts).
+    bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+        return path_->intersect(*this, ray, tMin, tMax, hit);
+    }
     void forEachHitWide(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Hit&)>& visit) const;
+                        const std::function<bool(const Hit&)>& visit) const {
+        path_->forEachHit(*this, ray, tMin, tMax, visit);
+    }
     void forEachBlockerWide(const Ray& ray, double tMin, double tMax,
-                            const std::function<bool(const Primitive&)>& visit) const;
-    bool occludedWide(const Ray& ray, double tMin, double tMax) const;
+                            const std::function<bool(const Primitive&)>& visit) const {
+        path_->forEachBlocker(*this, ray, tMin, tMax, visit);
+    }
+    bool occludedWide(const Ray& ray, double tMin, double tMax) const {
+        return path_->occluded(*this, ray, tMin, tMax);
+    }
 
     BvhOptions options_;
     std::vector<Node> nodes_;
