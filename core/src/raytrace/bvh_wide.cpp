@@ -30,6 +30,9 @@
 #include <string>
 #include <typeinfo>
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 namespace wb::rt {
 
 using namespace bvh_detail;
@@ -126,20 +129,42 @@ void Bvh::sortLeaf(std::uint32_t first, std::uint32_t cnt) {
     }
 }
 
-template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
+template <int W>
+void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
     const auto* build = static_cast<const BuildNode*>(buildNodes);
     auto area = [&](std::size_t i) {
         const glm::dvec3 e = build[i].hi - build[i].lo;
         return e.x * e.y + e.y * e.z + e.z * e.x;
     };
-    // Depth first, so a node's first inner child tends to follow it in memory.
-    auto collapse = [&](auto&& self, std::size_t bi) -> std::uint32_t {
-        const auto idx = std::uint32_t(out.size());
-        out.emplace_back();
+    // Build nodes in the subtree of i (depth first: it ends where its right spine's leaf does).
+    auto subtreeSize = [&](std::size_t i) {
+        std::size_t j = i;
+        while (build[j].count == 0)
+            j = build[j].offset;
+        return j + 1 - i;
+    };
+    // 1. The top: subtrees of more than kTaskNodes build nodes are opened here; smaller
+    //    ones become tasks, their wide child index a placeholder.
+    // 2. The tasks, in parallel, each into its own array (indices local to it).
+    // 3. Their arrays appended in task order, the placeholders and the tasks' inner links
+    //    made global. The layout depends on the tree only, not on the threads (tested).
+    constexpr std::size_t kTaskNodes = 4096;
+    struct Task {
+        std::size_t buildIndex;          // root of the subtree
+        std::vector<WideNodeT<W>> nodes; // its wide nodes, root first
+        std::uint32_t owner, slot;       // the top node and child slot pointing at it
+    };
+    std::vector<Task> tasks;
+    // Collapses the subtree at bi into `into` depth first (a node's first inner child
+    // tends to follow it in memory); with `top`, small inner subtrees become tasks.
+    auto collapse = [&](auto&& self, std::vector<WideNodeT<W>>& into, std::size_t bi,
+                        bool top) -> std::uint32_t {
+        const auto idx = std::uint32_t(into.size());
+        into.emplace_back();
         std::array<std::size_t, W> kids{};
+        std::array<double, W> areas{}; // inner children's areas; −1 for leaves
         kids[0] = bi + 1;
         kids[1] = build[bi].offset;
-        std::array<double, W> areas{};
         areas[0] = build[kids[0]].count == 0 ? area(kids[0]) : -1;
         areas[1] = build[kids[1]].count == 0 ? area(kids[1]) : -1;
         int nk = 2;
@@ -168,7 +193,8 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
                 w.hi[a][c] = -std::numeric_limits<float>::infinity();
             }
         for (int c = 0; c < nk; ++c) {
-            const BuildNode& k = build[kids[size_t(c)]];
+            const std::size_t kb = kids[size_t(c)];
+            const BuildNode& k = build[kb];
             for (int a = 0; a < 3; ++a) { // exact: the build's boxes are floats
                 w.lo[a][c] = float(k.lo[a]);
                 w.hi[a][c] = float(k.hi[a]);
@@ -177,14 +203,47 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
                 w.child[c] = k.offset;
                 w.count[c] = k.count;
                 sortLeaf(k.offset, k.count);
+            } else if (top && subtreeSize(kb) <= kTaskNodes) {
+                w.child[c] = 0; // the task's array, appended below
+                tasks.push_back({kb, {}, idx, std::uint32_t(c)});
             } else {
-                w.child[c] = self(self, kids[size_t(c)]);
+                w.child[c] = self(self, into, kb, top);
             }
         }
-        out[idx] = w;
+        into[idx] = w;
         return idx;
     };
-    collapse(collapse, 0);
+    collapse(collapse, out, 0, true);
+    auto runTask = [&](std::size_t t) {
+        tasks[t].nodes.reserve(subtreeSize(tasks[t].buildIndex) / 2);
+        collapse(collapse, tasks[t].nodes, tasks[t].buildIndex, false);
+    };
+    if (options_.buildThreads == 1 || tasks.size() < 2) {
+        for (std::size_t t = 0; t < tasks.size(); ++t)
+            runTask(t);
+    } else {
+        auto run = [&] {
+            tbb::parallel_for(std::size_t(0), tasks.size(), [&](std::size_t t) { runTask(t); });
+        };
+        if (options_.buildThreads > 1)
+            tbb::task_arena(options_.buildThreads).execute(run);
+        else
+            run();
+    }
+    std::size_t total = out.size();
+    for (const Task& t : tasks)
+        total += t.nodes.size();
+    out.reserve(total);
+    for (Task& t : tasks) {
+        const auto base = std::uint32_t(out.size());
+        out[t.owner].child[t.slot] = base;
+        for (WideNodeT<W>& w : t.nodes) {
+            for (int c = 0; c < W; ++c)
+                if (w.count[c] == 0 && w.lo[0][c] <= w.hi[0][c]) w.child[c] += base; // inner
+            out.push_back(w);
+        }
+        std::vector<WideNodeT<W>>().swap(t.nodes);
+    }
 }
 
 void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
@@ -199,12 +258,6 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     const std::size_t n = order_.size();
     kind_.assign(n, kOther);
     run_.assign(n, 0);
-    for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_, &tm_})
-        v->assign(n + 4, 0.0f);
-    for (auto& v : tv_)
-        v.assign(n + 4, 0.0f);
-    for (auto& v : ob_)
-        v.assign(n + 4, 0.0f);
     auto kindOf = [](const Primitive* p) {
         if (typeid(*p) == typeid(Sphere)) return kSphere;
         if (typeid(*p) == typeid(Triangle)) return kTriangle;
@@ -212,8 +265,24 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             return kSmoothTriangle; // the triangle's hit test
         return kOther;
     };
-    for (std::size_t i = 0; i < n; ++i)
+    bool has[3] = {false, false, false}; // per run kind
+    for (std::size_t i = 0; i < n; ++i) {
         kind_[i] = kindOf(order_[i]);
+        has[runOf(kind_[i])] = true;
+    }
+    // The float arrays of the kinds present only (a leaf test reads its own kind's):
+    // the collapse writes less memory for a scene of one kind.
+    if (has[kRunSphere])
+        for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
+            v->assign(n + 4, 0.0f);
+    if (has[kRunTriangle]) {
+        tm_.assign(n + 4, 0.0f);
+        for (auto& v : tv_)
+            v.assign(n + 4, 0.0f);
+    }
+    if (has[kRunOther])
+        for (auto& v : ob_)
+            v.assign(n + 4, 0.0f);
     if (count == 0) return;
     if (count == 1) { // the whole tree is one leaf (rootLeafCount_)
         sortLeaf(0, build[0].count);
@@ -221,11 +290,11 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         return;
     }
     if (pc.width == 8) {
-        wnodes8_.reserve(count / 7 + 1); // a wide node replaces up to 7 inner binary nodes
+        wnodes8_.reserve(std::min<std::size_t>(count / 7 + 1, 4096)); // the top; tasks append
         collapseInto<8>(buildNodes, wnodes8_);
         stats_.wideNodes = int(wnodes8_.size());
     } else {
-        wnodes_.reserve(count / 3 + 1); // up to 3
+        wnodes_.reserve(std::min<std::size_t>(count / 3 + 1, 4096));
         collapseInto<4>(buildNodes, wnodes_);
         stats_.wideNodes = int(wnodes_.size());
     }
