@@ -69,14 +69,14 @@ template <class L> struct Bvh::WideWalk {
 
     // Per-ray data.
     struct RayData {
-        std::size_t nearOff[3], farOff[3]; // byte offsets of the near and far planes in a Node
+        const std::size_t* off; // byte offsets in a Node: near planes x, y, z, far planes x, y, z
         V on[3], of[3];         // origin moved by ∓eps for near and ±eps for far planes
         V inv[3], invFar[3];    // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
         V tMin;                 // lowered tMin
         bool useFloat = false;  // boxes tested in float (else in double)
         bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
-        int neg[3] = {0, 0, 0}; // direction sign per axis
-        glm::dvec3 o{0.0}, d{0.0}, invd{0.0}; // the ray in double (invd: double walk only)
+        int neg[3];             // direction sign per axis
+        glm::dvec3 o, d, invd;  // the ray in double (invd: double walk only)
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
         __m128 fo[3], fd[3], om;
@@ -84,7 +84,7 @@ template <class L> struct Bvh::WideWalk {
         // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
         bool triReady = false;
         TriangleShear sh;     // in double: the exact tests of plain triangles reuse it
-        int k[3] = {0, 1, 2}; // sh's axes
+        int k[3];             // sh's axes
         __m128 to[3], shx, shy, tom;
 
         void sphereSetup() {
@@ -114,6 +114,24 @@ template <class L> struct Bvh::WideWalk {
             triReady = true;
         }
     };
+
+    // RayData::off for each sign pattern of the direction (bit a: d[a] < 0).
+    struct Offsets {
+        std::size_t v[8][6];
+    };
+    static constexpr Offsets makeOffsets() {
+        Offsets t{};
+        constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
+        for (int signs = 0; signs < 8; ++signs)
+            for (int a = 0; a < 3; ++a) {
+                const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float);
+                const bool neg = (signs >> a) & 1;
+                t.v[signs][a] = lo + (neg ? kHiMinusLo : 0);
+                t.v[signs][3 + a] = lo + (neg ? 0 : kHiMinusLo);
+            }
+        return t;
+    }
+    static constexpr Offsets kOffsets = makeOffsets();
 
     static const std::vector<Node>& nodesOf(const Bvh& b) {
         if constexpr (W == 4)
@@ -265,30 +283,30 @@ template <class L> struct Bvh::WideWalk {
                                                         _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
         };
         const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
-        constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
-        for (int a = 0; a < 3; ++a) {
+        r.off = kOffsets.v[signs];
+        for (int a = 0; a < 3; ++a)
             r.neg[a] = (signs >> a) & 1;
-            const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float);
-            r.nearOff[a] = lo + (r.neg[a] ? kHiMinusLo : 0);
-            r.farOff[a] = lo + (r.neg[a] ? 0 : kHiMinusLo);
-        }
         r.useFloat = ok;
         r.o = o;
         r.d = d;
         if (ok) {
-            // 1/d in float, all three in one division (a zero component gives ±inf, the
-            // slab then no limit, as in double); see kInvFarScale for the roundings.
+            // In four float lanes (x, y, z, unused): 1/d in one division (a zero component
+            // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the
+            // roundings), the origin widened by eps with the direction's signs.
             const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+            const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                            _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
             const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-            alignas(16) float inv[4], invFar[4];
+            const __m128 sgnEps = _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f),
+                                             _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            alignas(16) float inv[4], invFar[4], on[4], of[4];
             _mm_store_ps(inv, finv);
             _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(kInvFarScaleF)));
-            const float eps = float(om) * 0x1p-21f;
+            _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+            _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
             for (int a = 0; a < 3; ++a) {
-                const float fo = float(o[a]);
-                const float s = r.neg[a] ? -eps : eps;
-                r.on[a] = L::set1(fo + s);
-                r.of[a] = L::set1(fo - s);
+                r.on[a] = L::set1(on[a]);
+                r.of[a] = L::set1(of[a]);
                 r.inv[a] = L::set1(inv[a]);
                 r.invFar[a] = L::set1(invFar[a]);
             }
@@ -324,8 +342,8 @@ template <class L> struct Bvh::WideWalk {
                 const char* base = reinterpret_cast<const char*>(&nd);
                 V t0 = r.tMin, t1 = L::set1(flim);
                 for (int a = 0; a < 3; ++a) {
-                    const V nearP = L::load(reinterpret_cast<const float*>(base + r.nearOff[a]));
-                    const V farP = L::load(reinterpret_cast<const float*>(base + r.farOff[a]));
+                    const V nearP = L::load(reinterpret_cast<const float*>(base + r.off[a]));
+                    const V farP = L::load(reinterpret_cast<const float*>(base + r.off[3 + a]));
                     // max/min return the second operand for NaN (0·inf: a ray in the slab's
                     // plane): that slab is no limit.
                     t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);

@@ -13,8 +13,8 @@ namespace wb::rt {
 // every call; a caller that tests many triangles with one ray (the BVH) computes it once
 // and passes it to intersectSheared, which then gives the same bits.
 struct TriangleShear {
-    int kx = 0, ky = 1, kz = 2;
-    double sx = 0, sy = 0, sz = 0; // d[kx]/d[kz], d[ky]/d[kz], 1/d[kz]
+    int kx, ky, kz;    // set by triangleShear (no defaults: the BVH keeps one per ray unset
+    double sx, sy, sz; // until its first triangle); d[kx]/d[kz], d[ky]/d[kz], 1/d[kz]
 };
 TriangleShear triangleShear(const glm::dvec3& direction);
 
