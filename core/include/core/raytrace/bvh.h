@@ -5,14 +5,16 @@
 // hold their children's boxes in float, structure of arrays, so one SIMD operation
 // tests a slab of all of them: 8 children with AVX2 where the CPU has it (chosen at run
 // time), 4 with SSE2 (the portable baseline); width 2 keeps the binary tree of double
-// boxes (the reference the tests compare against). Traversal is front to back (nearest
-// child first) and stops at tMax = nearest hit so far; forEachHit stops as soon as the
-// visitor returns false, which is the any-hit early exit of shadow feelers. Leaves keep
-// their spheres side by side (float centres and radii) and reject four at a time with a
-// conservative float test; every candidate is decided by the primitive's own exact
-// double code, so hits are bit for bit those of the plain loop (on equal t the
-// primitive later in the scene wins, as in the plain loop). Unbounded primitives
-// (infinite planes, uncut quadrics) are kept outside the tree and tested for every ray.
+// boxes (the reference the tests compare against). The nearest hit is found front to
+// back (nearest child first, stopping at tMax = nearest hit so far); occluded,
+// forEachHit and forEachBlocker walk in any order and stop as soon as the visitor says
+// so (the any-hit early exit of shadow feelers). Leaves keep runs of one kind side by
+// side in float — spheres (centres, radii), triangles (vertices), the other kinds
+// (their boxes) — and reject four at a time with conservative float tests; every
+// candidate is decided by the primitive's own exact double code, so hits are bit for
+// bit those of the plain loop (on equal t the primitive later in the scene wins, as in
+// the plain loop). Unbounded primitives (infinite planes, uncut quadrics) are kept
+// outside the tree and tested for every ray.
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
