@@ -83,8 +83,8 @@ template <class L> struct Bvh::WideWalk {
         // Triangle test (set up at the first triangle run): the watertight shear (kz the
         // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
         bool triReady = false;
-        TriangleShear sh;     // in double: the exact tests of plain triangles reuse it
-        int k[3];             // sh's axes
+        TriangleShear sh; // in double: the exact tests of plain triangles reuse it
+        int k[3];         // sh's axes
         __m128 to[3], shx, shy, tom;
 
         void sphereSetup() {
@@ -144,8 +144,11 @@ template <class L> struct Bvh::WideWalk {
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
     template <class Visit>
-    static bool visitLeaf(const Bvh& b, RayData& r, std::uint32_t first, std::uint32_t count,
-                          float limit, Visit&& visit) {
+    // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
+    // no change with SSE2 (driver, alternated medians).
+    __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
+                                                         std::uint32_t first, std::uint32_t count,
+                                                         float limit, Visit&& visit) {
         using namespace bvh_detail;
         const std::uint32_t end = first + count;
         for (std::uint32_t run = first; run < end;) {
@@ -297,8 +300,8 @@ template <class L> struct Bvh::WideWalk {
             const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
                                             _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
             const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-            const __m128 sgnEps = _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f),
-                                             _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            const __m128 sgnEps =
+                _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
             alignas(16) float inv[4], invFar[4], on[4], of[4];
             _mm_store_ps(inv, finv);
             _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(kInvFarScaleF)));
