@@ -1,11 +1,11 @@
+#pragma once
 // The wide BVH's walk, templated on the SIMD lanes of its node test: bvh_wide.cpp
 // compiles it with SSE2 for 4-wide nodes (the portable baseline), bvh_wide_avx2.cpp
 // with AVX2 for 4- and 8-wide nodes (chosen at run time). Every function here is a
 // member of Bvh::WideWalk<Lanes>, and each file's Lanes are types of their own (Lanes4<0>,
 // Lanes4<1>, avx2::L8), so no function compiled for AVX2 can stand in for an SSE2 one at
-// link time. Include
-// it after bvh_wide_kinds.h, bvh_internal.h and the headers below (bvh_wide_avx2.cpp
-// includes them before it turns AVX2 on).
+// link time. bvh_wide_avx2.cpp includes everything this file includes before it turns
+// AVX2 on, so only the code below is compiled for AVX2 there.
 //
 // Lanes: W (4 or 8), V (the register), set1, load (aligned), sub, mul, min, max (NaN in
 // either operand gives the second), le (a movemask of a <= b, false for NaN), store, and
