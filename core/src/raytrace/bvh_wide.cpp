@@ -129,8 +129,7 @@ void Bvh::sortLeaf(std::uint32_t first, std::uint32_t cnt) {
     }
 }
 
-template <int W>
-void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
+template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
     const auto* build = static_cast<const BuildNode*>(buildNodes);
     auto area = [&](std::size_t i) {
         const glm::dvec3 e = build[i].hi - build[i].lo;
@@ -213,7 +212,8 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out) {
         into[idx] = w;
         return idx;
     };
-    collapse(collapse, out, 0, true);
+    // Small trees in one go: tasks would cost more than they share out.
+    collapse(collapse, out, 0, subtreeSize(0) > 2 * kTaskNodes);
     auto runTask = [&](std::size_t t) {
         tasks[t].nodes.reserve(subtreeSize(tasks[t].buildIndex) / 2);
         collapse(collapse, tasks[t].nodes, tasks[t].buildIndex, false);
