@@ -19,7 +19,8 @@ target_sources(core PRIVATE
   src/raytrace/tracer.cpp
   src/raytrace/triangle.cpp
 )
-target_sources(core PRIVATE src/raytrace/bvh.cpp src/raytrace/bvh_wide.cpp) # issues 6, 13: BVH
+target_sources(core PRIVATE src/raytrace/bvh.cpp src/raytrace/bvh_wide.cpp
+                            src/raytrace/bvh_wide_avx2.cpp) # issues 6, 13: BVH
 # issue 6 (engineer F): scene files (NFF, OBJ via tinyobjloader), SPD generators, parallel render.
 find_package(tinyobjloader REQUIRED)
 target_sources(core PRIVATE

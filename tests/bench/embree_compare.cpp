@@ -15,9 +15,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -191,6 +193,25 @@ struct EmbreeScene {
     }
 };
 
+struct PathSpec {
+    const char* name;
+    int width;
+    BvhSimd simd;
+};
+
+// The wide BVH's SIMD paths this CPU can run.
+const std::vector<PathSpec>& pathSpecs() {
+    static const std::vector<PathSpec> specs = [] {
+        std::vector<PathSpec> v{{"SSE2 4-wide", 4, BvhSimd::Sse2}};
+        if (__builtin_cpu_supports("avx2")) {
+            v.push_back({"AVX2 4-wide", 4, BvhSimd::Avx2});
+            v.push_back({"AVX2 8-wide", 8, BvhSimd::Avx2});
+        }
+        return v;
+    }();
+    return specs;
+}
+
 struct Segment {
     Ray ray;
     double tMin, tMax;
@@ -207,7 +228,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "hit. "
           "Embree: spheres as RTC_GEOMETRY_TYPE_SPHERE_POINT, triangles native, cones/cylinders as "
           "user geometry calling our exact double intersection; Embree traverses in float. Ours: "
-          "the 4-wide float BVH with exact double primitive tests (Bvh::intersect / "
+          "the wide float BVH with exact double primitive tests (Bvh::intersect / "
           "Bvh::occluded); 'binary' is the binary double-box tree of before (BvhOptions::width 2) "
           "on the same rays. CPU time of the one thread; median of "
        << runs << " passes, ours and Embree's alternated.\n\n"
@@ -218,10 +239,34 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "Embree |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     const std::vector<BenchScene> items = benchScenes(meshPath);
+    std::ostringstream pathRows; // the SIMD paths' table
+    std::string defaultPath;
+    // WB_EMBREE_SCENES="balls 4,mesh": only the scenes whose names contain one of the
+    // comma-separated parts (while tuning or profiling).
+    const char* only = std::getenv("WB_EMBREE_SCENES");
+    auto selected = [&](const std::string& name) {
+        if (!only || !*only) return true;
+        std::stringstream parts(only);
+        std::string part;
+        while (std::getline(parts, part, ','))
+            if (!part.empty() && name.find(part) != std::string::npos) return true;
+        return false;
+    };
     for (const BenchScene& it : items) {
+        if (!selected(it.name)) continue;
         std::fprintf(stderr, "embree: %s\n", it.name.c_str());
         SceneFile sf = it.make();
-        Bvh bvh(sf.scene->primitives);
+        Bvh bvh(sf.scene->primitives); // the default path
+        defaultPath = std::string(bvh.stats().avx2 ? "AVX2 " : "SSE2 ") +
+                      std::to_string(bvh.stats().width) + "-wide";
+        // Every SIMD path this CPU has, forced: SSE2 4-wide, AVX2 4- and 8-wide.
+        std::vector<std::unique_ptr<Bvh>> paths;
+        for (const PathSpec& ps : pathSpecs()) {
+            BvhOptions po;
+            po.width = ps.width;
+            po.simd = ps.simd;
+            paths.push_back(std::make_unique<Bvh>(sf.scene->primitives, po));
+        }
         BvhOptions binOpt;
         binOpt.width = 2;
         Bvh bin(sf.scene->primitives, binOpt);
@@ -267,7 +312,6 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                     occ += b.occluded(s.ray, s.tMin, s.tMax);
             };
         };
-        if (binOcc != ourOcc) std::fprintf(stderr, "binary and wide BVH disagree on occlusion\n");
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         long long emHits = 0;
@@ -316,10 +360,23 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                 emOcc += r.tfar < 0;
             }
         };
-        const std::vector<double> tEye =
-            timeAlternated(runs, {eyePass(bvh), eyePass(bin), emEyePass});
-        const std::vector<double> tShadow =
-            timeAlternated(runs, {shadowPass(bvh, ourOcc), shadowPass(bin, binOcc), emShadowPass});
+        // Ours (default), binary, Embree, then the forced paths: alternated pass by pass.
+        std::vector<std::function<void()>> eyeFs{eyePass(bvh), eyePass(bin), emEyePass};
+        std::vector<long long> pathOcc(paths.size(), 0);
+        std::vector<std::function<void()>> shadowFs{shadowPass(bvh, ourOcc),
+                                                    shadowPass(bin, binOcc), emShadowPass};
+        for (std::size_t k = 0; k < paths.size(); ++k) {
+            eyeFs.push_back(eyePass(*paths[k]));
+            shadowFs.push_back(shadowPass(*paths[k], pathOcc[k]));
+        }
+        const std::vector<double> tEye = timeAlternated(runs, eyeFs);
+        const std::vector<double> tShadow = timeAlternated(runs, shadowFs);
+        for (long long occ : pathOcc)
+            if (occ != ourOcc)
+                std::fprintf(stderr, "%s: the SIMD paths disagree on occlusion\n", it.name.c_str());
+        if (binOcc != ourOcc)
+            std::fprintf(stderr, "%s: binary and wide BVH disagree on occlusion\n",
+                         it.name.c_str());
         const double ourEye = tEye[0], binEye = tEye[1], emEye = tEye[2];
         const double ourShadow = tShadow[0], binShadow = tShadow[1], emShadow = tShadow[2];
         if (sink < 0) std::puts("");
@@ -334,6 +391,22 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             ns / binShadow / 1e6, ns / emShadow / 1e6, emShadow / ourShadow, ourHits, emHits,
             ourOcc, emOcc);
         md << buf;
+        pathRows << "| " << it.name;
+        for (std::size_t k = 0; k < paths.size(); ++k) {
+            std::snprintf(buf, sizeof buf, " | %.2f / %.2f", emEye / tEye[3 + k],
+                          emShadow / tShadow[3 + k]);
+            pathRows << buf;
+        }
+        pathRows << " |\n";
     }
+    md << "\nThe SIMD paths, each forced (BvhOptions::width and simd), in the same alternated "
+          "passes: ours/Embree for eye / shadow rays. The default above is "
+       << defaultPath << ".\n\n| scene";
+    for (const PathSpec& ps : pathSpecs())
+        md << " | " << ps.name;
+    md << " |\n|---";
+    for (std::size_t k = 0; k < pathSpecs().size(); ++k)
+        md << "|---";
+    md << "|\n" << pathRows.str();
     return md.str();
 }

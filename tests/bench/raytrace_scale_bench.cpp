@@ -247,7 +247,7 @@ bool plotWithGnuplot(const std::vector<ErrorRow>& rows, const std::string& dir,
           "     '' every ::1 using ($2==3 ? $3 : 1/0):($2==3 ? $4 : 1/0) with points lc rgb "
           "'dark-green' pt 9 ps 1.5 title 'binary double-box tree', \\\n"
           "     '' every ::1 using ($2==0 ? $3 : 1/0):($2==0 ? $4 : 1/0) with points lc rgb "
-          "'black' pt 7 ps 1.5 title 'reference (4-wide tree)'\n";
+          "'black' pt 7 ps 1.5 title 'reference (default wide tree)'\n";
     gp.close();
     const std::string cmd = "cd '" + dir + "' && gnuplot raytrace.gp";
     return std::system(cmd.c_str()) == 0;
@@ -268,8 +268,9 @@ static std::string buildRateSection(bool quick) {
     std::ostringstream md;
     const int threads = hardwareThreads();
     md << "\n## Binned SAH build rate\n\nWhole BVH construction as Bvh reports it (float boxes, "
-          "binned SAH binary tree, then the collapse into the 4-wide tree with its leaf arrays; "
-          "the collapse is sequential; the width-2 column builds the binary tree of double boxes "
+          "binned SAH binary tree, then the collapse into the default wide tree (8-wide with AVX2, "
+          "else 4) with its leaf arrays, its subtrees collapsed as parallel tasks; the width-2 "
+          "column builds the binary tree of double boxes "
           "alone, so the difference is the collapse). 1 thread: BvhOptions::buildThreads 1, "
           "CPU time; "
        << threads
@@ -570,7 +571,7 @@ int main(int argc, char** argv) {
                     b.shadowRays};
     }
     md << "\n## Speed against error (balls " << (quick ? 2 : 4) << ", all threads)\n\n"
-       << "Reference: depth 5, no weight cut-off (every reflected ray traced), the default 4-wide "
+       << "Reference: depth 5, no weight cut-off (every reflected ray traced), the default wide "
           "float tree with exact primitive tests. "
           "Error = |difference| of 8-bit channels against the reference image.\n\n"
        << "| option | frame ms | max diff | mean diff | reflection rays | shadow rays |\n"

@@ -805,10 +805,11 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
 
     if (options.bins < 2 || options.bins > 256 || options.maxLeafSize < 1 ||
         options.maxLeafSize > 255 || !(options.traversalCost >= 0) ||
-        !(options.intersectionCost > 0) || (options.width != 2 && options.width != 4) ||
+        !(options.intersectionCost > 0) ||
+        (options.width != 0 && options.width != 2 && options.width != 4 && options.width != 8) ||
         options.buildThreads < 0)
         throw std::invalid_argument("Bvh: bins in 2..256, maxLeafSize in 1..255, costs >= 0, "
-                                    "width 2 or 4, buildThreads >= 0");
+                                    "width 0, 2, 4 or 8, buildThreads >= 0");
     const auto start = std::chrono::steady_clock::now();
     const bool parallel = options.buildThreads != 1;
     Nodes build;
@@ -956,7 +957,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     fnodes_[i].count[c] = nodes_[i].count[c];
                 }
     }
-    if (options_.width == 4) {
+    if (options_.width != 2) {
         const auto t0 = std::chrono::steady_clock::now();
         collapseWide(build.data(), build.size());
         stats_.collapseSeconds =
@@ -1118,7 +1119,7 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
 }
 
 bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-    if (options_.width == 4) return intersectWide(ray, tMin, tMax, hit);
+    if (options_.width != 2) return intersectWide(ray, tMin, tMax, hit);
     bool found = false;
     for (const Primitive* p : unbounded_)
         if (p->intersect(ray, tMin, tMax, hit)) {
@@ -1137,7 +1138,7 @@ bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
 
 void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
                      const std::function<bool(const Hit&)>& visit) const {
-    if (options_.width == 4) {
+    if (options_.width != 2) {
         forEachHitWide(ray, tMin, tMax, visit);
         return;
     }
@@ -1151,7 +1152,7 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
 
 void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
                          const std::function<bool(const Primitive&)>& visit) const {
-    if (options_.width == 4) {
+    if (options_.width != 2) {
         forEachBlockerWide(ray, tMin, tMax, visit);
         return;
     }
@@ -1163,7 +1164,7 @@ void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
 }
 
 bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
-    if (options_.width == 4) return occludedWide(ray, tMin, tMax);
+    if (options_.width != 2) return occludedWide(ray, tMin, tMax);
     for (const Primitive* p : unbounded_)
         if (p->occluded(ray, tMin, tMax)) return true;
     bool any = false;

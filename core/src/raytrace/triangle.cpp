@@ -21,15 +21,30 @@ Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
     normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
 }
 
-bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
-    const glm::dvec3& dir = ray.direction;
+TriangleShear triangleShear(const glm::dvec3& dir) {
     // Woop–Benthin–Wald: kz = dominant axis of the direction; swap kx, ky to keep winding.
     const glm::dvec3 ad = glm::abs(dir);
-    const int kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (dir[kz] < 0) std::swap(kx, ky);
-    const double sx = dir[kx] / dir[kz], sy = dir[ky] / dir[kz], sz = 1.0 / dir[kz];
+    TriangleShear s;
+    s.kz = (ad.x > ad.y) ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    s.kx = (s.kz + 1) % 3;
+    s.ky = (s.kx + 1) % 3;
+    if (dir[s.kz] < 0) std::swap(s.kx, s.ky);
+    s.sx = dir[s.kx] / dir[s.kz];
+    s.sy = dir[s.ky] / dir[s.kz];
+    s.sz = 1.0 / dir[s.kz];
+    return s;
+}
+
+bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    return intersectSheared(ray, triangleShear(ray.direction), tMin, tMax, hit);
+}
+
+bool Triangle::intersectSheared(const Ray& ray, const TriangleShear& shear, double tMin,
+                                double tMax, Hit& hit) const {
+    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    const int kx = shear.kx, ky = shear.ky, kz = shear.kz;
+    const double sx = shear.sx, sy = shear.sy, sz = shear.sz;
 
     const glm::dvec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
     const double ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];

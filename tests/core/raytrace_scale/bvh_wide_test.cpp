@@ -23,9 +23,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <set>
+#include <string>
 
 using namespace wb::rt;
 
@@ -76,17 +79,47 @@ bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+// Every SIMD path of the wide tree this CPU can run, each forced: SSE2 4-wide (the
+// portable baseline), and with AVX2 the 4- and 8-wide AVX2 walks.
+struct WidePaths {
+    std::vector<std::unique_ptr<Bvh>> trees;
+    explicit WidePaths(const std::vector<std::unique_ptr<Primitive>>& prims,
+                       const BvhOptions& base = {}) {
+        const bool avx2 = __builtin_cpu_supports("avx2");
+        for (int k = 0; k < (avx2 ? 3 : 1); ++k) {
+            BvhOptions o = base;
+            o.width = k == 2 ? 8 : 4;
+            o.simd = k == 0 ? BvhSimd::Sse2 : BvhSimd::Avx2;
+            trees.push_back(std::make_unique<Bvh>(prims, o));
+            REQUIRE(trees.back()->stats().width == o.width);
+            REQUIRE(trees.back()->stats().avx2 == (k > 0));
+        }
+    }
+};
+
 struct Refs {
     const BruteForce& brute;
     const Bvh& binary;
-    const Bvh& wide;
+    const WidePaths& paths;
 };
 
-// Returns whether the ray hit something; REQUIREs that all three agree exactly.
+bool compareRayOn(const Refs& r, const Bvh& wide, const Ray& ray, double tMin, double tMax);
+
+// Returns whether the ray hit something; REQUIREs that the plain loop, the binary tree
+// and every path of the wide tree agree exactly.
 bool compareRay(const Refs& r, const Ray& ray, double tMin = 0.0, double tMax = kInf) {
+    bool hit = false;
+    for (const auto& w : r.paths.trees) {
+        INFO("width " << w->stats().width << (w->stats().avx2 ? " AVX2" : " SSE2"));
+        hit = compareRayOn(r, *w, ray, tMin, tMax);
+    }
+    return hit;
+}
+
+bool compareRayOn(const Refs& r, const Bvh& wide, const Ray& ray, double tMin, double tMax) {
     Hit hb, h2, h4;
     const bool fb = r.brute.intersect(ray, tMin, tMax, hb);
-    const bool f4 = r.wide.intersect(ray, tMin, tMax, h4);
+    const bool f4 = wide.intersect(ray, tMin, tMax, h4);
     REQUIRE(f4 == fb);
     if (fb) {
         REQUIRE(h4.primitive == hb.primitive);
@@ -99,34 +132,36 @@ bool compareRay(const Refs& r, const Ray& ray, double tMin = 0.0, double tMax = 
     // The binary tree may pick another primitive on an exact tie; t must agree.
     REQUIRE(r.binary.intersect(ray, tMin, tMax, h2) == fb);
     if (fb) REQUIRE(h2.t == hb.t);
-    REQUIRE(r.wide.occluded(ray, tMin, tMax) == fb);
+    REQUIRE(wide.occluded(ray, tMin, tMax) == fb);
     std::set<const Primitive*> sb, s4, ob, o4;
     r.brute.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return sb.insert(h.primitive), true; });
-    r.wide.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return s4.insert(h.primitive), true; });
+    wide.forEachHit(ray, tMin, tMax, [&](const Hit& h) { return s4.insert(h.primitive), true; });
     REQUIRE(s4 == sb);
     r.brute.forEachBlocker(ray, tMin, tMax,
                            [&](const Primitive& p) { return ob.insert(&p), true; });
-    r.wide.forEachBlocker(ray, tMin, tMax, [&](const Primitive& p) { return o4.insert(&p), true; });
+    wide.forEachBlocker(ray, tMin, tMax, [&](const Primitive& p) { return o4.insert(&p), true; });
     REQUIRE(o4 == ob);
     if (fb) {
         // A segment ending at the nearest hit still meets it; one ending just before does not.
-        REQUIRE(r.wide.occluded(ray, tMin, hb.t));
+        REQUIRE(wide.occluded(ray, tMin, hb.t));
         bool before = false;
         r.brute.forEachBlocker(ray, tMin, std::nextafter(hb.t, 0.0),
                                [&](const Primitive&) { return before = true, false; });
-        REQUIRE(r.wide.occluded(ray, tMin, std::nextafter(hb.t, 0.0)) == before);
+        REQUIRE(wide.occluded(ray, tMin, std::nextafter(hb.t, 0.0)) == before);
     }
     return fb;
 }
 
 // Rays aimed at corners, along edges and from faces of the wide nodes' child boxes.
-int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
-    const auto& nodes = r.wide.wideNodes();
+template <class Node>
+int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt19937_64& g, int count,
+                      double scale) {
     REQUIRE_FALSE(nodes.empty());
+    constexpr int kW = int(sizeof(Node::count) / sizeof(Node::count[0]));
     int hits = 0;
     for (int i = 0; i < count; ++i) {
-        const Bvh::WideNode& nd = nodes[g() % nodes.size()];
-        const int c = int(g() % 4);
+        const Node& nd = nodes[g() % nodes.size()];
+        const int c = int(g() % kW);
         if (nd.lo[0][c] > nd.hi[0][c]) continue; // empty slot
         glm::dvec3 lo, hi, corner;
         for (int a = 0; a < 3; ++a) {
@@ -135,10 +170,15 @@ int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) 
             corner[a] = (g() & 1) ? lo[a] : hi[a];
         }
         Ray ray;
-        switch (i % 4) {
+        switch (i % 5) {
         case 0: // through a corner from anywhere
             ray.origin = rnd3(g, -14 * scale, 14 * scale);
             ray.direction = glm::normalize(corner - ray.origin);
+            break;
+        case 4: // through a corner from the origin 0: no widening of the origin, only the
+                // exit distances' stretch keeps entry <= exit there
+            ray.origin = glm::dvec3(0.0);
+            ray.direction = glm::normalize(corner);
             break;
         case 1: { // along an edge: two zero direction components, in two face planes
             const int a = int(g() % 3);
@@ -173,27 +213,91 @@ int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) 
     return hits;
 }
 
+// The same on the boxes of the 4-wide and of the 8-wide tree (the AVX2 path's).
+int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
+    int hits = adversarialRaysOf(r, r.paths.trees.front()->wideNodes(), g, count, scale);
+    if (r.paths.trees.size() == 3)
+        hits += adversarialRaysOf(r, r.paths.trees.back()->wideNodes8(), g, count, scale);
+    return hits;
+}
+
 } // namespace
 
-TEST_CASE("rt_bvh_wide: the 4-wide tree is the default and collapses the binary tree",
+TEST_CASE("rt_bvh_wide: the wide tree is the default, by CPU, and collapses the binary tree",
           "[raytrace][bvh]") {
     std::mt19937_64 g(3);
     Scene s;
     mixedScene(s, 3000, g, 1.0);
-    Bvh wide(s.primitives);
-    CHECK(wide.options().width == 4);
-    const BvhStats& st = wide.stats();
-    CHECK(st.wideNodes > 0);
-    // Every inner binary node ends up in some wide node; a wide node replaces 1–3 of them.
-    CHECK(st.wideNodes * 3 >= st.nodes - st.leaves);
-    CHECK(st.wideNodes <= st.nodes - st.leaves);
-    CHECK_THROWS_AS(Bvh(s.primitives,
-                        [] {
-                            BvhOptions o;
-                            o.width = 8;
-                            return o;
-                        }()),
-                    std::invalid_argument);
+    const char* env = std::getenv("WB_BVH_PATH");
+    const bool avx2 = __builtin_cpu_supports("avx2");
+    if (!env) { // the automatic choice (ctest may force a path through the variable)
+        Bvh wide(s.primitives);
+        CHECK(wide.stats().avx2 == avx2);
+        CHECK(wide.stats().width == (avx2 ? 8 : 4));
+        CHECK(wide.options().width == wide.stats().width);
+    }
+    for (int width : {4, 8}) {
+        INFO("width " << width);
+        BvhOptions o;
+        o.width = width;
+        o.simd = BvhSimd::Avx2;
+        Bvh wide(s.primitives, o);
+        const BvhStats& st = wide.stats();
+        CHECK(st.wideNodes > 0);
+        // Every inner binary node ends up in some wide node; a wide node replaces 1 to
+        // width − 1 of them.
+        const int w = avx2 ? width : 4;
+        CHECK(st.width == w);
+        CHECK(st.wideNodes * (w - 1) >= st.nodes - st.leaves);
+        CHECK(st.wideNodes <= st.nodes - st.leaves);
+        CHECK(int(wide.wideNodes().size() + wide.wideNodes8().size()) == st.wideNodes);
+        CHECK((w == 8 ? wide.wideNodes8().size() : wide.wideNodes().size()) ==
+              std::size_t(st.wideNodes));
+    }
+    // SSE2 is never wider than 4.
+    BvhOptions sse;
+    sse.width = 8;
+    sse.simd = BvhSimd::Sse2;
+    CHECK(Bvh(s.primitives, sse).stats().width == 4);
+    CHECK_FALSE(Bvh(s.primitives, sse).stats().avx2);
+    for (int bad : {1, 3, 16, -4}) {
+        BvhOptions o;
+        o.width = bad;
+        CHECK_THROWS_AS(Bvh(s.primitives, o), std::invalid_argument);
+    }
+}
+
+TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is an error",
+          "[raytrace][bvh]") {
+    std::mt19937_64 g(4);
+    Scene s;
+    mixedScene(s, 200, g, 1.0);
+    const char* old = std::getenv("WB_BVH_PATH");
+    const std::string saved = old ? old : "";
+    const bool avx2 = __builtin_cpu_supports("avx2");
+    struct Case {
+        const char* value;
+        int width;
+        bool avx2;
+    };
+    for (const Case& c :
+         {Case{"sse4", 4, false}, Case{"avx4", 4, avx2}, Case{"avx8", avx2 ? 8 : 4, avx2}}) {
+        INFO(c.value);
+        setenv("WB_BVH_PATH", c.value, 1);
+        Bvh b(s.primitives);
+        CHECK(b.stats().width == c.width);
+        CHECK(b.stats().avx2 == c.avx2);
+        BvhOptions explicitOpt; // explicit options win over the variable
+        explicitOpt.width = 4;
+        explicitOpt.simd = BvhSimd::Sse2;
+        CHECK_FALSE(Bvh(s.primitives, explicitOpt).stats().avx2);
+    }
+    setenv("WB_BVH_PATH", "avx512", 1);
+    CHECK_THROWS_WITH(Bvh(s.primitives), Catch::Contains("WB_BVH_PATH"));
+    if (old)
+        setenv("WB_BVH_PATH", saved.c_str(), 1);
+    else
+        unsetenv("WB_BVH_PATH");
 }
 
 TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits", "[raytrace][bvh]") {
@@ -205,7 +309,8 @@ TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits", 
         BruteForce brute(s.primitives);
         BvhOptions bo;
         bo.width = 2;
-        Bvh binary(s.primitives, bo), wide(s.primitives);
+        Bvh binary(s.primitives, bo);
+        const WidePaths wide(s.primitives);
         const Refs r{brute, binary, wide};
         int hits = 0;
         for (int i = 0; i < 300; ++i) {
@@ -241,7 +346,8 @@ TEST_CASE("rt_bvh_wide: ties, shared mesh edges and vertices, duplicates", "[ray
     BruteForce brute(s.primitives);
     BvhOptions bo;
     bo.width = 2;
-    Bvh binary(s.primitives, bo), wide(s.primitives);
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
     const Refs r{brute, binary, wide};
     std::mt19937_64 g(21);
     int hits = 0;
@@ -266,9 +372,11 @@ TEST_CASE("rt_bvh_wide: ties, shared mesh edges and vertices, duplicates", "[ray
     Ray ray;
     ray.origin = {0.6, 3, 10};
     ray.direction = {0, 0, -1};
-    Hit h;
-    REQUIRE(wide.intersect(ray, 0, kInf, h));
-    CHECK(h.primitive == s.primitives[s.primitives.size() - 40 + 3].get());
+    for (const auto& w : wide.trees) {
+        Hit h;
+        REQUIRE(w->intersect(ray, 0, kInf, h));
+        CHECK(h.primitive == s.primitives[s.primitives.size() - 40 + 3].get());
+    }
 }
 
 TEST_CASE("rt_bvh_wide: far origins, tiny direction components and non-unit directions",
@@ -282,7 +390,8 @@ TEST_CASE("rt_bvh_wide: far origins, tiny direction components and non-unit dire
     BruteForce brute(s.primitives);
     BvhOptions bo;
     bo.width = 2;
-    Bvh binary(s.primitives, bo), wide(s.primitives);
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
     const Refs r{brute, binary, wide};
     int hits = 0;
     for (int i = 0; i < 200; ++i) {
@@ -328,17 +437,23 @@ TEST_CASE("rt_bvh_wide: images bit-identical to the plain loop and the binary tr
         const wb::Image plain = renderParallel(*sf.scene, cam, model, kW, kH, opt);
         BvhOptions bo;
         bo.width = 2;
-        Bvh binary(sf.scene->primitives, bo), wide(sf.scene->primitives);
+        Bvh binary(sf.scene->primitives, bo);
         sf.scene->setAggregate(&binary);
         const wb::Image bin = renderParallel(*sf.scene, cam, model, kW, kH, opt);
-        sf.scene->setAggregate(&wide);
-        const wb::Image w1 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
-        opt.threads = 2;
-        opt.tileSize = 8;
-        const wb::Image w2 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
-        CHECK(w1.data == plain.data);
-        CHECK(w1.data == bin.data);
-        CHECK(w2.data == w1.data);
+        CHECK(bin.data == plain.data);
+        const WidePaths wide(sf.scene->primitives);
+        for (const auto& w : wide.trees) {
+            INFO("width " << w->stats().width << (w->stats().avx2 ? " AVX2" : " SSE2"));
+            sf.scene->setAggregate(w.get());
+            opt.threads = 1;
+            const wb::Image w1 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+            opt.threads = 2;
+            opt.tileSize = 8;
+            const wb::Image w2 = renderParallel(*sf.scene, cam, model, kW, kH, opt);
+            CHECK(w1.data == plain.data);
+            CHECK(w2.data == w1.data);
+        }
+        sf.scene->setAggregate(nullptr);
     }
 }
 
@@ -353,7 +468,8 @@ TEST_CASE("rt_bvh_wide: rays grazing spheres and through triangle edges and corn
     BruteForce brute(s.primitives);
     BvhOptions bo;
     bo.width = 2;
-    Bvh binary(s.primitives, bo), wide(s.primitives);
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
     const Refs r{brute, binary, wide};
     int hits = 0, grazes = 0;
     for (const auto& p : s.primitives) {
@@ -396,6 +512,8 @@ TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread co
         return std::make_unique<Bvh>(s.primitives, o);
     };
     const auto one = build(1);
+    // Above 2·4096 build nodes the collapse, too, runs subtrees as tasks (bvh_wide.cpp).
+    REQUIRE(one->stats().nodes > 2 * 4096);
     for (int threads : {0, 2, 3}) {
         INFO("threads " << threads);
         const auto other = build(threads);
@@ -405,7 +523,14 @@ TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread co
         const auto& a = one->wideNodes();
         const auto& b = other->wideNodes();
         REQUIRE(a.size() == b.size());
-        CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Bvh::WideNode)) == 0);
+        const auto& a8 = one->wideNodes8();
+        const auto& b8 = other->wideNodes8();
+        REQUIRE(a8.size() == b8.size());
+        REQUIRE(a.size() + a8.size() > 0); // one of them is the tree (the other is empty)
+        if (!a.empty())
+            CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Bvh::WideNode)) == 0);
+        if (!a8.empty())
+            CHECK(std::memcmp(a8.data(), b8.data(), a8.size() * sizeof(Bvh::WideNode8)) == 0);
         // And the same answers, primitive for primitive.
         for (int i = 0; i < 200; ++i) {
             Ray ray;
@@ -418,4 +543,101 @@ TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread co
         }
     }
     CHECK_THROWS_AS(build(-1), std::invalid_argument);
+    // The tree collapsed from tasks, on every path, against the plain loop (60 rays: the
+    // plain loop's every-hit walks over 12,000 primitives are slow under the sanitizers).
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    int hits = 0;
+    for (int i = 0; i < 60; ++i) {
+        Ray ray;
+        ray.origin = rnd3(g, -14, 14);
+        ray.direction = glm::normalize(rnd3(g, -5, 5) - ray.origin);
+        hits += compareRay(r, ray);
+    }
+    CHECK(hits > 20);
+}
+
+TEST_CASE("rt_bvh_wide: rays from the origin 0 through box corners that are triangle vertices",
+          "[raytrace][bvh]") {
+    // Triangles on float-exact vertices whose first vertex is the least in every
+    // coordinate, so it is a corner of the triangle's box and, for some, of the leaf's
+    // and the nodes' boxes (floats, not widened by the build). A ray from the origin 0
+    // (not widened either) through that vertex enters and leaves the box at the same
+    // exact t: only the exit distances' stretch keeps the computed entry <= exit.
+    std::mt19937_64 g(91);
+    std::uniform_real_distribution<float> u(-20.0f, 20.0f), e(0.01f, 2.0f);
+    Scene s;
+    std::vector<glm::dvec3> corners;
+    for (int i = 0; i < 400; ++i) {
+        const glm::dvec3 a(u(g), u(g), u(g));
+        const glm::dvec3 b = a + glm::dvec3(e(g), e(g), e(g)), c = a + glm::dvec3(e(g), e(g), e(g));
+        if (glm::length(a) < 1) continue;
+        s.add(Triangle(a, b, c), 0);
+        corners.push_back(a);
+    }
+    BruteForce brute(s.primitives);
+    BvhOptions bo;
+    bo.width = 2;
+    Bvh binary(s.primitives, bo);
+    const WidePaths wide(s.primitives);
+    const Refs r{brute, binary, wide};
+    int hits = 0;
+    for (const glm::dvec3& a : corners) {
+        Ray ray;
+        ray.origin = glm::dvec3(0.0);
+        ray.direction = glm::normalize(a);
+        hits += compareRay(r, ray);
+        ray.direction = a; // not normalised: t = 1 at the vertex
+        hits += compareRay(r, ray);
+    }
+    CHECK(hits > 200);
+}
+
+TEST_CASE("rt_bvh_wide: scenes of one kind, so leaves hold full runs of four", "[raytrace][bvh]") {
+    // In the mixed scene the kinds alternate, and the SAH makes small leaves, so a leaf
+    // rarely holds four of one run; here every leaf's run is as long as the leaf, and
+    // costly nodes make leaves of up to 7, so every lane of the leaves' float tests
+    // (spheres, triangles, the other kinds' boxes) and the tail mask decide something.
+    for (int kind = 0; kind < 3; ++kind) {
+        INFO("kind " << kind);
+        std::mt19937_64 g(std::uint64_t(60 + kind));
+        std::uniform_real_distribution<double> rr(0.05, 0.6);
+        Scene s;
+        for (int i = 0; i < 600; ++i) {
+            const glm::dvec3 c = rnd3(g, -10, 10);
+            if (kind == 0)
+                s.add(Sphere(c, rr(g)), 0);
+            else if (kind == 1)
+                s.add(Triangle(c, c + rnd3(g, -1, 1), c + rnd3(g, -1, 1)), 0);
+            else if (i % 3 == 0)
+                s.add(Cone(c, rr(g), c + rnd3(g, -1, 1) + glm::dvec3(0.01), rr(g)), 0);
+            else if (i % 3 == 1)
+                s.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(rr(g), rr(g), rr(g))), 0);
+            else
+                s.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1, 1))), 0);
+        }
+        BruteForce brute(s.primitives);
+        BvhOptions bo;
+        bo.width = 2;
+        Bvh binary(s.primitives, bo);
+        BvhOptions big;
+        big.maxLeafSize = 7;
+        big.traversalCost = 8;
+        const WidePaths wide(s.primitives, big);
+        const Refs r{brute, binary, wide};
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -14, 14);
+            const Aabb b = s.primitives[g() % s.primitives.size()]->bounds();
+            ray.direction = glm::normalize(0.5 * (b.lo + b.hi) + 0.3 * rnd3(g, -1, 1) - ray.origin);
+            hits += compareRay(r, ray);
+        }
+        CHECK(hits > 150);
+        CHECK(adversarialRays(r, g, 400, 1.0) > 50);
+    }
 }

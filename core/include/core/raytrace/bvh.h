@@ -1,24 +1,35 @@
 #pragma once
 // Bounding volume hierarchy over every primitive kind of a scene (spheres, quadrics,
 // cones, triangles, polyhedra share one tree), built with the binned surface area
-// heuristic as a binary tree and, by default, collapsed into a 4-wide tree whose nodes
-// hold their four children's boxes in float, structure of arrays, so one SSE operation
-// tests a slab of all four (width 4); width 2 keeps the binary tree of double boxes
-// (the reference the tests compare against). Traversal is front to back (nearest
-// child first) and stops at tMax = nearest hit so far; forEachHit stops as soon as the
-// visitor returns false, which is the any-hit early exit of shadow feelers. Leaves keep
-// their spheres side by side (float centres and radii) and reject four at a time with a
-// conservative float test; every candidate is decided by the primitive's own exact
-// double code, so hits are bit for bit those of the plain loop (on equal t the
-// primitive later in the scene wins, as in the plain loop). Unbounded primitives
-// (infinite planes, uncut quadrics) are kept outside the tree and tested for every ray.
+// heuristic as a binary tree and, by default, collapsed into a wide tree whose nodes
+// hold their children's boxes in float, structure of arrays, so one SIMD operation
+// tests a slab of all of them: 8 children with AVX2 where the CPU has it (chosen at run
+// time), 4 with SSE2 (the portable baseline); width 2 keeps the binary tree of double
+// boxes (the reference the tests compare against). The nearest hit is found front to
+// back (nearest child first, stopping at tMax = nearest hit so far); occluded,
+// forEachHit and forEachBlocker walk in any order and stop as soon as the visitor says
+// so (the any-hit early exit of shadow feelers). Leaves keep runs of one kind side by
+// side in float — spheres (centres, radii), triangles (vertices), the other kinds
+// (their boxes) — and reject four at a time with conservative float tests; every
+// candidate is decided by the primitive's own exact double code, so hits are bit for
+// bit those of the plain loop (on equal t the primitive later in the scene wins, as in
+// the plain loop). Unbounded primitives (infinite planes, uncut quadrics) are kept
+// outside the tree and tested for every ray.
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
 namespace wb::rt {
+
+// Which SIMD instructions the wide traversal uses (BvhOptions::simd).
+enum class BvhSimd {
+    Auto, // AVX2 where the CPU has it (checked at run time), else SSE2
+    Sse2, // the portable x86-64 baseline
+    Avx2, // AVX2 (falls back to SSE2 on a CPU without it; stats().avx2 says which ran)
+};
 
 struct BvhOptions {
     int bins = 16;                 // SAH bins per axis (binned build, Wald 2007); 2..256
@@ -26,7 +37,12 @@ struct BvhOptions {
     double traversalCost = 1.0;    // SAH cost of visiting a node, relative to...
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
-    int width = 4;           // 4: wide float SSE nodes and sphere leaves; 2: binary double nodes
+    // 0: automatic (the default: 8 with AVX2, 4 otherwise — the faster one measured,
+    // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4 or avx8
+    // overrides it when width and simd are both automatic); 4 or 8: wide float nodes
+    // (8 needs AVX2, else 4); 2: binary double nodes (the reference the tests use).
+    int width = 0;
+    BvhSimd simd = BvhSimd::Auto; // instructions of the wide traversal
     int buildThreads = 0; // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
 };
 
@@ -38,8 +54,10 @@ struct BvhStats {
     std::size_t unbounded = 0;    // primitives outside the tree (tested for every ray)
     double buildSeconds = 0.0;    // wall time of the build
     double sahCost = 0.0;         // SAH cost of the tree (root area normalised)
-    int wideNodes = 0;            // nodes of the 4-wide tree (width 4), else 0
-    double collapseSeconds = 0.0; // of buildSeconds: collapsing into the 4-wide tree
+    int wideNodes = 0;            // nodes of the wide tree (width 4 or 8), else 0
+    double collapseSeconds = 0.0; // of buildSeconds: collapsing into the wide tree
+    int width = 2;                // the tree traversed: 2 (binary), 4 or 8
+    bool avx2 = false;            // the wide traversal runs the AVX2 code (else SSE2)
 };
 
 class Bvh : public Aggregate {
@@ -76,34 +94,59 @@ class Bvh : public Aggregate {
         std::uint16_t count[2];
     };
 
-    // The 4-wide tree: four children's boxes as [axis][child] floats rounded outward
-    // (an empty slot has lo = +inf, hi = −inf, which no ray enters), two cache lines.
-    struct alignas(64) WideNode {
-        float lo[3][4], hi[3][4];
-        std::uint32_t child[4]; // inner child: wide node index; leaf: first index into order_
-        std::uint16_t count[4]; // 0: inner child or empty slot; > 0: leaf with this many
+    // The wide trees: W children's boxes as [axis][child] floats rounded outward (an
+    // empty slot has lo = +inf, hi = −inf, which no ray enters), then the links; W = 4
+    // fills two cache lines, W = 8 four.
+    template <int W> struct alignas(64) WideNodeT {
+        float lo[3][W], hi[3][W];
+        std::uint32_t child[W]; // inner child: wide node index; leaf: first index into order_
+        std::uint16_t count[W]; // 0: inner child or empty slot; > 0: leaf with this many
     };
-    // The 4-wide nodes (empty for width 2 and for a tree of one leaf): the tests aim
-    // rays at their boxes' corners, edges and faces.
+    using WideNode = WideNodeT<4>;
+    using WideNode8 = WideNodeT<8>;
+    // The wide nodes of the tree traversed (empty for width 2, for the other width and
+    // for a tree of one leaf): the tests aim rays at their boxes' corners, edges and faces.
     const std::vector<WideNode>& wideNodes() const { return wnodes_; }
+    const std::vector<WideNode8>& wideNodes8() const { return wnodes8_; }
 
   private:
     template <class Visit>
     void traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) const;
-    // Width 4: the collapse, the traversal and the leaf walk (bvh_wide.cpp).
-    struct WideRay;
+    // Wide trees: the collapse (bvh_wide.cpp), the walk templated on the SIMD lanes
+    // (bvh_wide_impl.h, compiled for SSE2 in bvh_wide.cpp and for AVX2 in
+    // bvh_wide_avx2.cpp), entered through the path chosen at build time.
+    // The entry points of one SIMD path and width (bvh_wide_impl.h fills them in).
+    struct WidePath {
+        int width; // 4 or 8 children per node
+        bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
+        bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
+        bool (*occluded)(const Bvh&, const Ray&, double, double);
+        void (*forEachHit)(const Bvh&, const Ray&, double, double,
+                           const std::function<bool(const Hit&)>&);
+        void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
+                               const std::function<bool(const Primitive&)>&);
+    };
+    template <class Lanes> struct WideWalk;
+    static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
+    static const WidePath* avx2Path(int width); // bvh_wide_avx2.cpp: width 4 or 8
     void collapseWide(const void* buildNodes, std::size_t count);
-    template <class Leaf>
-    void traverseWide(const Ray& ray, double tMin, double& tMax, Leaf&& leaf) const;
-    template <class Visit>
-    bool visitLeafWide(WideRay& wr, std::uint32_t first, std::uint32_t count, float limit,
-                       Visit&& visit) const;
-    bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const;
+    template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
+    void sortLeaf(std::uint32_t first, std::uint32_t count);
+    // Inline: one indirect call from the query to the walk (a cheap ray's cost counts).
+    bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const {
+        return path_->intersect(*this, ray, tMin, tMax, hit);
+    }
     void forEachHitWide(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Hit&)>& visit) const;
+                        const std::function<bool(const Hit&)>& visit) const {
+        path_->forEachHit(*this, ray, tMin, tMax, visit);
+    }
     void forEachBlockerWide(const Ray& ray, double tMin, double tMax,
-                            const std::function<bool(const Primitive&)>& visit) const;
-    bool occludedWide(const Ray& ray, double tMin, double tMax) const;
+                            const std::function<bool(const Primitive&)>& visit) const {
+        path_->forEachBlocker(*this, ray, tMin, tMax, visit);
+    }
+    bool occludedWide(const Ray& ray, double tMin, double tMax) const {
+        return path_->occluded(*this, ray, tMin, tMax);
+    }
 
     BvhOptions options_;
     std::vector<Node> nodes_;
@@ -112,8 +155,10 @@ class Bvh : public Aggregate {
     std::uint32_t rootLeafCount_ = 0;         // > 0: the whole tree is one leaf (no nodes_)
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
-    // Width 4 only:
-    std::vector<WideNode> wnodes_;
+    // Wide trees only:
+    const WidePath* path_ = nullptr;            // the SIMD path and width traversed
+    std::vector<WideNode> wnodes_;              // width 4
+    std::vector<WideNode8> wnodes8_;            // width 8
     std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
@@ -123,6 +168,7 @@ class Bvh : public Aggregate {
                                                 // radius, their part of the float test's margin
     std::vector<float> tv_[9], tm_;             // triangles at their order_ index: float vertices
                                                 // [vertex·3 + axis], their part of the margin
+    std::vector<float> ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
 

@@ -1,0 +1,547 @@
+#pragma once
+// The wide BVH's walk, templated on the SIMD lanes of its node test: bvh_wide.cpp
+// compiles it with SSE2 for 4-wide nodes (the portable baseline), bvh_wide_avx2.cpp
+// with AVX2 for 4- and 8-wide nodes (chosen at run time). Every function here is a
+// member of Bvh::WideWalk<Lanes>, and each file's Lanes are types of their own (Lanes4<0>,
+// Lanes4<1>, avx2::L8), so no function compiled for AVX2 can stand in for an SSE2 one at
+// link time. bvh_wide_avx2.cpp includes everything this file includes before it turns
+// AVX2 on, so only the code below is compiled for AVX2 there.
+//
+// Lanes: W (4 or 8), V (the register), set1, load (aligned), sub, mul, min, max (NaN in
+// either operand gives the second), le (a movemask of a <= b, false for NaN), store, and
+// low (the first four lanes as __m128, for the leaf tests, which stay 4-wide).
+//
+// 1. Per ray: the near/far planes picked by byte offsets from the direction's signs; the
+//    origin in float widened by |o|max·2^-21 per axis (its rounding is at most
+//    |o|max·2^-24), 1/d in float for entries and 1/d·(1 + 2^-19) for exits (kInvFarScaleF),
+//    tMin lowered and the limit raised by 2^-20: a box the exact ray enters is never
+//    missed. Rays float cannot carry (|o| > 1e30, a direction component beyond 1e±30)
+//    take the same walk with each box tested in double.
+// 2. Nearest hit: hit children sorted by entry distance, the nearest descended into (or
+//    visited at once if a leaf), the rest pushed with their entry distance and dropped
+//    when a nearer hit is known. Any hit (shadow feelers, every-hit and every-blocker
+//    walks, which never shrink the limit): no sort, no distances, leaves visited as met.
+// 3. Leaves hold runs of one kind: spheres (float distance from the centre to the ray's
+//    line against r + margin), triangles (the watertight edge functions in float with an
+//    error bound), the rest (their own float box, with the node test's margins), four at
+//    a time; every candidate goes to the primitive's exact double code, called directly
+//    for spheres and plain triangles, so hits are the plain loop's bit for bit.
+#include "bvh_internal.h"
+#include "bvh_wide_kinds.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/smooth_triangle.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <immintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+namespace wb::rt {
+
+// Four lanes: SSE2 in bvh_wide.cpp, the same code VEX-encoded in bvh_wide_avx2.cpp; the
+// tag (0 and 1) keeps each file's instantiations its own.
+template <int Tag> struct Lanes4 {
+    static constexpr int W = 4;
+    using V = __m128;
+    static V set1(float x) { return _mm_set1_ps(x); }
+    static V load(const float* p) { return _mm_load_ps(p); }
+    static V sub(V a, V b) { return _mm_sub_ps(a, b); }
+    static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static V min(V a, V b) { return _mm_min_ps(a, b); }
+    static V max(V a, V b) { return _mm_max_ps(a, b); }
+    static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
+    static void store(float* p, V v) { _mm_store_ps(p, v); }
+    static __m128 low(V v) { return v; }
+};
+
+template <class L> struct Bvh::WideWalk {
+    static constexpr int W = L::W;
+    using V = typename L::V;
+    using Node = WideNodeT<W>;
+    // At most W − 1 pushes per wide node, at most one wide node per binary level.
+    static constexpr int kStack = (W - 1) * bvh_detail::kMaxDepth;
+
+    // Per-ray data.
+    struct RayData {
+        const std::size_t* off; // byte offsets in a Node: near planes x, y, z, far planes x, y, z
+        V on[3], of[3];         // origin moved by ∓eps for near and ±eps for far planes
+        V inv[3], invFar[3];    // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
+        V tMin;                 // lowered tMin
+        bool useFloat = false;  // boxes tested in float (else in double)
+        bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
+        int neg[3];             // direction sign per axis
+        glm::dvec3 o, d, invd;  // the ray in double (invd: double walk only)
+        // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
+        bool sphReady = false;
+        __m128 fo[3], fd[3], om;
+        // Triangle test (set up at the first triangle run): the watertight shear (kz the
+        // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
+        bool triReady = false;
+        TriangleShear sh; // in double: the exact tests of plain triangles reuse it
+        int k[3];         // sh's axes
+        __m128 to[3], shx, shy, tom;
+
+        void sphereSetup() {
+            unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
+            for (int a = 0; a < 3; ++a) {
+                fo[a] = _mm_set1_ps(float(o[a]));
+                fd[a] = _mm_set1_ps(float(d[a]));
+            }
+            om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) *
+                             bvh_detail::kSphereMargin);
+            sphReady = true;
+        }
+        void triangleSetup() {
+            // The watertight test's axes and shear (triangle.cpp): kz dominant, kx/ky
+            // swapped for d[kz] < 0.
+            sh = triangleShear(d);
+            k[0] = sh.kx;
+            k[1] = sh.ky;
+            k[2] = sh.kz;
+            to[0] = _mm_set1_ps(float(o[sh.kx]));
+            to[1] = _mm_set1_ps(float(o[sh.ky]));
+            to[2] = _mm_set1_ps(float(o[sh.kz]));
+            shx = _mm_set1_ps(float(sh.sx));
+            shy = _mm_set1_ps(float(sh.sy));
+            tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
+                              bvh_detail::kTriMargin);
+            triReady = true;
+        }
+    };
+
+    // RayData::off for each sign pattern of the direction (bit a: d[a] < 0).
+    struct Offsets {
+        std::size_t v[8][6];
+    };
+    static constexpr Offsets makeOffsets() {
+        Offsets t{};
+        constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
+        for (int signs = 0; signs < 8; ++signs)
+            for (int a = 0; a < 3; ++a) {
+                const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float);
+                const bool neg = (signs >> a) & 1;
+                t.v[signs][a] = lo + (neg ? kHiMinusLo : 0);
+                t.v[signs][3 + a] = lo + (neg ? 0 : kHiMinusLo);
+            }
+        return t;
+    }
+    static constexpr Offsets kOffsets = makeOffsets();
+
+    static const std::vector<Node>& nodesOf(const Bvh& b) {
+        if constexpr (W == 4)
+            return b.wnodes_;
+        else
+            return b.wnodes8_;
+    }
+
+    // Runs the leaf's float tests and calls visit(i, r) for every candidate i (an index into
+    // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
+    // when the leaf was entered (the other kinds' boxes beyond it are skipped).
+    template <class Visit>
+    // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
+    // no change with SSE2 (driver, alternated medians).
+    __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
+                                                         std::uint32_t first, std::uint32_t count,
+                                                         float limit, Visit&& visit) {
+        using namespace bvh_detail;
+        const std::uint32_t end = first + count;
+        for (std::uint32_t run = first; run < end;) {
+            const std::uint32_t rEnd = run + b.run_[run];
+            const std::uint8_t runKind = runOf(b.kind_[run]);
+            if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
+            if (runKind == kRunSphere ? !r.unitD : !r.useFloat) {
+                for (std::uint32_t i = run; i < rEnd; ++i)
+                    if (!visit(i, &r)) return false;
+                run = rEnd;
+                continue;
+            }
+            for (std::uint32_t i = run; i < rEnd; i += 4) {
+                int mask;
+                if (runKind == kRunSphere) {
+                    // Squared distance of each centre from the ray's line against (r +
+                    // margin)²: a sphere the exact code can hit (disc >= 0) is never rejected.
+                    const __m128 fx = _mm_sub_ps(r.fo[0], _mm_loadu_ps(&b.sx_[i]));
+                    const __m128 fy = _mm_sub_ps(r.fo[1], _mm_loadu_ps(&b.sy_[i]));
+                    const __m128 fz = _mm_sub_ps(r.fo[2], _mm_loadu_ps(&b.sz_[i]));
+                    const __m128 h =
+                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(fx, r.fd[0]), _mm_mul_ps(fy, r.fd[1])),
+                                   _mm_mul_ps(fz, r.fd[2]));
+                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, r.fd[0]));
+                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, r.fd[1]));
+                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, r.fd[2]));
+                    const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
+                                                 _mm_mul_ps(lz, lz));
+                    const __m128 rm = _mm_add_ps(_mm_loadu_ps(&b.sr_[i]),
+                                                 _mm_add_ps(r.om, _mm_loadu_ps(&b.sm_[i])));
+                    // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
+                    // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
+                    mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
+                } else if (runKind == kRunTriangle) {
+                    if (!r.triReady) r.triangleSetup();
+                    // The watertight test's edge functions in float (same shear); rejected
+                    // only when one is surely negative and another surely positive: e bounds
+                    // their float error (inputs off by δ after rounding vertices and origin,
+                    // the shear and the differences; products and their difference rounded).
+                    __m128 px[3], py[3];
+                    const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+                    for (int j = 0; j < 3; ++j) {
+                        const __m128 X =
+                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[0]][i]), r.to[0]);
+                        const __m128 Y =
+                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[1]][i]), r.to[1]);
+                        const __m128 Z =
+                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[2]][i]), r.to[2]);
+                        px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
+                        py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
+                    }
+                    const __m128 u = _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
+                    const __m128 v = _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
+                    const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
+                    __m128 q = _mm_setzero_ps();
+                    for (int j = 0; j < 3; ++j)
+                        q = _mm_add_ps(
+                            q, _mm_add_ps(_mm_and_ps(px[j], absMask), _mm_and_ps(py[j], absMask)));
+                    // δ = (|v|₁ + |o|₁ + Σ|v − o|₁)·2^-19 (sums over the three vertices) is
+                    // at most (2·Σ|v|₁ + 4·|o|₁)·2^-19 = tm_ + tom; e = 2δ(Q + 2δ) + Q²·2^-20.
+                    const __m128 delta = _mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom);
+                    const __m128 twoD = _mm_add_ps(delta, delta);
+                    const __m128 e =
+                        _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
+                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(0x1p-20f)));
+                    const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
+                    const __m128 someNeg = _mm_or_ps(
+                        _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
+                    const __m128 somePos = _mm_or_ps(
+                        _mm_or_ps(_mm_cmpgt_ps(u, e), _mm_cmpgt_ps(v, e)), _mm_cmpgt_ps(w, e));
+                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(someNeg, somePos));
+                } else {
+                    // The other kinds: their own float box (rounded outward) with the node
+                    // test's margins, up to the limit.
+                    __m128 t0 = L::low(r.tMin), t1 = _mm_set1_ps(limit);
+                    for (int a = 0; a < 3; ++a) {
+                        const __m128 nearP = _mm_loadu_ps(&b.ob_[r.neg[a] ? 3 + a : a][i]);
+                        const __m128 farP = _mm_loadu_ps(&b.ob_[r.neg[a] ? a : 3 + a][i]);
+                        t0 = _mm_max_ps(
+                            _mm_mul_ps(_mm_sub_ps(nearP, L::low(r.on[a])), L::low(r.inv[a])), t0);
+                        t1 = _mm_min_ps(
+                            _mm_mul_ps(_mm_sub_ps(farP, L::low(r.of[a])), L::low(r.invFar[a])), t1);
+                    }
+                    mask = _mm_movemask_ps(_mm_cmple_ps(t0, t1));
+                }
+                if (rEnd - i < 4) mask &= (1 << (rEnd - i)) - 1;
+                while (mask) {
+                    const int l = __builtin_ctz(unsigned(mask));
+                    mask &= mask - 1;
+                    if (!visit(i + std::uint32_t(l), &r)) return false;
+                }
+            }
+            run = rEnd;
+        }
+        return true;
+    }
+
+    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
+    // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
+    // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
+    template <bool kAnyHit, class Leaf>
+    static void walk(const Bvh& b, const Ray& ray, double tMin, double& tMax, Leaf&& leaf) {
+        using namespace bvh_detail;
+        if (b.stats_.primitives == 0) return;
+        if (b.rootLeafCount_ > 0) {
+            // A tree of one leaf (up to maxLeafSize primitives): the root box in double and
+            // the exact tests, without the float set-up, which costs more than it saves.
+            double t0 = tMin, t1 = tMax;
+            for (int a = 0; a < 3; ++a) {
+                const double inv = 1.0 / ray.direction[a];
+                const bool neg = std::signbit(inv);
+                const double near = ((neg ? b.rootHi_[a] : b.rootLo_[a]) - ray.origin[a]) * inv;
+                const double far =
+                    ((neg ? b.rootLo_[a] : b.rootHi_[a]) - ray.origin[a]) * inv * kFarScale;
+                t0 = near > t0 ? near : t0; // NaN (0·inf): no limit
+                t1 = far < t1 ? far : t1;
+            }
+            if (!(t0 <= t1)) return;
+            for (std::uint32_t i = 0; i < b.rootLeafCount_; ++i)
+                if (!leaf(i, nullptr)) return; // no ray data: the exact tests set up their own
+            return;
+        }
+        const std::vector<Node>& nodes = nodesOf(b);
+        RayData r;
+        const glm::dvec3 o = ray.origin, d = ray.direction;
+        const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+        // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
+        // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
+        const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
+        const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
+            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        };
+        const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
+        r.off = kOffsets.v[signs];
+        for (int a = 0; a < 3; ++a)
+            r.neg[a] = (signs >> a) & 1;
+        r.useFloat = ok;
+        r.o = o;
+        r.d = d;
+        if (ok) {
+            // In four float lanes (x, y, z, unused): 1/d in one division (a zero component
+            // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the
+            // roundings), the origin widened by eps with the direction's signs.
+            const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+            const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                            _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+            const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+            const __m128 sgnEps =
+                _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            alignas(16) float inv[4], invFar[4], on[4], of[4];
+            _mm_store_ps(inv, finv);
+            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(kInvFarScaleF)));
+            _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+            _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+            for (int a = 0; a < 3; ++a) {
+                r.on[a] = L::set1(on[a]);
+                r.of[a] = L::set1(of[a]);
+                r.inv[a] = L::set1(inv[a]);
+                r.invFar[a] = L::set1(invFar[a]);
+            }
+            const float ftMin = float(tMin);
+            r.tMin = L::set1(ftMin - std::abs(ftMin) * 0x1p-20f);
+        } else {
+            r.invd = 1.0 / d;
+        }
+        // The current limit: entries farther than the nearest hit (widened) are dropped.
+        auto limitF = [&]() {
+            const double lim = tMax * kFarScale;
+            return lim > 3e38 ? std::numeric_limits<float>::infinity()
+                              : float(lim) * (1 + 0x1p-20f);
+        };
+        struct Entry {
+            std::uint32_t child;
+            std::uint32_t count;
+            float t;
+        };
+        Entry stack[kStack];
+        int sp = 0;
+        float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
+        std::uint32_t cur = 0;
+        while (true) {
+            const Node& nd = nodes[cur];
+            // The links (the fourth cache line of an 8-wide node) are read only after the
+            // box test: fetch them alongside the boxes.
+            if constexpr (sizeof(Node) > 128)
+                _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
+            alignas(32) float t[W];
+            int mask;
+            if (r.useFloat) {
+                const char* base = reinterpret_cast<const char*>(&nd);
+                V t0 = r.tMin, t1 = L::set1(flim);
+                for (int a = 0; a < 3; ++a) {
+                    const V nearP = L::load(reinterpret_cast<const float*>(base + r.off[a]));
+                    const V farP = L::load(reinterpret_cast<const float*>(base + r.off[3 + a]));
+                    // max/min return the second operand for NaN (0·inf: a ray in the slab's
+                    // plane): that slab is no limit.
+                    t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
+                    t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
+                }
+                mask = L::le(t0, t1);
+                if (!kAnyHit) L::store(t, t0);
+            } else {
+                mask = 0;
+                const double lim = tMax * kFarScale;
+                for (int c = 0; c < W; ++c) {
+                    if (nd.lo[0][c] > nd.hi[0][c]) continue; // empty slot
+                    double t0 = tMin, t1 = lim;
+                    for (int a = 0; a < 3; ++a) {
+                        const double nearP = r.neg[a] ? nd.hi[a][c] : nd.lo[a][c];
+                        const double farP = r.neg[a] ? nd.lo[a][c] : nd.hi[a][c];
+                        const double tn = (nearP - o[a]) * r.invd[a];
+                        const double tf = (farP - o[a]) * r.invd[a] * kFarScale;
+                        t0 = tn > t0 ? tn : t0;
+                        t1 = tf < t1 ? tf : t1;
+                    }
+                    if (t0 <= t1) {
+                        mask |= 1 << c;
+                        // Rounded down, so the float drop test below never drops it wrongly.
+                        t[c] = floatDown(t0);
+                    }
+                }
+            }
+            if constexpr (kAnyHit) {
+                // Any order: leaves visited as met, inner children pushed, the last one
+                // descended into.
+                bool haveNext = false;
+                while (mask) {
+                    const int c = __builtin_ctz(unsigned(mask));
+                    mask &= mask - 1;
+                    if (nd.count[c] > 0) {
+                        if (!visitLeaf(b, r, nd.child[c], nd.count[c], flim, leaf)) return;
+                    } else {
+                        if (haveNext) stack[sp++] = {cur, 0, 0.0f};
+                        cur = nd.child[c];
+                        haveNext = true;
+                    }
+                }
+                if (haveNext) continue;
+                if (sp == 0) return;
+                cur = stack[--sp].child;
+                continue;
+            } else {
+                // One child hit: go on with it; two: the nearer now, the farther pushed;
+                // more: sorted by entry distance, the farther ones pushed farthest first.
+                // A leaf met as the nearest is visited at once.
+                if (mask != 0) {
+                    int next;
+                    const int c0 = __builtin_ctz(unsigned(mask));
+                    const int rest = mask & (mask - 1);
+                    if (rest == 0) {
+                        next = c0;
+                    } else if ((rest & (rest - 1)) == 0) {
+                        const int c1 = __builtin_ctz(unsigned(rest));
+                        const int nearC = t[c1] < t[c0] ? c1 : c0, farC = nearC == c0 ? c1 : c0;
+                        stack[sp++] = {nd.child[farC], nd.count[farC], t[farC]};
+                        next = nearC;
+                    } else {
+                        int order[W], n = 0;
+                        while (mask) {
+                            const int c = __builtin_ctz(unsigned(mask));
+                            mask &= mask - 1;
+                            int k = n++;
+                            while (k > 0 && t[order[k - 1]] < t[c]) { // descending
+                                order[k] = order[k - 1];
+                                --k;
+                            }
+                            order[k] = c;
+                        }
+                        for (int k = 0; k + 1 < n; ++k) {
+                            const int c = order[k];
+                            stack[sp++] = {nd.child[c], nd.count[c], t[c]};
+                        }
+                        next = order[n - 1];
+                    }
+                    if (nd.count[next] == 0) {
+                        cur = nd.child[next];
+                        continue;
+                    }
+                    if (!visitLeaf(b, r, nd.child[next], nd.count[next], flim, leaf)) return;
+                    flim = limitF();
+                }
+                while (true) {
+                    if (sp == 0) return;
+                    const Entry e = stack[--sp];
+                    if (e.t > flim) continue;
+                    if (e.count > 0) {
+                        if (!visitLeaf(b, r, e.child, e.count, flim, leaf)) return;
+                        flim = limitF();
+                        continue;
+                    }
+                    cur = e.child;
+                    break;
+                }
+            }
+        }
+    }
+
+    // The exact decisions, called directly for the kinds the leaves know (the same
+    // functions the virtual calls would reach: kSphere and kTriangle are exact types).
+    // A plain triangle takes the shear the leaf test computed, if it did (the same bits as
+    // Triangle::intersect computing it).
+    static bool exactIntersect(const Primitive& p, std::uint8_t kind, const RayData* r,
+                               const Ray& ray, double tMin, double tMax, Hit& hit) {
+        if (kind == bvh_detail::kSphere)
+            return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
+        if (kind == bvh_detail::kTriangle) {
+            const auto& t = static_cast<const Triangle&>(p);
+            return r && r->triReady ? t.intersectSheared(ray, r->sh, tMin, tMax, hit)
+                                    : t.Triangle::intersect(ray, tMin, tMax, hit);
+        }
+        return p.intersect(ray, tMin, tMax, hit);
+    }
+    static bool exactOccluded(const Primitive& p, std::uint8_t kind, const RayData* r,
+                              const Ray& ray, double tMin, double tMax) {
+        if (kind == bvh_detail::kSphere)
+            return static_cast<const Sphere&>(p).Sphere::occluded(ray, tMin, tMax);
+        if (kind == bvh_detail::kTriangle) {
+            // Triangle keeps Primitive::occluded, which is its intersect with a scratch hit.
+            Hit h;
+            return exactIntersect(p, kind, r, ray, tMin, tMax, h);
+        }
+        return p.occluded(ray, tMin, tMax);
+    }
+
+    static bool intersect(const Bvh& b, const Ray& ray, double tMin, double tMax, Hit& hit) {
+        // Candidates write straight into `hit` (each is asked only for t <= the nearest so
+        // far). On equal t the plain loop keeps the primitive later in the scene; when an
+        // earlier one ties, the later one's record is restored by asking it again (the same
+        // exact code gives the same bits). Exact ties are rare: records stay uncopied.
+        const Primitive* best = nullptr;
+        std::uint8_t bestKind = bvh_detail::kOther;
+        std::uint32_t bestIndex = 0;
+        auto offer = [&](const Primitive& p, std::uint8_t kind, std::uint32_t index,
+                         const RayData* r) {
+            const double before = tMax;
+            if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
+            if (best && hit.t == before && index < bestIndex) {
+                exactIntersect(*best, bestKind, r, ray, tMin, before, hit);
+                return;
+            }
+            best = &p;
+            bestKind = kind;
+            bestIndex = index;
+            tMax = hit.t;
+        };
+        for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
+            offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
+        walk<false>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            offer(*b.order_[i], b.kind_[i], b.orderIndex_[i], r);
+            return true;
+        });
+        return best != nullptr;
+    }
+
+    static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax) {
+        for (const Primitive* p : b.unbounded_)
+            if (p->occluded(ray, tMin, tMax)) return true;
+        bool any = false;
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            any = exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax);
+            return !any;
+        });
+        return any;
+    }
+
+    static void forEachHit(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                           const std::function<bool(const Hit&)>& visit) {
+        Hit h;
+        for (const Primitive* p : b.unbounded_)
+            if (p->intersect(ray, tMin, tMax, h) && !visit(h)) return;
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            return !(exactIntersect(*b.order_[i], b.kind_[i], r, ray, tMin, tMax, h) && !visit(h));
+        });
+    }
+
+    static void forEachBlocker(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                               const std::function<bool(const Primitive&)>& visit) {
+        for (const Primitive* p : b.unbounded_)
+            if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+            return !(exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax) &&
+                     !visit(*b.order_[i]));
+        });
+    }
+
+    static const WidePath* path(bool avx2) {
+        static const WidePath p{W, avx2, &intersect, &occluded, &forEachHit, &forEachBlocker};
+        return &p;
+    }
+};
+
+} // namespace wb::rt
