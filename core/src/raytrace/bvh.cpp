@@ -122,33 +122,6 @@ constexpr std::size_t kBlockNode = 65536;
 constexpr std::size_t kParallelGrain = 2048;
 static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
 
-// The parallel parts: TBB normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON,
-// WB_TSAN_THREADS) std::threads, because Debian's TBB is not instrumented and TSan
-// cannot see its hand-offs (as renderParallel does). The work split is the same.
-template <class F> void parallelFor(std::size_t count, const F& f) {
-#ifdef WB_TSAN_THREADS
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i = next++; i < count; i = next++)
-            f(i);
-    };
-    std::thread helper(work);
-    work();
-    helper.join();
-#else
-    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) { f(i); });
-#endif
-}
-template <class A, class B> void parallelInvoke(const A& a, const B& b) {
-#ifdef WB_TSAN_THREADS
-    std::thread helper(b);
-    a();
-    helper.join();
-#else
-    tbb::parallel_invoke(a, b);
-#endif
-}
-
 // 1. Binning: the bin of a centroid, per axis, clamped in float before the conversion
 //    (a huge or NaN product converted to int is undefined behaviour; found by
 //    fuzz_nff): max(NaN, 0) is 0 in SSE, as the scalar !(f >= 0) test was.

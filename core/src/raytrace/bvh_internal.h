@@ -6,10 +6,16 @@
 
 #include <emmintrin.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <thread>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace wb::rt::bvh_detail {
 
@@ -82,5 +88,33 @@ constexpr double kFarScale = 1 + 2 * 3 * (std::numeric_limits<double>::epsilon()
                                      (1 - 3 * std::numeric_limits<double>::epsilon() / 2);
 constexpr float kFarScaleF = 1 + 2 * 3 * (std::numeric_limits<float>::epsilon() / 2) /
                                      (1 - 3 * std::numeric_limits<float>::epsilon() / 2);
+
+// The parallel parts: TBB normally; in the ThreadSanitizer build (-DWORKBENCH_TSAN=ON,
+// WB_TSAN_THREADS) std::threads, because Debian's TBB is not instrumented and TSan
+// cannot see its hand-offs (as renderParallel does). The work split is the same. Used by the build
+// (bvh.cpp) and the collapse (bvh_wide.cpp).
+template <class F> inline void parallelFor(std::size_t count, const F& f) {
+#ifdef WB_TSAN_THREADS
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i = next++; i < count; i = next++)
+            f(i);
+    };
+    std::thread helper(work);
+    work();
+    helper.join();
+#else
+    tbb::parallel_for(std::size_t(0), count, [&](std::size_t i) { f(i); });
+#endif
+}
+template <class A, class B> inline void parallelInvoke(const A& a, const B& b) {
+#ifdef WB_TSAN_THREADS
+    std::thread helper(b);
+    a();
+    helper.join();
+#else
+    tbb::parallel_invoke(a, b);
+#endif
+}
 
 } // namespace wb::rt::bvh_detail

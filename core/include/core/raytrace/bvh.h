@@ -132,6 +132,7 @@ class Bvh : public Aggregate {
     void collapseWide(const void* buildNodes, std::size_t count);
     template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
+    void fillLeafData(std::uint32_t i);
     // Inline: one indirect call from the query to the walk (a cheap ray's cost counts).
     bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const {
         return path_->intersect(*this, ray, tMin, tMax, hit);
