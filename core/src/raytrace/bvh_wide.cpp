@@ -145,7 +145,9 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
     // An inner subtree of at most kMergePrims primitives becomes one leaf of the wide tree
     // (its leaves are contiguous in order_): the leaves' float tests take four primitives
     // at a time, so one leaf of four costs what one of one does, and the slots it frees
-    // fill the nodes. Returns its primitive count, or 0 if it is larger.
+    // fill the nodes. Spheres (the cheapest float test) up to twice that: balls 4 eye rays
+    // +2% (AVX2 8-wide, 5 alternated runs); for triangles 8 lost 5% on mesh shadow rays.
+    // Returns its primitive count, or 0 if it is larger.
     constexpr std::uint32_t kMergePrims = 4;
     auto mergedCount = [&](std::size_t i) -> std::uint32_t {
         std::size_t l = i, r = i;
@@ -153,8 +155,13 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
             l = l + 1;
         while (build[r].count == 0)
             r = build[r].offset;
-        const std::uint32_t n = build[r].offset + build[r].count - build[l].offset;
-        return n <= kMergePrims ? n : 0;
+        const std::uint32_t first = build[l].offset;
+        const std::uint32_t n = build[r].offset + build[r].count - first;
+        if (n <= kMergePrims) return n;
+        if (n > 2 * kMergePrims) return 0;
+        for (std::uint32_t k = first; k < first + n; ++k)
+            if (kind_[k] != kSphere) return 0;
+        return n;
     };
     auto isLeaf = [&](std::size_t i) { return build[i].count > 0 || mergedCount(i) > 0; };
     // 1. The top: subtrees of more than kTaskNodes build nodes are opened here; smaller
