@@ -150,11 +150,17 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
     // Returns its primitive count, or 0 if it is larger.
     constexpr std::uint32_t kMergePrims = 4;
     auto mergedCount = [&](std::size_t i) -> std::uint32_t {
+        // At most 2·kMergePrims leaves, so at most that many inner nodes on either spine:
+        // a longer spine is a larger subtree (the walk stays O(1) per child).
         std::size_t l = i, r = i;
-        while (build[l].count == 0)
+        for (std::uint32_t d = 0; build[l].count == 0; ++d) {
+            if (d >= 2 * kMergePrims) return 0;
             l = l + 1;
-        while (build[r].count == 0)
+        }
+        for (std::uint32_t d = 0; build[r].count == 0; ++d) {
+            if (d >= 2 * kMergePrims) return 0;
             r = build[r].offset;
+        }
         const std::uint32_t first = build[l].offset;
         const std::uint32_t n = build[r].offset + build[r].count - first;
         if (n <= kMergePrims) return n;
