@@ -11,4 +11,4 @@ set yrange [-0.5:*]
 plot 'raytrace_error.csv' every ::1 using ($2==0||$2==1 ? $3 : 1/0):($2==0||$2==1 ? $4 : 1/0) with linespoints lc rgb 'red' pt 7 title 'depth limit 5..0', \
      '' every ::1 using ($2==0||$2==2 ? $3 : 1/0):($2==0||$2==2 ? $4 : 1/0) with linespoints lc rgb 'blue' pt 5 title 'weight cut-off', \
      '' every ::1 using ($2==3 ? $3 : 1/0):($2==3 ? $4 : 1/0) with points lc rgb 'dark-green' pt 9 ps 1.5 title 'binary double-box tree', \
-     '' every ::1 using ($2==0 ? $3 : 1/0):($2==0 ? $4 : 1/0) with points lc rgb 'black' pt 7 ps 1.5 title 'reference (4-wide tree)'
+     '' every ::1 using ($2==0 ? $3 : 1/0):($2==0 ? $4 : 1/0) with points lc rgb 'black' pt 7 ps 1.5 title 'reference (default wide tree)'
