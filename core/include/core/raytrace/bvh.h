@@ -39,7 +39,8 @@ struct BvhOptions {
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
     // 0: automatic (the default: 8 with AVX2, 4 otherwise — the faster one measured,
     // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4 or avx8
-    // overrides it when width and simd are both automatic); 4 or 8: wide float nodes
+    // overrides it when width and simd are both automatic; any other value is ignored with
+    // a message on stderr); 4 or 8: wide float nodes
     // (8 needs AVX2, else 4); 2: binary double nodes (the reference the tests use).
     int width = 0;
     BvhSimd simd = BvhSimd::Auto; // instructions of the wide traversal
