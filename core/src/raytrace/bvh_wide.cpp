@@ -24,10 +24,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <typeinfo>
