@@ -79,30 +79,31 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     //    the string first (to read 0 bytes at the end) copied and zeroed the whole file
     //    again, 16 -> 5 ms of an 18 MB OBJ (docs/bench/obj_load.md).
     out.resize(std::size_t(st.st_size));
+    // One read(2), retried on EINTR; on failure -1 with `error` set and `out` cleared.
+    auto readSome = [&](char* dst, std::size_t cap) -> ssize_t {
+        for (;;) {
+            const ssize_t n = ::read(f.fd, dst, cap);
+            if (n >= 0) return n;
+            if (errno == EINTR) continue;
+            error = path + ": read error (" + std::strerror(errno) + ")";
+            out.clear();
+            return -1;
+        }
+    };
     std::size_t have = 0;
     for (;;) {
         if (have == out.size()) {
             if (have > maxBytes) break;
             char more[4096];
-            const ssize_t n = ::read(f.fd, more, std::min(sizeof more, maxBytes + 1 - have));
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                error = path + ": read error (" + std::strerror(errno) + ")";
-                out.clear();
-                return false;
-            }
+            const ssize_t n = readSome(more, std::min(sizeof more, maxBytes + 1 - have));
+            if (n < 0) return false;
             if (n == 0) break;
             out.append(more, std::size_t(n));
             have += std::size_t(n);
             continue;
         }
-        const ssize_t n = ::read(f.fd, &out[have], out.size() - have);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            error = path + ": read error (" + std::strerror(errno) + ")";
-            out.clear();
-            return false;
-        }
+        const ssize_t n = readSome(&out[have], out.size() - have);
+        if (n < 0) return false;
         if (n == 0) break;
         have += std::size_t(n);
     }
