@@ -98,10 +98,20 @@ struct WidePaths {
     }
 };
 
+BvhOptions binaryTree() {
+    BvhOptions o;
+    o.width = 2;
+    return o;
+}
+
+// What every wide answer is checked against, over one scene: the plain loop, the binary
+// double tree, and the wide tree of every SIMD path (built with `wide`).
 struct Refs {
-    const BruteForce& brute;
-    const Bvh& binary;
-    const WidePaths& paths;
+    BruteForce brute;
+    Bvh binary;
+    WidePaths paths;
+    explicit Refs(const std::vector<std::unique_ptr<Primitive>>& prims, const BvhOptions& wide = {})
+        : brute(prims), binary(prims, binaryTree()), paths(prims, wide) {}
 };
 
 bool compareRayOn(const Refs& r, const Bvh& wide, const Ray& ray, double tMin, double tMax);
@@ -303,8 +313,7 @@ TEST_CASE("rt_bvh_wide: the wide tree is the default, by CPU, and collapses the 
     }
 }
 
-TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is ignored",
-          "[raytrace][bvh]") {
+TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is ignored", "[raytrace][bvh]") {
     std::mt19937_64 g(4);
     Scene s;
     mixedScene(s, 200, g, 1.0);
@@ -348,12 +357,7 @@ TEST_CASE("rt_bvh_wide: random and adversarial rays on every kind, exact hits", 
         std::mt19937_64 g(std::uint64_t(scale * 1000) + 17);
         Scene s;
         mixedScene(s, 700, g, scale);
-        BruteForce brute(s.primitives);
-        BvhOptions bo;
-        bo.width = 2;
-        Bvh binary(s.primitives, bo);
-        const WidePaths wide(s.primitives);
-        const Refs r{brute, binary, wide};
+        const Refs r(s.primitives);
         int hits = 0;
         for (int i = 0; i < 300; ++i) {
             Ray ray;
@@ -385,12 +389,7 @@ TEST_CASE("rt_bvh_wide: ties, shared mesh edges and vertices, duplicates", "[ray
         s.add(Sphere({i * 0.6, 3, 2}, 0.5), 0);
         s.add(Sphere({i * 0.6, 3, 2}, 0.5), 0);
     }
-    BruteForce brute(s.primitives);
-    BvhOptions bo;
-    bo.width = 2;
-    Bvh binary(s.primitives, bo);
-    const WidePaths wide(s.primitives);
-    const Refs r{brute, binary, wide};
+    const Refs r(s.primitives);
     std::mt19937_64 g(21);
     int hits = 0;
     for (int x = 0; x <= 12; ++x)
@@ -414,7 +413,7 @@ TEST_CASE("rt_bvh_wide: ties, shared mesh edges and vertices, duplicates", "[ray
     Ray ray;
     ray.origin = {0.6, 3, 10};
     ray.direction = {0, 0, -1};
-    for (const auto& w : wide.trees) {
+    for (const auto& w : r.paths.trees) {
         Hit h;
         REQUIRE(w->intersect(ray, 0, kInf, h));
         CHECK(h.primitive == s.primitives[s.primitives.size() - 40 + 3].get());
@@ -429,12 +428,7 @@ TEST_CASE("rt_bvh_wide: far origins, tiny direction components and non-unit dire
     std::mt19937_64 g(8);
     Scene s;
     mixedScene(s, 300, g, kS);
-    BruteForce brute(s.primitives);
-    BvhOptions bo;
-    bo.width = 2;
-    Bvh binary(s.primitives, bo);
-    const WidePaths wide(s.primitives);
-    const Refs r{brute, binary, wide};
+    const Refs r(s.primitives);
     int hits = 0;
     for (int i = 0; i < 200; ++i) {
         const Aabb b = s.primitives[g() % (s.primitives.size() - 1)]->bounds();
@@ -477,9 +471,7 @@ TEST_CASE("rt_bvh_wide: images bit-identical to the plain loop and the binary tr
         ParallelRenderOptions opt;
         opt.threads = 1;
         const wb::Image plain = renderParallel(*sf.scene, cam, model, kW, kH, opt);
-        BvhOptions bo;
-        bo.width = 2;
-        Bvh binary(sf.scene->primitives, bo);
+        Bvh binary(sf.scene->primitives, binaryTree());
         sf.scene->setAggregate(&binary);
         const wb::Image bin = renderParallel(*sf.scene, cam, model, kW, kH, opt);
         CHECK(bin.data == plain.data);
@@ -507,12 +499,7 @@ TEST_CASE("rt_bvh_wide: rays grazing spheres and through triangle edges and corn
     std::mt19937_64 g(44);
     Scene s;
     mixedScene(s, 700, g, 1.0);
-    BruteForce brute(s.primitives);
-    BvhOptions bo;
-    bo.width = 2;
-    Bvh binary(s.primitives, bo);
-    const WidePaths wide(s.primitives);
-    const Refs r{brute, binary, wide};
+    const Refs r(s.primitives);
     int hits = 0, grazes = 0;
     for (const auto& p : s.primitives) {
         if (const auto* sp = dynamic_cast<const Sphere*>(p.get())) {
@@ -587,12 +574,7 @@ TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread co
     CHECK_THROWS_AS(build(-1), std::invalid_argument);
     // The tree collapsed from tasks, on every path, against the plain loop (60 rays: the
     // plain loop's every-hit walks over 12,000 primitives are slow under the sanitizers).
-    BruteForce brute(s.primitives);
-    BvhOptions bo;
-    bo.width = 2;
-    Bvh binary(s.primitives, bo);
-    const WidePaths wide(s.primitives);
-    const Refs r{brute, binary, wide};
+    const Refs r(s.primitives);
     int hits = 0;
     for (int i = 0; i < 60; ++i) {
         Ray ray;
@@ -621,12 +603,7 @@ TEST_CASE("rt_bvh_wide: rays from the origin 0 through box corners that are tria
         s.add(Triangle(a, b, c), 0);
         corners.push_back(a);
     }
-    BruteForce brute(s.primitives);
-    BvhOptions bo;
-    bo.width = 2;
-    Bvh binary(s.primitives, bo);
-    const WidePaths wide(s.primitives);
-    const Refs r{brute, binary, wide};
+    const Refs r(s.primitives);
     int hits = 0;
     for (const glm::dvec3& a : corners) {
         Ray ray;
@@ -662,15 +639,10 @@ TEST_CASE("rt_bvh_wide: scenes of one kind, so leaves hold full runs of four", "
             else
                 s.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1, 1))), 0);
         }
-        BruteForce brute(s.primitives);
-        BvhOptions bo;
-        bo.width = 2;
-        Bvh binary(s.primitives, bo);
         BvhOptions big;
         big.maxLeafSize = 7;
         big.traversalCost = 8;
-        const WidePaths wide(s.primitives, big);
-        const Refs r{brute, binary, wide};
+        const Refs r(s.primitives, big);
         int hits = 0;
         for (int i = 0; i < 300; ++i) {
             Ray ray;
