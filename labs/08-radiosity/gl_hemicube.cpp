@@ -292,4 +292,19 @@ bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDis
     return true;
 }
 
+void patchFans(const rad::PatchMesh& mesh, std::vector<glm::vec3>& vertices,
+               std::vector<uint32_t>& items) {
+    vertices.clear();
+    items.clear();
+    for (size_t p = 0; p < mesh.patches.size(); ++p) {
+        const auto c = mesh.cornersOf(int(p));
+        for (size_t k = 1; k + 1 < c.size(); ++k) {
+            vertices.push_back(glm::vec3(c[0]));
+            vertices.push_back(glm::vec3(c[k]));
+            vertices.push_back(glm::vec3(c[k + 1]));
+            items.push_back(uint32_t(p));
+        }
+    }
+}
+
 } // namespace wb

@@ -16,6 +16,7 @@
 // falls back to the usual mapping with a far plane (coarser, stated in gui()).
 #include "common/gl.h"
 #include "core/radiosity/hemicube.h"
+#include "core/radiosity/mesh.h"
 
 #include <glm/glm.hpp>
 
@@ -68,5 +69,11 @@ class GlHemicube {
     glm::dvec3 sceneCentre_{0.0};
     std::vector<uint8_t> readBack_; // RGBA of the whole target
 };
+
+// Each patch of `mesh` as a fan of triangles from its first corner, its index the item id:
+// the geometry the GL hemicube tests and bench upload (the lab uploads its conforming
+// display mesh instead, PatchView::hemicubeGeometry).
+void patchFans(const rad::PatchMesh& mesh, std::vector<glm::vec3>& vertices,
+               std::vector<uint32_t>& items);
 
 } // namespace wb

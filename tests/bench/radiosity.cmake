@@ -4,6 +4,7 @@ add_executable(radiosity_bench radiosity_bench.cpp)
 target_compile_options(radiosity_bench PRIVATE ${WB_WARNINGS})
 target_compile_definitions(radiosity_bench PRIVATE WB_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                                                    WB_BINARY_DIR="${CMAKE_BINARY_DIR}")
+target_include_directories(radiosity_bench PRIVATE ${PROJECT_SOURCE_DIR}/tests)
 target_link_libraries(radiosity_bench PRIVATE core)
 # The smoke run (~6 s) is skipped under the sanitizers, where it would take minutes; the
 # same code paths run there through radiosity_test.

@@ -13,6 +13,7 @@
 #include "core/radiosity/closed_forms.h"
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
+#include "core/radiosity/gauss_legendre.h" // in tests/: the closed-form tests' quadrature
 
 #include <tbb/task_arena.h>
 
@@ -43,13 +44,6 @@ std::string fmt(const char* f, double v) {
     return b;
 }
 
-const double kX8[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                       -0.1834346424956498, 0.1834346424956498,  0.5255324099163290,
-                       0.7966664774136267,  0.9602898564975363};
-const double kW8[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                       0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                       0.2223810344533745, 0.1012285362903763};
-
 bool gQuick = false; // --quick: smoke run (uniform quadrature, less exact reference)
 
 // Breaks on [0,1] graded geometrically towards both ends (levels halvings) or uniform.
@@ -77,16 +71,10 @@ double exactPatchFF(const PatchMesh& m, int i, int j) {
     const auto br = breaks(touch && !gQuick); // --quick: smoke run, reference less exact
     const glm::dvec3 o = ci[0], e1 = ci[1] - ci[0], e2 = ci[3] - ci[0];
     const glm::dvec3 n = m.patches[static_cast<std::size_t>(i)].normal;
-    double sum = 0.0;
-    for (std::size_t a = 0; a + 1 < br.size(); ++a)
-        for (std::size_t b = 0; b + 1 < br.size(); ++b)
-            for (int p = 0; p < 8; ++p)
-                for (int q = 0; q < 8; ++q) {
-                    const double hu = br[a + 1] - br[a], hv = br[b + 1] - br[b];
-                    const double u = br[a] + 0.5 * hu * (1 + kX8[p]), v = br[b] + 0.5 * hv * (1 + kX8[q]);
-                    sum += 0.25 * hu * hv * kW8[p] * kW8[q] * pointToPolygon(o + u * e1 + v * e2, n, cj);
-                }
-    return sum;
+    // Over (u, v) in [0,1]², whose area is 1: the average is the integral.
+    return test::gaussAverage(br, br, [&](double u, double v) {
+        return pointToPolygon(o + u * e1 + v * e2, n, cj);
+    });
 }
 
 struct FfRow {

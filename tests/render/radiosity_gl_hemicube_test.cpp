@@ -184,15 +184,7 @@ std::vector<Comparison> compareScene(bool aligned) {
     wb::GlHemicube gl;
     std::vector<glm::vec3> verts;
     std::vector<uint32_t> items;
-    for (size_t p = 0; p < mesh.patches.size(); ++p) {
-        const auto c = mesh.cornersOf(int(p));
-        for (size_t k = 1; k + 1 < c.size(); ++k) {
-            verts.push_back(glm::vec3(c[0]));
-            verts.push_back(glm::vec3(c[k]));
-            verts.push_back(glm::vec3(c[k + 1]));
-            items.push_back(uint32_t(p));
-        }
-    }
+    wb::patchFans(mesh, verts, items);
     std::string err;
     REQUIRE(gl.setGeometry(verts, items, err));
     std::vector<int> patches;

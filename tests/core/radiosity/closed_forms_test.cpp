@@ -2,6 +2,7 @@
 // (pointToPolygon) integrated over the emitter by Gauss–Legendre, and published table values.
 // Also: how far the course's centre-to-centre (15.20) is off for near pairs.
 #include "core/radiosity/closed_forms.h"
+#include "gauss_legendre.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/constants.hpp>
@@ -12,30 +13,6 @@
 using namespace wb::rad;
 
 namespace {
-
-const double kX8[8] = {-0.9602898564975363, -0.7966664774136267, -0.5255324099163290,
-                       -0.1834346424956498, 0.1834346424956498, 0.5255324099163290,
-                       0.7966664774136267, 0.9602898564975363};
-const double kW8[8] = {0.1012285362903763, 0.2223810344533745, 0.3137066458778873,
-                       0.3626837833783620, 0.3626837833783620, 0.3137066458778873,
-                       0.2223810344533745, 0.1012285362903763};
-
-// ∫∫ f over [0,a]×[0,b] / (ab) by 8-point Gauss–Legendre on the cells given by the breaks.
-double average(const std::vector<double>& xs, const std::vector<double>& ys,
-               const std::function<double(double, double)>& f) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i + 1 < xs.size(); ++i)
-        for (std::size_t j = 0; j + 1 < ys.size(); ++j)
-            for (int p = 0; p < 8; ++p)
-                for (int q = 0; q < 8; ++q) {
-                    const double hx = xs[i + 1] - xs[i], hy = ys[j + 1] - ys[j];
-                    const double x = xs[i] + 0.5 * hx * (1 + kX8[p]);
-                    const double y = ys[j] + 0.5 * hy * (1 + kX8[q]);
-                    sum += 0.25 * hx * hy * kW8[p] * kW8[q] * f(x, y);
-                }
-    const double area = (xs.back() - xs.front()) * (ys.back() - ys.front());
-    return sum / area;
-}
 
 std::vector<double> uniform(double a, int n) {
     std::vector<double> v;
@@ -58,9 +35,10 @@ TEST_CASE("parallel rectangles: Howell C-11 against the integrated contour formu
     for (auto abc : {glm::dvec3(1, 1, 1), glm::dvec3(2, 0.5, 0.3), glm::dvec3(0.2, 3, 5)}) {
         const double a = abc.x, b = abc.y, c = abc.z;
         const std::vector<glm::dvec3> top = {{0, 0, c}, {a, 0, c}, {a, b, c}, {0, b, c}};
-        const double num = average(uniform(a, 6), uniform(b, 6), [&](double x, double y) {
+        const auto f = [&](double x, double y) {
             return pointToPolygon({x, y, 0}, {0, 0, 1}, top);
-        });
+        };
+        const double num = test::gaussAverage(uniform(a, 6), uniform(b, 6), f);
         // The integrand is analytic on the closed rectangle: 8-point Gauss on 6×6 cells
         // converges far below 1e-10; the closed form is evaluated in double (~1e-15).
         CHECK(parallelRectangles(a, b, c) == Approx(num).epsilon(1e-10));
@@ -78,7 +56,7 @@ TEST_CASE("perpendicular rectangles with a common edge: Howell C-14 against the 
         // abruptly at the corners x = 0 and x = l.
         std::vector<double> xs = graded(0.5 * l, 40);
         for (int k = static_cast<int>(xs.size()) - 2; k >= 0; --k) xs.push_back(l - xs[static_cast<std::size_t>(k)]);
-        const double num = average(xs, graded(w1, 40), [&](double x, double z) {
+        const double num = test::gaussAverage(xs, graded(w1, 40), [&](double x, double z) {
             return pointToPolygon({x, 0, z}, {0, 1, 0}, recv);
         });
         // The integrand has a log-type kink at the common edge: geometric grading (40 halvings,
