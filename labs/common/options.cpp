@@ -1,6 +1,9 @@
 #include "options.h"
 
 #include "cli_values.h"
+#include "keyboard_layout.h"
+
+#include "core/i18n.h"
 
 #include <CLI/CLI.hpp>
 
@@ -14,8 +17,8 @@ namespace {
 constexpr int kMaxSide = 8192;
 
 // The flags the shell declares that take a value (see cli::joinValues).
-const std::vector<std::string> kValueFlags = {"--out",    "--size",       "--keys",    "--root",
-                                              "--frames", "--screenshot", "--ui-scale"};
+const std::vector<std::string> kValueFlags = {"--out",    "--size",       "--keys",     "--root",
+                                              "--frames", "--screenshot", "--ui-scale", "--lang"};
 
 bool parseScale(const std::string& s, float& out) {
     char* end = nullptr;
@@ -25,7 +28,24 @@ bool parseScale(const std::string& s, float& out) {
     return true;
 }
 
+// "en, ru, qps" for the messages about --lang.
+std::string languageList() {
+    std::string list;
+    for (const auto& code : languages())
+        list += (list.empty() ? "" : ", ") + code;
+    return list;
+}
+
 } // namespace
+
+bool applyLanguageFlag(int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--lang" && i + 1 < argc) return setLanguage(argv[i + 1]);
+        if (arg.rfind("--lang=", 0) == 0) return setLanguage(arg.substr(7));
+    }
+    return true;
+}
 
 bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHelp>& labOptions,
                   ShellOptions& o, std::string& error) {
@@ -66,6 +86,11 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
               "--ui-scale '" + v + "': expected a number from 0.5 to 4 (1 = normal size)");
     });
     app.add_flag("--check-panel", o.checkPanel);
+    app.add_option_function<std::string>("--lang", [&](const std::string& v) {
+        check("--lang", setLanguage(v),
+              trf("--lang '%s': expected one of %s", v.c_str(), languageList().c_str()));
+        o.lang = v;
+    });
 
     // The lab's own options, kept in command-line order for Lab::setOption.
     std::vector<std::string> valueFlags = kValueFlags;
@@ -134,6 +159,18 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
     codes.clear();
     for (size_t i = 0; i < keys.size(); ++i) {
         char c = keys[i];
+        if (static_cast<unsigned char>(c) >= 0x80) { // typed on the Russian layout: 'п' is 'g'
+            const size_t at = i;
+            const int us = usKeyForRussian(decodeUtf8(keys, i));
+            if (us < 0) {
+                error = trf("--keys: '%s' is not a key of the US or Russian layout",
+                            keys.substr(at, i - at).c_str());
+                return false;
+            }
+            codes.push_back(us);
+            --i; // the loop steps past the character's last byte
+            continue;
+        }
         if (c != '{') {
             codes.push_back(static_cast<unsigned char>(c));
             continue;

@@ -30,6 +30,7 @@ struct ShellOptions {
     bool smoke = false;       // --smoke: windowed, press every one-character key of the lab twice, one press per frame
     float uiScale = 1.0f;     // --ui-scale X: panel text and widgets X times the normal size
     bool checkPanel = false;  // --check-panel: headless, lay the panel out and fail on clipped text
+    std::string lang;         // --lang ru|en|qps: the language (else the environment's, else English)
     std::vector<std::pair<std::string, std::string>> labOptions; // the lab's own --name value pairs
 };
 
@@ -39,6 +40,11 @@ int windowWidth(const ShellOptions& opts, bool panelFillsWindow);
 // Parses argv with CLI11; returns false with a message naming the problem on bad input.
 bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHelp>& labOptions,
                   ShellOptions& out, std::string& error);
+
+// Sets the language from --lang (or --lang=X) if argv has it, before anything else is parsed, so
+// that even the messages about bad flags are in the user's language. False for a code we have no
+// catalogue for (the language is then the environment's, and parseOptions says so).
+bool applyLanguageFlag(int argc, const char* const* argv);
 
 // Splits a --keys string into key codes: characters stand for themselves, and
 // {left} {right} {up} {down} {pgup} {pgdn} {home} {end} {f1}..{f12} {esc} {space} {{ name the others.

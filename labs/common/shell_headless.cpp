@@ -116,6 +116,7 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
 } // namespace
 
 int runLab(int argc, char** argv, LabFactory factory) {
+    applyLanguageFlag(argc, argv); // first: every message below is in the user's language
     auto lab = factory();
     ShellOptions opts;
     std::string error;

@@ -5,8 +5,12 @@
 #include "imgui_input.h"
 #include "panel.h"
 #include "shell.h"
+#include "x_keyboard.h"
+
+#include "core/i18n.h"
 
 #include <GL/freeglut.h>
+#include <GL/glx.h>
 #include <imgui.h>
 #include <imgui_impl_glut.h>
 #include <imgui_impl_opengl2.h>
@@ -38,11 +42,14 @@ struct WindowState {
     std::vector<int> smokeKeys; // --smoke: keys still to press, one per frame
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
-    bool timerPending = false; // a glutTimerFunc redraw is on its way (busy lab)
+    bool timerPending = false;     // a glutTimerFunc redraw is on its way (busy lab)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
-    bool dragging = false;     // left button down outside the panel
-    bool moved = false;        // the drag moved far enough to be a rotation, not a click
+    bool dragging = false;         // left button down outside the panel
+    bool moved = false;            // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
+    XKeyboard xkb;        // key presses as X sees them: Cyrillic text, keys on any layout
+    bool logKeys = false; // WB_LOG_KEYS=1: print each lab key (the layout tests read it)
+    std::string language; // the language the window title was last set in
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
 WindowState* g = nullptr;
@@ -77,6 +84,10 @@ void setUiScale(float scale) {
 }
 
 void labKey(int code) {
+    if (g->logKeys) {
+        std::fprintf(stderr, "lab key %d\n", code);
+        std::fflush(stderr);
+    }
     if (code == 27) return quit();
     // A lab whose panel is its whole window (the launcher) has no scene to zoom or panel to hide.
     if (g->lab->panelFillsWindow() || !shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
@@ -170,6 +181,10 @@ void display() {
         g->smokeKeys.erase(g->smokeKeys.begin());
     }
     applyUiScale();
+    if (g->language != language()) { // switched in the panel (View > Language)
+        g->language = language();
+        glutSetWindowTitle(g->lab->title().c_str());
+    }
     g->input.applyToFrame(ImGui::GetIO());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGLUT_NewFrame();
@@ -239,13 +254,39 @@ bool uiScaleKey(unsigned char c, int mods) {
     return true;
 }
 
+void pollKeys(int timer);
+
 void keyboard(unsigned char c, int, int) {
     const int mods = glutGetModifiers();
     g->input.keyboard(c, true, mods);
     changed();
     if (uiScaleKey(c, mods)) return;
     if (ImGui::GetIO().WantCaptureKeyboard) return;
+    // Under a non-Latin layout the X reader sends the key the US layout has there (x_keyboard.h);
+    // GLUT's character for it ('.' where US has '/') would act a second time, or as another key.
+    pollKeys(-1); // this same press, read from X: its group decides
+    if (c >= 0x20 && c < 0x7f && !g->xkb.lastPressLatin()) return;
     labKey(c);
+}
+
+// Key presses read from X beside GLUT (x_keyboard.h): polled often enough to feel immediate
+// (a wake-up every 20 ms costs no measurable CPU while idle).
+constexpr unsigned kKeyPollMs = 20;
+
+// timer >= 0: called by the GLUT timer (which is re-armed); -1: from the keyboard callback.
+void pollKeys(int timer) {
+    g->xkb.poll(
+        [](unsigned c) {
+            g->input.character(c);
+            changed();
+        },
+        [](int c) {
+            if (!ImGui::GetIO().WantCaptureKeyboard)
+                labKey(c);
+            else
+                changed();
+        });
+    if (timer >= 0) glutTimerFunc(kKeyPollMs, pollKeys, 0);
 }
 
 void keyboardUp(unsigned char c, int, int) {
@@ -328,6 +369,7 @@ int execHeadless(char** argv) {
 int runLab(int argc, char** argv, LabFactory factory) {
     WindowState state;
     g = &state;
+    applyLanguageFlag(argc, argv); // first: every message below is in the user's language
     state.lab = factory();
     state.program = argv[0];
     std::string error;
@@ -366,6 +408,13 @@ int runLab(int argc, char** argv, LabFactory factory) {
     state.windowHeight = state.opts.height;
     glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());
+    state.language = language();
+    // The window's X id and display, for the second connection that reads keys (x_keyboard.h).
+    if (!state.xkb.open(DisplayString(glXGetCurrentDisplay()), glXGetCurrentDrawable()))
+        std::fprintf(stderr, "%s: %s\n", argv[0],
+                     tr("cannot read the keyboard from X: keys work on the Latin layout only"));
+    const char* logKeys = std::getenv("WB_LOG_KEYS");
+    state.logKeys = logKeys && *logKeys == '1';
     layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
@@ -395,6 +444,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutMotionFunc(motion);
     glutPassiveMotionFunc(passiveMotion);
     glutMouseWheelFunc(wheel);
+    glutTimerFunc(kKeyPollMs, pollKeys, 0);
 
     state.lab->init();
     for (int k : keys)
