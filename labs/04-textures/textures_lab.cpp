@@ -7,6 +7,8 @@
 #include "environment.h"
 #include "texture_file.h"
 
+#include "core/i18n.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
@@ -82,21 +84,21 @@ void upload(GLuint tex, const Image& img) {
 class TexturesLab : public Lab {
   public:
     explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_) {}
-    std::string title() const override { return "Lab 04 - textures"; }
+    std::string title() const override { return tr("Lab 04 - textures"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"0", "overview: mirror object, textured sphere and torus"},
-                {"1", "flat textured object (wrap and filter show here)"},
-                {"2", "hand-made sphere"},
-                {"3", "hand-made torus"},
-                {"4", "mirror object: GL_SPHERE_MAP texgen"},
-                {"w", "GL_REPEAT / GL_CLAMP"},
-                {"f", "filter: nearest / linear / mipmaps"},
-                {"t", "texture: bricks / uv grid"},
-                {"5", "bump-mapped torus (GLSL, section 1.5.2)"},
-                {"k", "bump mapping on/off (smooth torus, same shader)"},
-                {"o", "mirror object: sphere / torus"},
-                {"b", "background room on/off"},
-                {"Left/Right/Up/Down", "spin the object"}};
+        return {{"0", tr("overview: mirror object, textured sphere and torus")},
+                {"1", tr("flat textured object (wrap and filter show here)")},
+                {"2", tr("hand-made sphere")},
+                {"3", tr("hand-made torus")},
+                {"4", tr("mirror object: GL_SPHERE_MAP texgen")},
+                {"w", tr("GL_REPEAT / GL_CLAMP")},
+                {"f", tr("filter: nearest / linear / mipmaps")},
+                {"t", tr("texture: bricks / uv grid")},
+                {"5", tr("bump-mapped torus (GLSL, section 1.5.2)")},
+                {"k", tr("bump mapping on/off (smooth torus, same shader)")},
+                {"o", tr("mirror object: sphere / torus")},
+                {"b", tr("background room on/off")},
+                {tr("Left/Right/Up/Down"), tr("spin the object")}};
     }
     std::vector<OptionHelp> options() const override {
         return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};
@@ -245,34 +247,34 @@ class TexturesLab : public Lab {
 
     void gui() override {
         int scene = int(s_->scene);
-        ImGui::Text("Scene (0-5)");
-        ImGui::RadioButton("all", &scene, 0);
+        ImGui::Text(tr("Scene (0-5)"));
+        ImGui::RadioButton(tr("all"), &scene, 0);
         ImGui::SameLine();
-        ImGui::RadioButton("flat", &scene, 1);
+        ImGui::RadioButton(tr("flat"), &scene, 1);
         ImGui::SameLine();
-        ImGui::RadioButton("sphere", &scene, 2);
+        ImGui::RadioButton(tr("sphere"), &scene, 2);
         ImGui::SameLine();
-        ImGui::RadioButton("torus", &scene, 3);
+        ImGui::RadioButton(tr("torus"), &scene, 3);
         ImGui::SameLine();
-        ImGui::RadioButton("mirror", &scene, 4);
+        ImGui::RadioButton(tr("mirror"), &scene, 4);
         ImGui::SameLine();
-        ImGui::RadioButton("bump", &scene, 5);
+        ImGui::RadioButton(tr("bump"), &scene, 5);
         s_->scene = TextureScene(scene);
-        ImGui::Checkbox("GL_REPEAT (w; off = GL_CLAMP)", &s_->repeat);
+        ImGui::Checkbox(tr("GL_REPEAT (w; off = GL_CLAMP)"), &s_->repeat);
         int filter = int(s_->filter);
-        ImGui::Combo("filter (f)", &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
+        ImGui::Combo(tr("filter (f)"), &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
         s_->filter = TextureFilter(filter);
-        ImGui::Combo("texture (t)", &s_->texture, "bricks\0uv grid\0");
-        ImGui::Checkbox("mirror torus (o; off = sphere)", &s_->mirrorTorus);
-        ImGui::Checkbox("background room (b)", &s_->background);
-        ImGui::Checkbox("bump mapping (k)", &s_->bump);
+        ImGui::Combo(tr("texture (t)"), &s_->texture, "bricks\0uv grid\0");
+        ImGui::Checkbox(tr("mirror torus (o; off = sphere)"), &s_->mirrorTorus);
+        ImGui::Checkbox(tr("background room (b)"), &s_->background);
+        ImGui::Checkbox(tr("bump mapping (k)"), &s_->bump);
         float depth = float(s_->bumpDepth);
-        if (ImGui::SliderFloat("bump depth", &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
+        if (ImGui::SliderFloat(tr("bump depth"), &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
         float spin[2] = {float(s_->spinX), float(s_->spinY)};
         if (ImGui::DragFloat2("spin x, y (arrows)", spin)) s_->spinX = spin[0], s_->spinY = spin[1];
-        ImGui::Text("sphere map rebuilt %d times (once per new view)", s_->sphereMapBuilds);
-        ImGui::TextWrapped("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
-                           "pole vertices take s at their slice's middle.");
+        ImGui::Text(tr("sphere map rebuilt %d times (once per new view)"), s_->sphereMapBuilds);
+        ImGui::TextWrapped(tr("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
+                              "pole vertices take s at their slice's middle."));
         if (!s_->message.empty())
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%s", s_->message.c_str());
     }

@@ -7,6 +7,8 @@
 #include "common/gl.h"
 #include "common/gl_util.h"
 
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -50,26 +52,26 @@ class RaytraceLab : public Lab {
   public:
     RaytraceState s;
 
-    std::string title() const override { return "Lab 07 - ray tracing vs rasterization"; }
+    std::string title() const override { return tr("Lab 07 - ray tracing vs rasterization"); }
 
     std::vector<KeyHelp> keys() const override {
-        return {{"g", "OpenGL Phong rasterization"},
-                {"G", "ray traced (background, tile by tile)"},
-                {"Left/Right", "rotate about the vertical"},
-                {"Up/Down", "rotate up/down"},
-                {"f", "fixed function / per-fragment GLSL Phong"},
-                {"d", "difference heat map raster vs trace"},
-                {"m", "tracer model course / phong"},
-                {"b", "BVH on/off"},
-                {"x", "cancel the trace / the timing experiment"},
-                {"n", "next scene"},
-                {"N", "previous scene"},
-                {"[", "depth limit down"},
-                {"]", "depth limit up"},
-                {"r", "trace resolution 1, 1/2, 1/4"},
-                {"c", "clear the ray inspector"},
-                {"t", "run the timing experiment"},
-                {"click", "inspect the ray tree of a pixel"}};
+        return {{"g", tr("OpenGL Phong rasterization")},
+                {"G", tr("ray traced (background, tile by tile)")},
+                {tr("Left/Right"), tr("rotate about the vertical")},
+                {tr("Up/Down"), tr("rotate up/down")},
+                {"f", tr("fixed function / per-fragment GLSL Phong")},
+                {"d", tr("difference heat map raster vs trace")},
+                {"m", tr("tracer model course / phong")},
+                {"b", tr("BVH on/off")},
+                {"x", tr("cancel the trace / the timing experiment")},
+                {"n", tr("next scene")},
+                {"N", tr("previous scene")},
+                {"[", tr("depth limit down")},
+                {"]", tr("depth limit up")},
+                {"r", tr("trace resolution 1, 1/2, 1/4")},
+                {"c", tr("clear the ray inspector")},
+                {"t", tr("run the timing experiment")},
+                {tr("click"), tr("inspect the ray tree of a pixel")}};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -443,8 +445,7 @@ class RaytraceLab : public Lab {
             st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
         if (st.nonFinitePixels) {
             // Written black, the picture would pass for fine: the shell writes nothing.
-            std::fprintf(stderr,
-                         "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n",
+            std::fprintf(stderr, "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n",
                          scene_.name.c_str(), st.nonFinitePixels);
             headlessFailed_ = true;
         }
@@ -1115,10 +1116,10 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     lo = std::floor(lo);
     hi = std::max(std::ceil(hi), lo + 1);
     const ImU32 yellow = IM_COL32(255, 220, 60, 255), cyan = IM_COL32(80, 220, 255, 255);
-    ImGui::TextUnformatted("trace time per scene (log scale):");
-    ImGui::TextColored(ImColor(yellow), "-- BVH");
+    ImGui::TextUnformatted(tr("trace time per scene (log scale):"));
+    ImGui::TextColored(ImColor(yellow), tr("-- BVH"));
     ImGui::SameLine();
-    ImGui::TextColored(ImColor(cyan), "-- no BVH (brute force)");
+    ImGui::TextColored(ImColor(cyan), tr("-- no BVH (brute force)"));
     const float w = ImGui::GetContentRegionAvail().x, h = 120.0f;
     const ImVec2 pos = ImGui::GetCursorScreenPos();
     // Both series on one log scale, drawn on an ImGui frame (PlotLines has no log axis
@@ -1185,7 +1186,7 @@ void plotTimings(const std::vector<TimingRow>& rows) {
 
 void RaytraceLab::gui() {
     wrapText(scene_.about);
-    if (ImGui::BeginCombo("scene", s.sceneName.c_str())) {
+    if (ImGui::BeginCombo(tr("scene"), s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())
             if (ImGui::Selectable(n.c_str(), n == s.sceneName)) {
                 std::string err;
@@ -1193,12 +1194,12 @@ void RaytraceLab::gui() {
             }
         ImGui::EndCombo();
     }
-    ImGui::TextUnformatted("file (.nff / .obj):");
+    ImGui::TextUnformatted(tr("file (.nff / .obj):"));
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("load").x - 2 * ImGui::GetStyle().FramePadding.x -
                             ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
     ImGui::SameLine();
-    if (ImGui::Button("load")) {
+    if (ImGui::Button(tr("load"))) {
         std::string err;
         fileError_ = loadScene(fileBuffer_, err) ? "" : err;
     }
@@ -1217,13 +1218,13 @@ void RaytraceLab::gui() {
                   ? (std::to_string(meshStats_.standIns) + " objects as one bounding box").c_str()
                   : "");
     int mode = s.traced ? 1 : 0;
-    ImGui::RadioButton("g: OpenGL", &mode, 0);
+    ImGui::RadioButton(tr("g: OpenGL"), &mode, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("G: ray traced", &mode, 1);
+    ImGui::RadioButton(tr("G: ray traced"), &mode, 1);
     s.traced = mode == 1;
-    ImGui::Checkbox("f: GLSL Phong", &s.glsl);
+    ImGui::Checkbox(tr("f: GLSL Phong"), &s.glsl);
     ImGui::SameLine();
-    ImGui::Checkbox("d: heat map", &s.showDiff);
+    ImGui::Checkbox(tr("d: heat map"), &s.showDiff);
     if (!programError_.empty()) wrapf("shader: %s", programError_.c_str());
 
     ImGui::Separator();
@@ -1233,7 +1234,7 @@ void RaytraceLab::gui() {
         // Up here, where it is seen without scrolling: the table and plot are at the end.
         wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
         ImGui::ProgressBar(float(es.fraction));
-        if (ImGui::Button("x: cancel experiment")) cancelExperiment();
+        if (ImGui::Button(tr("x: cancel experiment"))) cancelExperiment();
         if (s.traced) wrapText("The view's own trace waits while the experiment runs.");
         ImGui::Separator();
     }
@@ -1279,7 +1280,7 @@ void RaytraceLab::gui() {
     if (tree_) {
         wrapf("ray tree of pixel (%d, %d), screen (%g, %g)", inspectedPixel_.x, inspectedPixel_.y,
               inspectedScreen_.x, inspectedScreen_.y);
-        ImGui::Checkbox("draw the ray path", &s.showRayPath);
+        ImGui::Checkbox(tr("draw the ray path"), &s.showRayPath);
         for (const std::string& l : treeLines_)
             wrapText(l);
     } else {
@@ -1287,9 +1288,9 @@ void RaytraceLab::gui() {
     }
     ImGui::Separator();
     int model = s.model == ModelKind::Course ? 0 : 1;
-    ImGui::RadioButton("course model", &model, 0);
+    ImGui::RadioButton(tr("course model"), &model, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("phong model", &model, 1);
+    ImGui::RadioButton(tr("phong model"), &model, 1);
     s.model = model == 0 ? ModelKind::Course : ModelKind::Phong;
     if (s.model == ModelKind::Course) {
         // Seed 000's SH = distScale/dist is made for its scene (lights ~60-100 units away):
@@ -1310,12 +1311,12 @@ void RaytraceLab::gui() {
             }
         }
     }
-    ImGui::SliderInt("depth limit", &s.maxDepth, 0, 20);
+    ImGui::SliderInt(tr("depth limit"), &s.maxDepth, 0, 20);
     float w = float(s.minWeight);
-    if (ImGui::SliderFloat("weight cut", &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
-    ImGui::SliderInt("threads", &s.threads, 0, 64, s.threads == 0 ? "all cores" : "%d");
+    if (ImGui::SliderFloat(tr("weight cut"), &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
+    ImGui::SliderInt(tr("threads"), &s.threads, 0, 64, s.threads == 0 ? "all cores" : "%d");
     int res = s.divisor == 1 ? 0 : s.divisor == 2 ? 1 : 2;
-    ImGui::TextUnformatted("trace res.");
+    ImGui::TextUnformatted(tr("trace res."));
     ImGui::SameLine();
     ImGui::RadioButton("1/1", &res, 0);
     ImGui::SameLine();
@@ -1323,7 +1324,7 @@ void RaytraceLab::gui() {
     ImGui::SameLine();
     ImGui::RadioButton("1/4", &res, 2);
     s.divisor = 1 << res;
-    if (ImGui::Checkbox("b: BVH", &s.bvh)) applyAccel();
+    if (ImGui::Checkbox(tr("b: BVH"), &s.bvh)) applyAccel();
     if (!bvhAvailable_ && s.bvh)
         wrapText("(no BVH: brute force over all objects)");
     else if (scene_.accel)
@@ -1333,28 +1334,28 @@ void RaytraceLab::gui() {
 
     ImGui::Separator();
     if (!es.active) {
-        if (ImGui::Button("t: run timing experiment")) startExperiment();
+        if (ImGui::Button(tr("t: run timing experiment"))) startExperiment();
         if (es.cancelled) {
             ImGui::SameLine();
-            ImGui::TextUnformatted("(cancelled)");
+            ImGui::TextUnformatted(tr("(cancelled)"));
         }
     } else {
         wrapText("timing experiment running (progress at the top; x cancels)");
     }
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("scene");
-        ImGui::TableSetupColumn("raster");
-        ImGui::TableSetupColumn("BVH");
-        ImGui::TableSetupColumn("no BVH");
-        ImGui::TableSetupColumn("Mray/s");
+        ImGui::TableSetupColumn(tr("scene"));
+        ImGui::TableSetupColumn(tr("raster"));
+        ImGui::TableSetupColumn(tr("BVH"));
+        ImGui::TableSetupColumn(tr("no BVH"));
+        ImGui::TableSetupColumn(tr("Mray/s"));
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(r.scene.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.1fms", r.rasterMs);
+            ImGui::Text(tr("%.1fms"), r.rasterMs);
             ImGui::TableNextColumn();
             if (r.traceSeconds >= 0) ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();

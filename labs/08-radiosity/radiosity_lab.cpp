@@ -12,6 +12,8 @@
 #include "core/radiosity/smoothing.h"
 #include "core/radiosity/solver.h"
 
+#include "core/i18n.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <imgui.h>
 
@@ -33,13 +35,15 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double luminance(const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+double luminance(const glm::dvec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
 
 // False colour of t in [0, 1]: black, blue, magenta, orange, yellow, white (a heat scale
 // that stays readable on the grey of unselected surfaces).
 glm::vec3 heat(double t) {
     t = std::clamp(t, 0.0, 1.0);
-    const glm::vec3 stops[] = {{0.02f, 0.02f, 0.1f}, {0.1f, 0.2f, 0.9f}, {0.8f, 0.1f, 0.7f},
+    const glm::vec3 stops[] = {{0.02f, 0.02f, 0.1f}, {0.1f, 0.2f, 0.9f},  {0.8f, 0.1f, 0.7f},
                                {1.0f, 0.5f, 0.0f},   {1.0f, 0.95f, 0.2f}, {1.0f, 1.0f, 1.0f}};
     const double x = t * 5.0;
     const int i = std::min(4, int(x));
@@ -63,21 +67,21 @@ class RadiosityLab : public Lab {
   public:
     RadiosityState s;
 
-    std::string title() const override { return "Lab 08 - radiosity"; }
+    std::string title() const override { return tr("Lab 08 - radiosity"); }
 
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "form factors by rays"},
-                {"2", "form factors by CPU hemicube"},
-                {"3", "form factors by GL hemicube"},
-                {"s", "smooth / flat"},
-                {"p", "patch outlines"},
-                {"space", "one progressive step"},
-                {"r", "run to convergence (any key stops)"},
-                {"a", "adaptive subdivision"},
-                {"[", "smaller patches"},
-                {"]", "larger patches"},
-                {"n", "next scene"},
-                {"click", "a patch: its F row and hemicube"}};
+        return {{"1", tr("form factors by rays")},
+                {"2", tr("form factors by CPU hemicube")},
+                {"3", tr("form factors by GL hemicube")},
+                {"s", tr("smooth / flat")},
+                {"p", tr("patch outlines")},
+                {tr("space"), tr("one progressive step")},
+                {"r", tr("run to convergence (any key stops)")},
+                {"a", tr("adaptive subdivision")},
+                {"[", tr("smaller patches")},
+                {"]", tr("larger patches")},
+                {"n", tr("next scene")},
+                {tr("click"), tr("a patch: its F row and hemicube")}};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -119,9 +123,12 @@ class RadiosityLab : public Lab {
             return true;
         }
         if (name == "method") {
-            if (value == "rays") s.method = FfMethod::Rays;
-            else if (value == "cpu") s.method = FfMethod::CpuHemicube;
-            else if (value == "gl") s.method = FfMethod::GlHemicube;
+            if (value == "rays")
+                s.method = FfMethod::Rays;
+            else if (value == "cpu")
+                s.method = FfMethod::CpuHemicube;
+            else if (value == "gl")
+                s.method = FfMethod::GlHemicube;
             else {
                 error = "expected rays, cpu or gl, got '" + value + "'";
                 return false;
@@ -129,9 +136,12 @@ class RadiosityLab : public Lab {
             return true;
         }
         if (name == "solver") {
-            if (value == "progressive") s.solver = 0;
-            else if (value == "jacobi") s.solver = 1;
-            else if (value == "gauss-seidel") s.solver = 2;
+            if (value == "progressive")
+                s.solver = 0;
+            else if (value == "jacobi")
+                s.solver = 1;
+            else if (value == "gauss-seidel")
+                s.solver = 2;
             else {
                 error = "expected progressive, jacobi or gauss-seidel, got '" + value + "'";
                 return false;
@@ -187,7 +197,9 @@ class RadiosityLab : public Lab {
 #endif
     }
 
-    ~RadiosityLab() override { stopRun(); }
+    ~RadiosityLab() override {
+        stopRun();
+    }
 
     bool key(int k) override {
 #if defined(WB_HEADLESS)
@@ -238,7 +250,8 @@ class RadiosityLab : public Lab {
 #endif
             return true;
         }
-        default: return false;
+        default:
+            return false;
         }
     }
 
@@ -250,19 +263,35 @@ class RadiosityLab : public Lab {
         return true;
     }
 
-    bool busy() const override { return running(); }
+    bool busy() const override {
+        return running();
+    }
 
     void draw(const View& view) override;
     void gui() override;
 
     // Test hooks.
-    int patchCount() const { return model_ ? int(model_->mesh.patches.size()) : 0; }
-    int stepCount() const { return snapshot().steps; }
-    double residual() const { return snapshot().residual; }
-    std::vector<glm::dvec3> displayB() const { return snapshot().B; }
-    int selected() const { return selected_; }
-    const std::vector<float>& selectedRow() const { return selectedRow_; }
-    const rad::ItemBuffer& selectedItems() const { return selectedItems_; }
+    int patchCount() const {
+        return model_ ? int(model_->mesh.patches.size()) : 0;
+    }
+    int stepCount() const {
+        return snapshot().steps;
+    }
+    double residual() const {
+        return snapshot().residual;
+    }
+    std::vector<glm::dvec3> displayB() const {
+        return snapshot().B;
+    }
+    int selected() const {
+        return selected_;
+    }
+    const std::vector<float>& selectedRow() const {
+        return selectedRow_;
+    }
+    const rad::ItemBuffer& selectedItems() const {
+        return selectedItems_;
+    }
     void select(int patch) {
         selected_ = patch;
         selectedDirty_ = true;
@@ -270,19 +299,22 @@ class RadiosityLab : public Lab {
     std::vector<int> patchSurfaces() const {
         std::vector<int> out;
         if (model_)
-            for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.surface);
+            for (const rad::Patch& p : model_->mesh.patches)
+                out.push_back(p.surface);
         return out;
     }
     std::vector<glm::dvec3> patchCentres() const {
         std::vector<glm::dvec3> out;
         if (model_)
-            for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.centre);
+            for (const rad::Patch& p : model_->mesh.patches)
+                out.push_back(p.centre);
         return out;
     }
     std::vector<std::string> surfaceNames() const {
         std::vector<std::string> out;
         if (model_)
-            for (const rad::Surface& sf : model_->mesh.surfaces) out.push_back(sf.name);
+            for (const rad::Surface& sf : model_->mesh.surfaces)
+                out.push_back(sf.name);
         return out;
     }
 
@@ -458,7 +490,8 @@ class RadiosityLab : public Lab {
                 // provider serially on this thread) and the sweeps read the stored matrix.
                 if (!model_->ff->stored())
                     throw std::runtime_error("Jacobi / Gauss-Seidel with GL rows need F stored (at "
-                                             "most " + std::to_string(fc.maxStoredPatches) +
+                                             "most " +
+                                             std::to_string(fc.maxStoredPatches) +
                                              " patches); use progressive or the CPU hemicube");
                 model_->ff->computeAll();
             }
@@ -466,7 +499,8 @@ class RadiosityLab : public Lab {
         } catch (const std::exception& e) {
             // Never leave the lab without a solver: progressive with the CPU hemicube.
             message_ = e.what();
-            std::fprintf(stderr, "lab08: %s (progressive with the CPU hemicube instead)\n", e.what());
+            std::fprintf(stderr, "lab08: %s (progressive with the CPU hemicube instead)\n",
+                         e.what());
             s.method = FfMethod::CpuHemicube;
             s.solver = 0;
             fc.method = rad::FormFactorMethod::Hemicube;
@@ -545,16 +579,17 @@ class RadiosityLab : public Lab {
         const char* methods[] = {"rays", "CPU hemicube", "GL hemicube"};
         std::printf("%s: %zu patches, %s, %d steps, residual %.2e, form factors %.2f s (%lld rows, "
                     "%.1f MiB), last run %.2f s\n",
-                    model_->scene.name.c_str(), model_->mesh.patches.size(),
-                    methods[int(s.method)], snap.steps, snap.residual, ff.seconds(),
-                    ff.rowsComputed(), double(ff.bytes()) / (1024.0 * 1024.0), runSeconds_.load());
+                    model_->scene.name.c_str(), model_->mesh.patches.size(), methods[int(s.method)],
+                    snap.steps, snap.residual, ff.seconds(), ff.rowsComputed(),
+                    double(ff.bytes()) / (1024.0 * 1024.0), runSeconds_.load());
         std::fflush(stdout);
     }
 
     // Waits for a run to end by itself (headless scripts).
     void finishRun() {
         if (worker_.joinable()) worker_.join();
-        while (mainThreadRun_) stepOnMainThread(true);
+        while (mainThreadRun_)
+            stepOnMainThread(true);
         running_ = false;
     }
 
@@ -580,7 +615,9 @@ class RadiosityLab : public Lab {
         }
     }
 
-    bool running() const { return running_.load(); }
+    bool running() const {
+        return running_.load();
+    }
 
     // Copies what drawing needs out of the solver (called by the worker while it runs, or here).
     void publish() {
@@ -632,12 +669,14 @@ class RadiosityLab : public Lab {
         coloursDirty_ = false;
         if (B.size() != model_->mesh.patches.size()) return;
         patchColour_.resize(B.size());
-        for (size_t i = 0; i < B.size(); ++i) patchColour_[i] = tone(B[i]);
+        for (size_t i = 0; i < B.size(); ++i)
+            patchColour_[i] = tone(B[i]);
         view_.setPatchColours(patchColour_);
         if (s.smooth) {
             const std::vector<glm::dvec3> vb = rad::vertexRadiosity(model_->mesh, B);
             std::vector<glm::vec3> vc(vb.size());
-            for (size_t i = 0; i < vb.size(); ++i) vc[i] = tone(vb[i]);
+            for (size_t i = 0; i < vb.size(); ++i)
+                vc[i] = tone(vb[i]);
             view_.setVertexColours(vc);
         }
         overlayDirty_ = true;
@@ -662,7 +701,8 @@ class RadiosityLab : public Lab {
             if (s.method == FfMethod::GlHemicube) {
                 std::string err;
                 if (!glHemicube_.render(frame, ff.deltaTable().resolution,
-                                        GlHemicube::kNearFraction * sceneRadius_, selectedItems_, err)) {
+                                        GlHemicube::kNearFraction * sceneRadius_, selectedItems_,
+                                        err)) {
                     message_ = err;
                     selected_ = -1;
                     return;
@@ -721,7 +761,7 @@ class RadiosityLab : public Lab {
     double lastStepSeconds_ = 0;
     mutable std::mutex snapMutex_;
     Snapshot snapshot_;
-    std::string workerError_; // a step's exception on the worker (guarded by snapMutex_)
+    std::string workerError_;     // a step's exception on the worker (guarded by snapMutex_)
     uint64_t printedVersion_ = 0; // headless summary printed for this snapshot
 
     // Display.
@@ -755,8 +795,7 @@ void RadiosityLab::setupCamera(const View& view) const {
     const glm::dmat4 yaw = glm::rotate(glm::dmat4(1.0), glm::radians(double(-view.yaw)), up);
     d = glm::dvec3(yaw * glm::dvec4(d, 0.0));
     const glm::dvec3 right = glm::normalize(glm::cross(up, d));
-    const glm::dmat4 pitch =
-        glm::rotate(glm::dmat4(1.0), glm::radians(double(-view.pitch)), right);
+    const glm::dmat4 pitch = glm::rotate(glm::dmat4(1.0), glm::radians(double(-view.pitch)), right);
     d = glm::dvec3(pitch * glm::dvec4(d, 0.0));
     const glm::dvec3 eye = sc.target + d;
     const double dist = glm::length(eye - sceneCentre_);
@@ -900,36 +939,36 @@ void RadiosityLab::gui() {
     }
     const rad::FormFactors& ff = *model_->ff;
     ImGui::TextWrapped("%s", model_->scene.name.c_str());
-    if (!message_.empty()) ImGui::TextWrapped("note: %s", message_.c_str());
-    ImGui::Text("patches %zu (edge <= %.3f m)", model_->mesh.patches.size(), s.patchSize);
+    if (!message_.empty()) ImGui::TextWrapped(tr("note: %s"), message_.c_str());
+    ImGui::Text(tr("patches %zu (edge <= %.3f m)"), model_->mesh.patches.size(), s.patchSize);
     int method = int(s.method);
-    ImGui::Text("form factors:");
-    ImGui::RadioButton("1 rays", &method, 0);
+    ImGui::Text(tr("form factors:"));
+    ImGui::RadioButton(tr("1 rays"), &method, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("2 CPU", &method, 1);
+    ImGui::RadioButton(tr("2 CPU"), &method, 1);
     ImGui::SameLine();
-    ImGui::RadioButton("3 GL", &method, 2);
+    ImGui::RadioButton(tr("3 GL"), &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::GlHemicube)
-        ImGui::TextWrapped("GL rows are drawn on the GL thread: a run steps between frames. "
-                           "Depth: %s.",
+        ImGui::TextWrapped(tr("GL rows are drawn on the GL thread: a run steps between frames. "
+                              "Depth: %s."),
                            glHemicube_.reversedDepth() ? "reversed float" : "float, far plane");
-    ImGui::Text("FF time %.3f s, %lld rows", ff.seconds(), ff.rowsComputed());
-    ImGui::Text("F memory %.1f MiB (%s)", double(ff.bytes()) / (1024.0 * 1024.0),
+    ImGui::Text(tr("FF time %.3f s, %lld rows"), ff.seconds(), ff.rowsComputed());
+    ImGui::Text(tr("F memory %.1f MiB (%s)"), double(ff.bytes()) / (1024.0 * 1024.0),
                 ff.stored() ? "stored" : "rows on demand");
 
     ImGui::Separator();
     const char* solvers[] = {"progressive", "Jacobi", "Gauss-Seidel"};
     int solver = s.solver;
-    if (ImGui::Combo("solver", &solver, solvers, 3) && solver != s.solver) {
+    if (ImGui::Combo(tr("solver"), &solver, solvers, 3) && solver != s.solver) {
         s.solver = solver;
         rebuildSolver();
     }
-    ImGui::Text("iterations %d, residual %.2e", steps_, residual_);
+    ImGui::Text(tr("iterations %d, residual %.2e"), steps_, residual_);
     if (running())
-        ImGui::Text("running %.1f s (any key stops)", secondsSince(runStart_));
+        ImGui::Text(tr("running %.1f s (any key stops)"), secondsSince(runStart_));
     else if (runSeconds_ > 0)
-        ImGui::Text("last run %.2f s", runSeconds_.load());
+        ImGui::Text(tr("last run %.2f s"), runSeconds_.load());
     if (!history_.empty()) {
         std::vector<float> lg(history_.size());
         for (size_t i = 0; i < lg.size(); ++i)
@@ -940,77 +979,89 @@ void RadiosityLab::gui() {
                          hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
-    if (ImGui::SliderFloat("log10 tol", &tol, -8.0f, -1.0f, "%.1f")) {
+    if (ImGui::SliderFloat(tr("log10 tol"), &tol, -8.0f, -1.0f, "%.1f")) {
         s.tolerance = std::pow(10.0, double(tol));
     }
-    if (ImGui::Checkbox("ambient term", &s.ambient)) {
+    if (ImGui::Checkbox(tr("ambient term"), &s.ambient)) {
         // The solver's config is fixed at construction: restart it with the new setting.
         rebuildSolver();
     }
     if (ImGui::Button(running() ? "stop (r)" : "run (r)")) {
-        if (running()) stopRun();
-        else startRun();
+        if (running())
+            stopRun();
+        else
+            startRun();
     }
     ImGui::SameLine();
-    if (ImGui::Button("step (space)") && !running()) stepOnce();
+    if (ImGui::Button(tr("step (space)")) && !running()) stepOnce();
 
     ImGui::Separator();
-    if (ImGui::Checkbox("s smooth", &s.smooth)) coloursDirty_ = true;
+    if (ImGui::Checkbox(tr("s smooth"), &s.smooth)) coloursDirty_ = true;
     ImGui::SameLine();
-    ImGui::Checkbox("p outlines", &s.outlines);
-    ImGui::Checkbox("item colours (hemicube's view)", &s.showItems);
-    if (ImGui::SliderFloat("exposure", &s.exposure, 0.1f, 10.0f, "%.2f",
+    ImGui::Checkbox(tr("p outlines"), &s.outlines);
+    ImGui::Checkbox(tr("item colours (hemicube's view)"), &s.showItems);
+    if (ImGui::SliderFloat(tr("exposure"), &s.exposure, 0.1f, 10.0f, "%.2f",
                            ImGuiSliderFlags_Logarithmic))
         coloursDirty_ = true;
     int res = s.hemicubeRes;
-    if (ImGui::SliderInt("hemicube", &res, 16, 1024) && res != s.hemicubeRes) {
+    if (ImGui::SliderInt(tr("hemicube"), &res, 16, 1024) && res != s.hemicubeRes) {
         s.hemicubeRes = std::max(8, res & ~1);
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) rebuildSolver();
     int k = s.raySamples;
-    if (ImGui::SliderInt("rays k", &k, 1, 256)) s.raySamples = k;
+    if (ImGui::SliderInt(tr("rays k"), &k, 1, 256)) s.raySamples = k;
     if (ImGui::IsItemDeactivatedAfterEdit()) rebuildSolver();
     if (!refineNote_.empty()) ImGui::Text("a: %s", refineNote_.c_str());
 
     ImGui::Separator();
     if (selected_ >= 0 && !selectedRow_.empty()) {
         const rad::Patch& p = model_->mesh.patches[size_t(selected_)];
-        ImGui::TextWrapped("patch %d on %s", selected_,
+        ImGui::TextWrapped(tr("patch %d on %s"), selected_,
                            model_->mesh.surfaces[size_t(p.surface)].name.c_str());
-        ImGui::Text("row by %s", selectedSource_.c_str());
-        ImGui::Text("sum F = %.4f, max %.2e", selectedRowSum_, selectedRowMax_);
-        ImGui::Text("%.1f ms, hemicube %d", selectedSeconds_ * 1e3, selectedItems_.resolution);
-        ImGui::TextWrapped("Scene: F from this patch, log scale over 4 decades (white = max). "
-                           "Lower left: its hemicube unfolded (top face in the middle).");
+        ImGui::Text(tr("row by %s"), selectedSource_.c_str());
+        ImGui::Text(tr("sum F = %.4f, max %.2e"), selectedRowSum_, selectedRowMax_);
+        ImGui::Text(tr("%.1f ms, hemicube %d"), selectedSeconds_ * 1e3, selectedItems_.resolution);
+        ImGui::TextWrapped(tr("Scene: F from this patch, log scale over 4 decades (white = max). "
+                              "Lower left: its hemicube unfolded (top face in the middle)."));
         if (overlayTexture_ && overlaySize_ > 0)
             ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(overlayTexture_)),
                          ImVec2(160, 160), ImVec2(0, 1), ImVec2(1, 0));
     } else {
-        ImGui::TextWrapped("Click a patch to see its form-factor row and its hemicube.");
+        ImGui::TextWrapped(tr("Click a patch to see its form-factor row and its hemicube."));
     }
 }
 
-std::unique_ptr<Lab> makeRadiosityLab() { return std::make_unique<RadiosityLab>(); }
+std::unique_ptr<Lab> makeRadiosityLab() {
+    return std::make_unique<RadiosityLab>();
+}
 
-RadiosityState& radiosityState(Lab& lab) { return static_cast<RadiosityLab&>(lab).s; }
+RadiosityState& radiosityState(Lab& lab) {
+    return static_cast<RadiosityLab&>(lab).s;
+}
 int radiosityPatchCount(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).patchCount();
 }
-int radiosityStepCount(const Lab& lab) { return static_cast<const RadiosityLab&>(lab).stepCount(); }
+int radiosityStepCount(const Lab& lab) {
+    return static_cast<const RadiosityLab&>(lab).stepCount();
+}
 double radiosityResidual(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).residual();
 }
 std::vector<glm::dvec3> radiosityDisplayB(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).displayB();
 }
-int radiositySelected(const Lab& lab) { return static_cast<const RadiosityLab&>(lab).selected(); }
+int radiositySelected(const Lab& lab) {
+    return static_cast<const RadiosityLab&>(lab).selected();
+}
 const std::vector<float>& radiositySelectedRow(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).selectedRow();
 }
 const rad::ItemBuffer& radiositySelectedItems(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).selectedItems();
 }
-void radiositySelect(Lab& lab, int patch) { static_cast<RadiosityLab&>(lab).select(patch); }
+void radiositySelect(Lab& lab, int patch) {
+    static_cast<RadiosityLab&>(lab).select(patch);
+}
 std::vector<int> radiosityPatchSurfaces(const Lab& lab) {
     return static_cast<const RadiosityLab&>(lab).patchSurfaces();
 }

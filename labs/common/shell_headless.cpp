@@ -5,6 +5,8 @@
 #include "panel_check.h"
 #include "shell.h"
 
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -78,7 +80,9 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     panel.width = 0.0f;
 
     std::vector<std::string> reported; // each text once, with the first state it was seen in
-    int clipped = 0;
+    int clipped = 0, untranslated = 0;
+    // --lang qps: every text must have come through the catalogue (panel_check.h).
+    const bool pseudo = language() == "qps";
     auto check = [&](const std::string& state) {
         glViewport(0, 0, width, height);
         lab.draw(view);
@@ -98,6 +102,16 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
                         state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str());
             ++clipped;
         }
+        for (const auto& text : pseudo ? panelcheck::drawnTexts() : std::vector<std::string>{}) {
+            const std::string words = panelcheck::untranslatedWords(text);
+            if (words.empty() ||
+                std::find(reported.begin(), reported.end(), text) != reported.end())
+                continue;
+            reported.push_back(text);
+            std::printf("%s: untranslated %s: \"%s\" (English: %s)\n", program, state.c_str(),
+                        text.c_str(), words.c_str());
+            ++untranslated;
+        }
     };
     check(keys.empty() ? "at start" : "after --keys");
     for (const auto& k : lab.keys()) {
@@ -107,10 +121,12 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
         check("after key '" + k.key + "'");
     }
     ImGui::DestroyContext(); // the GL context finishes and goes at the end of the scope
-    std::printf("%s: panel check at %.0fx%d, UI scale %.2f: %d clipped text%s\n", program,
-                double(windowW), opts.height, double(opts.uiScale), clipped,
-                clipped == 1 ? "" : "s");
-    return clipped ? 1 : 0;
+    std::printf("%s: panel check at %.0fx%d, UI scale %.2f, language %s: %d clipped text%s",
+                program, double(windowW), opts.height, double(opts.uiScale), language().c_str(),
+                clipped, clipped == 1 ? "" : "s");
+    if (pseudo) std::printf(", %d untranslated", untranslated);
+    std::printf("\n");
+    return clipped || untranslated ? 1 : 0;
 }
 
 } // namespace

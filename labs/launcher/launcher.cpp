@@ -6,6 +6,8 @@
 #include "core/image.h"
 #include "lab_list.h"
 
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -31,7 +33,9 @@ namespace {
 // The labs in kLabs (its last entry is the null terminator). A constant, so the compiler
 // sees every kLabs[i] in bounds (GCC's -Warray-bounds under the sanitizers could not).
 constexpr int kLabCount = int(sizeof kLabs / sizeof kLabs[0]) - 1;
-int labCount() { return kLabCount; }
+int labCount() {
+    return kLabCount;
+}
 
 // Modification time of a file, 0 when it does not exist.
 long long mtime(const std::string& path) {
@@ -87,7 +91,7 @@ struct Card {
 
 class Launcher : public Lab {
   public:
-    std::string title() const override { return "Graphics lab workbench"; }
+    std::string title() const override { return tr("Graphics lab workbench"); }
     std::vector<KeyHelp> keys() const override {
         std::vector<KeyHelp> k;
         for (int i = 0; i < labCount() && i < 9; ++i)
@@ -124,8 +128,8 @@ class Launcher : public Lab {
     }
     void gui() override {
         pollRenderers(false);
-        ImGui::TextWrapped(
-            "Choose a lab (click its picture or press its number); it opens in its own window.");
+        ImGui::TextWrapped(tr(
+            "Choose a lab (click its picture or press its number); it opens in its own window."));
         const float scale =
             ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
         const ImVec2 thumb(float(kThumbWidth) * 0.5f * scale, float(kThumbHeight) * 0.5f * scale);
@@ -167,7 +171,7 @@ class Launcher : public Lab {
             ImGui::PopStyleColor();
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", assetPath(lab.docsPage).c_str());
         }
-        if (ImGui::Button("Start")) clicked = true;
+        if (ImGui::Button(tr("Start"))) clicked = true;
         ImGui::EndGroup();
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.description);
         ImGui::PopID();
