@@ -15,34 +15,34 @@ namespace wb {
 const char* comboName(int combo) {
     switch (combo) {
     case 1:
-        return "1: specular material + specular light";
+        return N_("1: specular material + specular light");
     case 2:
-        return "2: specular material + diffuse light";
+        return N_("2: specular material + diffuse light");
     case 3:
-        return "3: diffuse material + specular light";
+        return N_("3: diffuse material + specular light");
     default:
-        return "4: diffuse material + diffuse light";
+        return N_("4: diffuse material + diffuse light");
     }
 }
 
 const char* comboLookFor(int combo) {
     switch (combo) {
     case 1:
-        return "Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
+        return N_("Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
                "so elsewhere each cube shows its ambient term alone. The left cube's front "
                "face turns towards the half-vector as a whole; the right cube's corner "
-               "normals catch it only faintly, near one corner.";
+               "normals catch it only faintly, near one corner.");
     case 2:
-        return "Look for faces shaded by their angle to the light, and for the missing "
+        return N_("Look for faces shaded by their angle to the light, and for the missing "
                "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
-               "its dark green diffuse part (0.2) shows.";
+               "its dark green diffuse part (0.2) shows.");
     case 3:
-        return "Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
+        return N_("Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
                "light with only GL_SPECULAR reflects none of it; every face shows the same "
-               "ambient colour.";
+               "ambient colour.");
     default:
-        return "Look for bright green faces turned to the light and darker ones turned away: "
-               "matte material, diffuse light, Lambert's cosine and no highlight anywhere.";
+        return N_("Look for bright green faces turned to the light and darker ones turned away: "
+               "matte material, diffuse light, Lambert's cosine and no highlight anywhere.");
     }
 }
 
@@ -484,10 +484,10 @@ void LightingLab::gui() {
         ImGui::TextWrapped(
             tr("All four side by side, numbered as the keys: 1 2 on top, 3 4 below."));
         for (int c = 1; c <= 4; ++c)
-            ImGui::TextWrapped("%s", comboName(c));
+            ImGui::TextWrapped("%s", tr(comboName(c)));
     } else {
-        ImGui::TextWrapped("%s", comboName(s.combo));
-        ImGui::TextWrapped("%s", comboLookFor(s.combo));
+        ImGui::TextWrapped("%s", tr(comboName(s.combo)));
+        ImGui::TextWrapped("%s", tr(comboLookFor(s.combo)));
     }
     ImGui::TextWrapped(tr("A specular light only feeds GL_SPECULAR reflection and a diffuse light "
                           "only GL_DIFFUSE."));
@@ -538,7 +538,7 @@ void LightingLab::gui() {
            "changes too and even the flat-normal left cube can show a highlight inside "
            "a large subdivided face."));
     if (s.spotOn && s.lightPos.w == 0.0f)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "a directional light has no spot cone");
+        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), tr("a directional light has no spot cone"));
 }
 
 } // namespace

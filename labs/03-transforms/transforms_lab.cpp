@@ -545,9 +545,9 @@ void TransformsLab::gui() {
     // Long labels sit above full-width sliders, so a narrow or scaled panel never cuts them.
     ImGui::TextUnformatted(tr("camera distance (z x), elevation:"));
     ImGui::SetNextItemWidth(-FLT_MIN);
-    ImGui::SliderFloat("##distance", &s.distance, 1.0f, 60.0f, "distance %.1f");
+    ImGui::SliderFloat("##distance", &s.distance, 1.0f, 60.0f, tr("distance %.1f"));
     ImGui::SetNextItemWidth(-FLT_MIN);
-    ImGui::SliderFloat("##elevation", &s.elevation, -89.0f, 89.0f, "elevation %.0f deg");
+    ImGui::SliderFloat("##elevation", &s.elevation, -89.0f, 89.0f, tr("elevation %.0f deg"));
     ImGui::Checkbox(tr("top view (t)"), &s.topView);
     ImGui::Separator();
     ImGui::Checkbox(tr("classroom (c)"), &s.classroom);

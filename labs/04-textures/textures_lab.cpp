@@ -101,7 +101,7 @@ class TexturesLab : public Lab {
                 {tr("Left/Right/Up/Down"), tr("spin the object")}};
     }
     std::vector<OptionHelp> options() const override {
-        return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};
+        return {{"texture", tr("FILE"), tr("image for the flat object instead of bricks.png")}};
     }
     bool setOption(const std::string& name, const std::string& value, std::string& error) override {
         if (name != "texture") return Lab::setOption(name, value, error);
@@ -136,7 +136,7 @@ class TexturesLab : public Lab {
         bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
         if (!bumpProgram_) {
             std::fprintf(stderr, "lab04: %s\n", err.c_str());
-            s_->message += err + " (scene 5 falls back to the fixed-function torus)\n";
+            s_->message += err + tr(" (scene 5 falls back to the fixed-function torus)") + "\n";
         }
         room_ = toGl(makeSphere(30.0, 64, 32));
     }
@@ -264,14 +264,16 @@ class TexturesLab : public Lab {
         int filter = int(s_->filter);
         ImGui::Combo(tr("filter (f)"), &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
         s_->filter = TextureFilter(filter);
-        ImGui::Combo(tr("texture (t)"), &s_->texture, "bricks\0uv grid\0");
+        // A Combo takes its items as one string of NUL-separated names: translated one by one.
+        const char* textures[] = {tr("bricks"), tr("uv grid")};
+        ImGui::Combo(tr("texture (t)"), &s_->texture, textures, 2);
         ImGui::Checkbox(tr("mirror torus (o; off = sphere)"), &s_->mirrorTorus);
         ImGui::Checkbox(tr("background room (b)"), &s_->background);
         ImGui::Checkbox(tr("bump mapping (k)"), &s_->bump);
         float depth = float(s_->bumpDepth);
         if (ImGui::SliderFloat(tr("bump depth"), &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
         float spin[2] = {float(s_->spinX), float(s_->spinY)};
-        if (ImGui::DragFloat2("spin x, y (arrows)", spin)) s_->spinX = spin[0], s_->spinY = spin[1];
+        if (ImGui::DragFloat2(tr("spin x, y (arrows)"), spin)) s_->spinX = spin[0], s_->spinY = spin[1];
         ImGui::Text(tr("sphere map rebuilt %d times (once per new view)"), s_->sphereMapBuilds);
         ImGui::TextWrapped(tr("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
                               "pole vertices take s at their slice's middle."));

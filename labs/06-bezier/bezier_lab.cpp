@@ -12,12 +12,15 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <tuple>
 
 namespace wb {
 namespace {
+
+std::string variantLabel(const std::string& english); // below, with the variants
 
 constexpr int kMinGrid = 2;
 constexpr int kMaxGrid = 256;
@@ -555,7 +558,7 @@ void BezierLab::gui() {
                                   "du = 0: GL_AUTO_NORMAL has no normal there and the knob's top "
                                   "goes dark (inset); core's evalPatch takes the limit (n)."));
     }
-    ImGui::SliderInt("##grid", &s.grid, kMinGrid, kMaxGrid, "grid %d ([ ])");
+    ImGui::SliderInt("##grid", &s.grid, kMinGrid, kMaxGrid, tr("grid %d ([ ])"));
 
     if (s.shape != 2) {
         ImGui::Separator();
@@ -566,14 +569,14 @@ void BezierLab::gui() {
         const auto& vs = bezierCircleVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            ImGui::RadioButton(v.name.c_str(), &s.circleVariant, i);
+            ImGui::RadioButton(variantLabel(v.name).c_str(), &s.circleVariant, i);
             ImGui::Text(tr("      max |r-1| = %.3g"), v.error.maxError);
         }
     } else if (s.shape == 1) {
         const auto& vs = bezierSphereVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            ImGui::RadioButton(v.name.c_str(), &s.sphereVariant, i);
+            ImGui::RadioButton(variantLabel(v.name).c_str(), &s.sphereVariant, i);
             ImGui::Text(tr("      max |r-R|/R = %.3g"), v.error.relative());
             ImGui::Text(tr("      r in [%.4f, %.4f]"), v.error.minRadius, v.error.maxRadius);
         }
@@ -585,7 +588,7 @@ void BezierLab::gui() {
     const double ms = medianMs();
     s.shownMs = ms;
     ImGui::Text(tr("GL time per mesh, grid %d:"), s.grid);
-    ImGui::Text("   %s", ms < 0 ? "(no GL context)" : fmt("%.3f ms", ms).c_str());
+    ImGui::Text("   %s", ms < 0 ? tr("(no GL context)") : trf("%.3f ms", ms).c_str());
     if (s.shape == 2) {
         ImGui::TextWrapped(tr("GL's evaluator (float) against core's de Casteljau (double) on "
                               "the same grid, read back with GL_FEEDBACK; normals through "
@@ -663,6 +666,20 @@ void BezierLab::gui() {
     ImGui::TextWrapped(tr("Full table: docs/bench/bezier.md (bin/bezier_bench)."));
 }
 
+// A variant's name in the user's language: the cached variants keep their English names (the
+// tests and --help read them), each built from one of these patterns.
+std::string variantLabel(const std::string& english) {
+    int n = 0, m = 0;
+    double k = 0;
+    if (std::sscanf(english.c_str(), "%d arcs, fitted k = %lf", &n, &k) == 2)
+        return trf("%d arcs, fitted k = %.5f", n, k);
+    if (std::sscanf(english.c_str(), "%d arcs, k = 4/3 tan(pi/%d)", &n, &m) == 2)
+        return trf("%d arcs, k = 4/3 tan(pi/%d)", n, m);
+    if (std::sscanf(english.c_str(), "%d arcs, k = 4/3 (course", &n) == 1)
+        return trf("%d arcs, k = 4/3 (course)", n);
+    return tr(english.c_str()); // the sphere's nets (N_ where they are named)
+}
+
 } // namespace
 
 const std::vector<CircleVariant>& bezierCircleVariants() {
@@ -690,7 +707,7 @@ const std::vector<SphereVariant>& bezierSphereVariants() {
     static const std::vector<SphereVariant> variants = [] {
         std::vector<SphereVariant> vs;
         for (int i = 0; i < 2; ++i) {
-            SphereVariant v{i == 0 ? "course net (lab 6)" : "fitted net",
+            SphereVariant v{i == 0 ? N_("course net (lab 6)") : N_("fitted net"),
                             sphereFromNet(i == 0 ? labHemisphereNet() : fitHemisphereNet()),
                             {}};
             v.error = patchesRadialError(v.patches, 0.0);

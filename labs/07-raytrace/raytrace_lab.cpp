@@ -79,12 +79,12 @@ class RaytraceLab : public Lab {
         std::string names;
         for (const std::string& n : builtinSceneNames())
             if (n.find(':') == std::string::npos) names += n + " ";
-        return {{"scene", "FILE|NAME", names + "balls:N jacks:N (N = 1..5) or .nff/.obj"},
-                {"threads", "N", "trace threads (0 = all cores)"},
-                {"depth", "D", "tracer depth limit (0..20)"},
-                {"model", "course|phong", "tracer shading model (default: the scene's)"},
-                {"inspect", "X,Y", "inspect image pixel (X, Y) of the traced view"},
-                {"experiment", "", "run the timing experiment and print its table"}};
+        return {{"scene", tr("FILE|NAME"), names + tr("balls:N jacks:N (N = 1..5) or .nff/.obj")},
+                {"threads", "N", tr("trace threads (0 = all cores)")},
+                {"depth", "D", tr("tracer depth limit (0..20)")},
+                {"model", "course|phong", tr("tracer shading model (default: the scene's)")},
+                {"inspect", "X,Y", tr("inspect image pixel (X, Y) of the traced view")},
+                {"experiment", "", tr("run the timing experiment and print its table")}};
         // (--inspect prints the ray tree the panel shows on stdout.)
     }
 
@@ -92,8 +92,7 @@ class RaytraceLab : public Lab {
         // The shell's strict integer parser (digits only): strtol took " 5", "+5" and "-0".
         auto integer = [&](int lo, int hi, int& out) {
             if (cli::parseInt(value, lo, hi, out)) return true;
-            error = "expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) +
-                    ", got '" + value + "'";
+            error = trf("expected an integer %d..%d, got '%s'", lo, hi, value.c_str());
             return false;
         };
         if (name == "scene") {
@@ -106,7 +105,7 @@ class RaytraceLab : public Lab {
         if (name == "depth") return integer(0, 20, s.maxDepth);
         if (name == "model") {
             if (value != "course" && value != "phong") {
-                error = "expected course or phong, got '" + value + "'";
+                error = trf("expected course or phong, got '%s'", value.c_str());
                 return false;
             }
             modelOption_ = value;
@@ -116,7 +115,7 @@ class RaytraceLab : public Lab {
             int x = 0, y = 0;
             char tail = 0;
             if (std::sscanf(value.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0) {
-                error = "expected X,Y (pixel of the traced image), got '" + value + "'";
+                error = trf("expected X,Y (pixel of the traced image), got '%s'", value.c_str());
                 return false;
             }
             pendingInspect_ = true;
@@ -129,7 +128,7 @@ class RaytraceLab : public Lab {
             printTimings_ = true;
             return true;
         }
-        error = "unknown option --" + name;
+        error = trf("unknown option --%s", name.c_str());
         return false;
     }
 
@@ -276,8 +275,8 @@ class RaytraceLab : public Lab {
         }
         st.fraction = std::min(done / cells, 1.0);
         if (e.next < e.scenes.size())
-            st.current = e.scenes[e.next] + (e.column ? ", no BVH" : ", BVH") + ", run " +
-                         std::to_string(e.run + 1);
+            st.current = e.scenes[e.next] +
+                         (e.column ? trf(", no BVH, run %d", e.run + 1) : trf(", BVH, run %d", e.run + 1));
         st.seconds = secondsSince(e.start);
         return st;
     }
@@ -1092,8 +1091,8 @@ void heatBar() {
         dl->AddText(ImVec2(x, q.y + 2), ImGui::GetColorU32(ImGuiCol_Text), labels[i]);
     }
     ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
-    wrapText("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
-             "yellow at 64 and above (also under the picture)");
+    wrapText(tr("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
+             "yellow at 64 and above (also under the picture)"));
 }
 
 // The timing experiment as a plot: trace time per scene on a log scale, BVH and no BVH.
@@ -1151,12 +1150,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     for (int d = int(lo); d <= int(hi); ++d) {
         const float y = yOf(float(d));
         dl->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(255, 255, 255, 40));
-        char label[16];
+        char label[32];
         const double ms = std::pow(10.0, d);
         if (ms >= 1000)
-            std::snprintf(label, sizeof label, "%g s", ms / 1000);
+            std::snprintf(label, sizeof label, tr("%g s"), ms / 1000);
         else
-            std::snprintf(label, sizeof label, "%g ms", ms);
+            std::snprintf(label, sizeof label, tr("%g ms"), ms);
         // Below its line, except the lowest one (above it): labels never overlap.
         const float th = ImGui::GetTextLineHeight();
         const float ty = d == int(lo) ? y - th : y + 1;
@@ -1166,7 +1165,7 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     std::string xs = "x: ";
     for (size_t i = 0; i < bvh.size(); ++i)
         xs += rows[i].scene + (i + 1 < bvh.size() ? ", " : "");
-    wrapText(xs + " (objects grow left to right)");
+    wrapText(xs + tr(" (objects grow left to right)"));
     // What the BVH buys: no-BVH time / BVH time per scene (hover a bar for its value).
     std::vector<float> speedup;
     float top = 1.0f;
@@ -1175,9 +1174,9 @@ void plotTimings(const std::vector<TimingRow>& rows) {
         top = std::max(top, speedup.back());
     }
     if (speedup.empty()) return;
-    wrapText("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):");
-    char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "up to x%.0f", double(top));
+    wrapText(tr("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):"));
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, tr("up to x%.0f"), double(top));
     ImGui::PlotHistogram("##speedup", speedup.data(), int(speedup.size()), 0, overlay, 0.0f,
                          top * 1.15f, ImVec2(w, 70.0f));
 }
@@ -1185,7 +1184,7 @@ void plotTimings(const std::vector<TimingRow>& rows) {
 } // namespace
 
 void RaytraceLab::gui() {
-    wrapText(scene_.about);
+    wrapText(tr(scene_.about.c_str())); // N_() where the scenes are made
     if (ImGui::BeginCombo(tr("scene"), s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())
             if (ImGui::Selectable(n.c_str(), n == s.sceneName)) {
@@ -1195,7 +1194,7 @@ void RaytraceLab::gui() {
         ImGui::EndCombo();
     }
     ImGui::TextUnformatted(tr("file (.nff / .obj):"));
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("load").x - 2 * ImGui::GetStyle().FramePadding.x -
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(tr("load")).x - 2 * ImGui::GetStyle().FramePadding.x -
                             ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
     ImGui::SameLine();
@@ -1208,14 +1207,14 @@ void RaytraceLab::gui() {
     const std::vector<std::string> warns = warningLines(scene_);
     for (size_t i = 0; i < warns.size() && i < 6; ++i)
         wrapText(warns[i]);
-    if (warns.size() > 6) wrapf("  ... (%zu more lines on stderr)", warns.size() - 6);
-    wrapf("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
-          meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
+    if (warns.size() > 6) wrapf(tr("  ... (%zu more lines on stderr)"), warns.size() - 6);
+    wrapf(tr("%zu primitives, %lld triangles drawn%s"), scene_.scene->primitives.size(),
+          meshStats_.triangles, meshStats_.skipped ? tr(" (some not drawable)") : "");
     if (meshStats_.level < 1.0 || meshStats_.standIns > 0)
-        wrapf("raster budget %lld triangles: drawn coarser (level %.2g)%s%s", meshStats_.budget,
+        wrapf(tr("raster budget %lld triangles: drawn coarser (level %.2g)%s%s"), meshStats_.budget,
               meshStats_.level, meshStats_.standIns ? ", " : "",
               meshStats_.standIns
-                  ? (std::to_string(meshStats_.standIns) + " objects as one bounding box").c_str()
+                  ? trf("%d objects as one bounding box", int(meshStats_.standIns)).c_str()
                   : "");
     int mode = s.traced ? 1 : 0;
     ImGui::RadioButton(tr("g: OpenGL"), &mode, 0);
@@ -1225,29 +1224,29 @@ void RaytraceLab::gui() {
     ImGui::Checkbox(tr("f: GLSL Phong"), &s.glsl);
     ImGui::SameLine();
     ImGui::Checkbox(tr("d: heat map"), &s.showDiff);
-    if (!programError_.empty()) wrapf("shader: %s", programError_.c_str());
+    if (!programError_.empty()) wrapf(tr("shader: %s"), programError_.c_str());
 
     ImGui::Separator();
     const TraceStatus st = job_.status();
     const ExperimentStatus es = experimentStatus();
     if (es.active) {
         // Up here, where it is seen without scrolling: the table and plot are at the end.
-        wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
+        wrapf(tr("timing experiment: %s; %.1f s"), es.current.c_str(), es.seconds);
         ImGui::ProgressBar(float(es.fraction));
         if (ImGui::Button(tr("x: cancel experiment"))) cancelExperiment();
-        if (s.traced) wrapText("The view's own trace waits while the experiment runs.");
+        if (s.traced) wrapText(tr("The view's own trace waits while the experiment runs."));
         ImGui::Separator();
     }
-    wrapf("raster %.2f ms / frame", rasterMsSmooth_);
+    wrapf(tr("raster %.2f ms / frame"), rasterMsSmooth_);
     if (traceStarted_) {
         ImGui::ProgressBar(st.tilesTotal ? float(st.tilesDone) / float(st.tilesTotal) : 0.0f);
         if (st.running)
-            wrapf("tracing: %.1f s, about %.1f s left", st.seconds, st.secondsLeft);
+            wrapf(tr("tracing: %.1f s, about %.1f s left"), st.seconds, st.secondsLeft);
         else
-            wrapf("trace %.3f s (%s)%s", st.seconds, st.finished ? "finished" : "cancelled",
-                  st.finished ? "" : "");
+            wrapf(st.finished ? tr("trace %.3f s (finished)") : tr("trace %.3f s (cancelled)"),
+                  st.seconds);
         if (st.finished)
-            wrapf("trace / raster = %.0f", st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
+            wrapf(tr("trace / raster = %.0f"), st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
         // Live while tracing (tiles finished so far); one number per row, right-aligned.
         if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_SizingStretchProp)) {
             auto row = [](const char* what, long long n) {
@@ -1261,30 +1260,30 @@ void RaytraceLab::gui() {
                                      ImGui::CalcTextSize(buf).x);
                 ImGui::TextUnformatted(buf);
             };
-            row("primary rays", st.primaryRays);
-            row("secondary rays", st.secondaryRays);
-            row("shadow rays", st.shadowRays);
+            row(tr("primary rays"), st.primaryRays);
+            row(tr("secondary rays"), st.secondaryRays);
+            row(tr("shadow rays"), st.shadowRays);
             ImGui::EndTable();
         }
-        wrapf("threads %d, cancelled frames %d", st.threads, cancels_);
+        wrapf(tr("threads %d, cancelled frames %d"), st.threads, cancels_);
     }
     if (s.showDiff) {
         if (diffValid_)
-            wrapf("|raster - trace|: mean %.2f, max %d (of 255)", diff_.meanDiff, diff_.maxDiff);
+            wrapf(tr("|raster - trace|: mean %.2f, max %d (of 255)"), diff_.meanDiff, diff_.maxDiff);
         else
-            wrapText("heat map: shown when the trace is finished");
+            wrapText(tr("heat map: shown when the trace is finished"));
         heatBar();
     }
 
     ImGui::Separator();
     if (tree_) {
-        wrapf("ray tree of pixel (%d, %d), screen (%g, %g)", inspectedPixel_.x, inspectedPixel_.y,
+        wrapf(tr("ray tree of pixel (%d, %d), screen (%g, %g)"), inspectedPixel_.x, inspectedPixel_.y,
               inspectedScreen_.x, inspectedScreen_.y);
         ImGui::Checkbox(tr("draw the ray path"), &s.showRayPath);
         for (const std::string& l : treeLines_)
             wrapText(l);
     } else {
-        wrapText("Click a pixel to see its ray tree.");
+        wrapText(tr("Click a pixel to see its ray tree."));
     }
     ImGui::Separator();
     int model = s.model == ModelKind::Course ? 0 : 1;
@@ -1303,9 +1302,9 @@ void RaytraceLab::gui() {
             if (l.kind != rt::Light::Kind::Point || sc.distScale <= 0) continue;
             const double sh = sc.distScale / std::max(glm::length(l.position - c), 1e-9);
             if (sh > 1.5) {
-                wrapf("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
+                wrapf(tr("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
                       "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
-                      "clamp at 255.",
+                      "clamp at 255."),
                       sc.distScale, glm::length(l.position - c), sh);
                 break;
             }
@@ -1314,7 +1313,7 @@ void RaytraceLab::gui() {
     ImGui::SliderInt(tr("depth limit"), &s.maxDepth, 0, 20);
     float w = float(s.minWeight);
     if (ImGui::SliderFloat(tr("weight cut"), &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
-    ImGui::SliderInt(tr("threads"), &s.threads, 0, 64, s.threads == 0 ? "all cores" : "%d");
+    ImGui::SliderInt(tr("threads"), &s.threads, 0, 64, s.threads == 0 ? tr("all cores") : "%d");
     int res = s.divisor == 1 ? 0 : s.divisor == 2 ? 1 : 2;
     ImGui::TextUnformatted(tr("trace res."));
     ImGui::SameLine();
@@ -1326,11 +1325,11 @@ void RaytraceLab::gui() {
     s.divisor = 1 << res;
     if (ImGui::Checkbox(tr("b: BVH"), &s.bvh)) applyAccel();
     if (!bvhAvailable_ && s.bvh)
-        wrapText("(no BVH: brute force over all objects)");
+        wrapText(tr("(no BVH: brute force over all objects)"));
     else if (scene_.accel)
-        wrapf("BVH built in %.3f ms", scene_.accelSeconds * 1e3);
+        wrapf(tr("BVH built in %.3f ms"), scene_.accelSeconds * 1e3);
     else if (s.bvh)
-        wrapText("(too few objects for a BVH: brute force)");
+        wrapText(tr("(too few objects for a BVH: brute force)"));
 
     ImGui::Separator();
     if (!es.active) {
@@ -1340,7 +1339,7 @@ void RaytraceLab::gui() {
             ImGui::TextUnformatted(tr("(cancelled)"));
         }
     } else {
-        wrapText("timing experiment running (progress at the top; x cancels)");
+        wrapText(tr("timing experiment running (progress at the top; x cancels)"));
     }
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
@@ -1357,18 +1356,18 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::Text(tr("%.1fms"), r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0) ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0) ImGui::Text(tr("%.3fs%s"), r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
-                ImGui::Text(r.bruteEstimated ? "~%.0fs" : "%.3fs", r.bruteSeconds);
+                ImGui::Text(r.bruteEstimated ? tr("~%.0fs") : tr("%.3fs"), r.bruteSeconds);
             else
                 ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();
             ImGui::Text("%.1f", r.raysPerSecond / 1e6);
         }
         ImGui::EndTable();
-        wrapText("* too few objects for a BVH (brute force in both columns); ~ estimated from "
-                 "the row above x objects, not run; Mray/s with the BVH.");
+        wrapText(tr("* too few objects for a BVH (brute force in both columns); ~ estimated from "
+                 "the row above x objects, not run; Mray/s with the BVH."));
         plotTimings(timings_);
     }
 }

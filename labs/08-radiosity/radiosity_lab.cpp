@@ -85,14 +85,14 @@ class RadiosityLab : public Lab {
     }
 
     std::vector<OptionHelp> options() const override {
-        return {{"scene", "NAME", "cornell, classroom or floorlamp"},
-                {"patch-size", "M", "longest patch edge in metres"},
-                {"method", "rays|cpu|gl", "form-factor method"},
-                {"solver", "progressive|jacobi|gauss-seidel", "how B = E + RFB is solved"},
-                {"hemicube", "N", "hemicube resolution (even, 8..1024)"},
-                {"rays", "K", "rays per patch pair (1..256)"},
-                {"threads", "N", "form-factor threads (0 = all cores)"},
-                {"click", "X,Y", "click the scene at pixel (X, Y) as the mouse would"}};
+        return {{"scene", tr("NAME"), tr("cornell, classroom or floorlamp")},
+                {"patch-size", "M", tr("longest patch edge in metres")},
+                {"method", "rays|cpu|gl", tr("form-factor method")},
+                {"solver", "progressive|jacobi|gauss-seidel", tr("how B = E + RFB is solved")},
+                {"hemicube", "N", tr("hemicube resolution (even, 8..1024)")},
+                {"rays", "K", tr("rays per patch pair (1..256)")},
+                {"threads", "N", tr("form-factor threads (0 = all cores)")},
+                {"click", "X,Y", tr("click the scene at pixel (X, Y) as the mouse would")}};
     }
 
     bool setOption(const std::string& name, const std::string& value, std::string& error) override {
@@ -100,8 +100,8 @@ class RadiosityLab : public Lab {
             char* end = nullptr;
             const double v = std::strtod(value.c_str(), &end);
             if (value.empty() || *end || !std::isfinite(v) || v < lo || v > hi) {
-                error = "expected a number in " + std::to_string(lo) + ".." + std::to_string(hi) +
-                        ", got '" + value + "'";
+                error = trf("expected a number in %g..%g, got '%s'", double(lo), double(hi),
+                            value.c_str());
                 return false;
             }
             out = v;
@@ -111,7 +111,7 @@ class RadiosityLab : public Lab {
         if (name == "scene") {
             const auto names = rad::sceneNames();
             if (std::find(names.begin(), names.end(), value) == names.end()) {
-                error = "unknown scene '" + value + "' (cornell, classroom, floorlamp)";
+                error = trf("unknown scene '%s' (cornell, classroom, floorlamp)", value.c_str());
                 return false;
             }
             s.sceneName = value;
@@ -130,7 +130,7 @@ class RadiosityLab : public Lab {
             else if (value == "gl")
                 s.method = FfMethod::GlHemicube;
             else {
-                error = "expected rays, cpu or gl, got '" + value + "'";
+                error = trf("expected rays, cpu or gl, got '%s'", value.c_str());
                 return false;
             }
             return true;
@@ -143,14 +143,14 @@ class RadiosityLab : public Lab {
             else if (value == "gauss-seidel")
                 s.solver = 2;
             else {
-                error = "expected progressive, jacobi or gauss-seidel, got '" + value + "'";
+                error = trf("expected progressive, jacobi or gauss-seidel, got '%s'", value.c_str());
                 return false;
             }
             return true;
         }
         if (name == "hemicube") {
             if (!number(8, 1024, v) || int(v) % 2 != 0 || v != std::floor(v)) {
-                error = "expected an even integer 8..1024, got '" + value + "'";
+                error = trf("expected an even integer 8..1024, got '%s'", value.c_str());
                 return false;
             }
             s.hemicubeRes = int(v);
@@ -158,7 +158,7 @@ class RadiosityLab : public Lab {
         }
         if (name == "rays") {
             if (!number(1, 256, v) || v != std::floor(v)) {
-                error = "expected an integer 1..256, got '" + value + "'";
+                error = trf("expected an integer 1..256, got '%s'", value.c_str());
                 return false;
             }
             s.raySamples = int(v);
@@ -166,7 +166,7 @@ class RadiosityLab : public Lab {
         }
         if (name == "threads") {
             if (!number(0, 1024, v) || v != std::floor(v)) {
-                error = "expected an integer 0..1024, got '" + value + "'";
+                error = trf("expected an integer 0..1024, got '%s'", value.c_str());
                 return false;
             }
             s.threads = int(v);
@@ -176,7 +176,7 @@ class RadiosityLab : public Lab {
             int x = 0, y = 0;
             char tail = 0;
             if (std::sscanf(value.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0) {
-                error = "expected X,Y (a pixel of the scene view), got '" + value + "'";
+                error = trf("expected X,Y (a pixel of the scene view), got '%s'", value.c_str());
                 return false;
             }
             pendingClick_ = true;
@@ -184,7 +184,7 @@ class RadiosityLab : public Lab {
             clickY_ = y;
             return true;
         }
-        error = "unknown option --" + name;
+        error = trf("unknown option --%s", name.c_str());
         return false;
     }
 
@@ -367,9 +367,8 @@ class RadiosityLab : public Lab {
         try {
             rad::PatchMesh mesh = rad::meshScene(model_->scene, rad::MeshConfig{patchSize});
             if (mesh.patches.size() > kMaxPatches) {
-                message_ = "patch size " + std::to_string(patchSize) + " m would give " +
-                           std::to_string(mesh.patches.size()) + " patches (the lab stops at " +
-                           std::to_string(kMaxPatches) + ")";
+                message_ = trf("patch size %g m would give %zu patches (the lab stops at %zu)",
+                               patchSize, mesh.patches.size(), size_t(kMaxPatches));
                 return;
             }
             auto m = std::make_unique<Model>();
@@ -400,7 +399,7 @@ class RadiosityLab : public Lab {
             message_ = e.what();
             return;
         }
-        refineNote_ = std::to_string(split) + " patches split";
+        refineNote_ = trf("%d patches split", int(split));
         if (split == 0) return;
         const bool wasSolved = snapshot().steps > 0;
         install(std::move(m));
@@ -708,17 +707,17 @@ class RadiosityLab : public Lab {
                     return;
                 }
                 rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
-                selectedSource_ = "GL hemicube";
+                selectedSource_ = tr("GL hemicube");
             } else {
                 rad::castItemBuffer(ff.bvh(), frame, ff.deltaTable().resolution, selectedItems_);
                 if (s.method == FfMethod::Rays) {
                     rad::RayFormFactorConfig rc;
                     rc.samples = s.raySamples;
                     rad::rayFormFactorRow(model_->mesh, ff.bvh(), selected_, rc, selectedRow_);
-                    selectedSource_ = "rays (hemicube picture: CPU)";
+                    selectedSource_ = tr("rays (hemicube picture: CPU)");
                 } else {
                     rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
-                    selectedSource_ = "CPU hemicube";
+                    selectedSource_ = tr("CPU hemicube");
                 }
             }
         } catch (const std::exception& e) {
@@ -938,7 +937,7 @@ void RadiosityLab::gui() {
         return;
     }
     const rad::FormFactors& ff = *model_->ff;
-    ImGui::TextWrapped("%s", model_->scene.name.c_str());
+    ImGui::TextWrapped("%s", tr(model_->scene.name.c_str()));
     if (!message_.empty()) ImGui::TextWrapped(tr("note: %s"), message_.c_str());
     ImGui::Text(tr("patches %zu (edge <= %.3f m)"), model_->mesh.patches.size(), s.patchSize);
     int method = int(s.method);
@@ -952,13 +951,13 @@ void RadiosityLab::gui() {
     if (s.method == FfMethod::GlHemicube)
         ImGui::TextWrapped(tr("GL rows are drawn on the GL thread: a run steps between frames. "
                               "Depth: %s."),
-                           glHemicube_.reversedDepth() ? "reversed float" : "float, far plane");
+                           glHemicube_.reversedDepth() ? tr("reversed float") : tr("float, far plane"));
     ImGui::Text(tr("FF time %.3f s, %lld rows"), ff.seconds(), ff.rowsComputed());
     ImGui::Text(tr("F memory %.1f MiB (%s)"), double(ff.bytes()) / (1024.0 * 1024.0),
-                ff.stored() ? "stored" : "rows on demand");
+                ff.stored() ? tr("stored") : tr("rows on demand"));
 
     ImGui::Separator();
-    const char* solvers[] = {"progressive", "Jacobi", "Gauss-Seidel"};
+    const char* solvers[] = {tr("progressive"), tr("Jacobi"), tr("Gauss-Seidel")};
     int solver = s.solver;
     if (ImGui::Combo(tr("solver"), &solver, solvers, 3) && solver != s.solver) {
         s.solver = solver;
@@ -975,7 +974,7 @@ void RadiosityLab::gui() {
             lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
         const float lo = *std::min_element(lg.begin(), lg.end());
         const float hi = *std::max_element(lg.begin(), lg.end());
-        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, "log10 residual", lo - 0.1f,
+        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, tr("log10 residual"), lo - 0.1f,
                          hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
@@ -986,7 +985,7 @@ void RadiosityLab::gui() {
         // The solver's config is fixed at construction: restart it with the new setting.
         rebuildSolver();
     }
-    if (ImGui::Button(running() ? "stop (r)" : "run (r)")) {
+    if (ImGui::Button(running() ? tr("stop (r)") : tr("run (r)"))) {
         if (running())
             stopRun();
         else

@@ -64,7 +64,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     app.add_flag("--headless", o.headless);
     app.add_flag("-h,--help", o.help);
     app.add_option_function<std::string>("--out", [&](const std::string& v) {
-        check("--out", !v.empty(), "--out needs a file name");
+        check("--out", !v.empty(), tr("--out needs a file name"));
         o.out = v;
     });
     cli::addSizeOption(app, "--size", kMaxSide, o.width, o.height, valueError, "");
@@ -77,13 +77,13 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     app.add_option("--root", o.root);
     app.add_option_function<std::string>("--frames", [&](const std::string& v) {
         check("--frames", cli::parseInt(v, 1, 1000000, o.frames),
-              "--frames '" + v + "': expected a positive count");
+              trf("--frames '%s': expected a positive count", v.c_str()));
     });
     app.add_flag("--smoke", o.smoke);
     app.add_option("--screenshot", o.screenshot);
     app.add_option_function<std::string>("--ui-scale", [&](const std::string& v) {
         check("--ui-scale", parseScale(v, o.uiScale),
-              "--ui-scale '" + v + "': expected a number from 0.5 to 4 (1 = normal size)");
+              trf("--ui-scale '%s': expected a number from 0.5 to 4 (1 = normal size)", v.c_str()));
     });
     app.add_flag("--check-panel", o.checkPanel);
     app.add_option_function<std::string>("--lang", [&](const std::string& v) {
@@ -109,7 +109,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
             }
         }
     } catch (const CLI::Error& e) {
-        error = std::string("the lab's options clash with the shell's: ") + e.what();
+        error = trf("the lab's options clash with the shell's: %s", e.what());
         return false;
     }
 
@@ -124,15 +124,16 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
             // The only other failure left: a value flag last on the line, e.g. `--out`.
             std::string what = e.what();
             auto colon = what.find(':');
-            error = (colon != std::string::npos ? what.substr(0, colon) : what) + " needs a value";
+            error = trf("%s needs a value",
+                        (colon != std::string::npos ? what.substr(0, colon) : what).c_str());
         }
         return false;
     }
     const auto extras = app.remaining();
     if (!extras.empty()) {
         const std::string& arg = extras.front();
-        error = arg.rfind('-', 0) == 0 ? "unknown option " + arg + " (see --help)"
-                                       : "unexpected argument '" + arg + "' (see --help)";
+        error = arg.rfind('-', 0) == 0 ? trf("unknown option %s (see --help)", arg.c_str())
+                                       : trf("unexpected argument '%s' (see --help)", arg.c_str());
         return false;
     }
     std::vector<size_t> seen(labOptions.size(), 0);
@@ -144,7 +145,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
                     labOptions[i].name, labOptions[i].argument.empty() ? "1" : labValues[i].at(k));
             }
     if (o.headless && o.out.empty() && !o.help && !o.checkPanel) {
-        error = "--headless needs --out FILE.png";
+        error = tr("--headless needs --out FILE.png");
         return false;
     }
     return true;
@@ -182,7 +183,7 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
         }
         auto end = keys.find('}', i);
         if (end == std::string::npos) {
-            error = "--keys: unclosed '{' at position " + std::to_string(i);
+            error = trf("--keys: unclosed '{' at position %zu", i);
             return false;
         }
         std::string name = keys.substr(i + 1, end - i - 1);
@@ -194,7 +195,7 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
             cli::parseInt(name.substr(1), 1, 12, f))
             code = kKeyF1 + f - 1;
         if (code < 0) {
-            error = "--keys: unknown key name {" + name + "}";
+            error = trf("--keys: unknown key name {%s}", name.c_str());
             return false;
         }
         codes.push_back(code);
@@ -214,43 +215,50 @@ std::string usageText(const std::string& program, const Lab& lab) {
     const std::string window =
         std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
     std::ostringstream s;
-    s << lab.title() << "\n\n"
-      << "usage: " << program << " [options]\n\n"
-      << "  --headless            render with OSMesa (no window) and exit; needs --out\n"
-      << "  --out FILE.png        where the headless render goes\n";
+    s << lab.title() << "\n\n" << trf("usage: %s [options]", program.c_str()) << "\n\n";
+    // One flag and its help, the help starting in column 24 (continuation lines too).
+    auto flag = [&s](const std::string& name, const std::string& help) {
+        s << "  " << name << std::string(name.size() < 22 ? 22 - name.size() : 1, ' ');
+        for (char c : help)
+            s << c << (c == '\n' ? std::string(24, ' ') : "");
+        s << "\n";
+    };
+    flag("--headless", tr("render with OSMesa (no window) and exit; needs --out"));
+    flag("--out FILE.png", tr("where the headless render goes"));
     if (fills)
-        s << "  --size WxH            window size in pixels (default " << window << ")\n";
+        flag("--size WxH", trf("window size in pixels (default %s)", window.c_str()));
     else
-        s << "  --size WxH            headless: image size (default " << image
-          << "); windowed: the scene's\n"
-          << "                        size, the panel (" << kPanelWidth
-          << " px at --ui-scale 1) is added beside it:\n"
-          << "                        the window opens at " << window << " by default\n";
-    s << "  --ui-scale X          panel text and widgets X times larger, 0.5..4 (projector: 2);\n"
-      << "                        in the window also Ctrl+= / Ctrl+- or the panel's View slider\n"
-      << "  --keys \"...\"          keys replayed before drawing, e.g. \"1g{left}\"\n"
-      << "  --root DIR            folder with assets/ and shaders/ (default: the source tree;\n"
-      << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
-      << "  --frames N            windowed: quit after N frames (smoke tests)\n"
-      << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
-      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame "
-         "apart\n"
-      << "  --check-panel         headless: lay the panel out at the default size (after --keys, "
-         "then\n"
-      << "                        after each one-letter key) and fail if any text is clipped\n";
-    for (const auto& o : lab.options()) {
-        std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
-        s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what
-          << "\n";
-    }
-    s << "\nKeys:\n";
+        flag("--size WxH", trf("headless: image size (default %s); windowed: the scene's\nsize, "
+                               "the panel (%d px at --ui-scale 1) is added beside it:\nthe window "
+                               "opens at %s by default",
+                               image.c_str(), kPanelWidth, window.c_str()));
+    flag("--ui-scale X", tr("panel text and widgets X times larger, 0.5..4 (projector: 2);\nin the "
+                            "window also Ctrl+= / Ctrl+- or the panel's View slider"));
+    flag("--lang ru|en", tr("the language of the window and messages (else LANGUAGE, LC_ALL,\n"
+                            "LC_MESSAGES, LANG; qps: the pseudo-language that shows\n"
+                            "untranslated text)"));
+    flag("--keys \"...\"", tr("keys replayed before drawing, e.g. \"1g{left}\"; Russian-layout\n"
+                              "letters mean the key at the same place (\"п\" is g)"));
+    flag("--root DIR", tr("folder with assets/ and shaders/ (default: the source tree;\nthe "
+                          "WORKBENCH_ROOT environment variable also sets it)"));
+    flag("--frames N", tr("windowed: quit after N frames (smoke tests)"));
+    flag("--screenshot FILE.png", tr("windowed: save the last frame before quitting"));
+    flag("--smoke", tr("windowed: press each one-letter key of the lab twice, a frame apart"));
+    flag("--check-panel", tr("headless: lay the panel out at the default size (after --keys, "
+                             "then\nafter each one-letter key) and fail if any text is clipped"));
+    for (const auto& o : lab.options())
+        flag("--" + o.name + (o.argument.empty() ? "" : " " + o.argument), o.what);
+    s << "\n" << tr("Keys:") << "\n";
     for (const auto& k : lab.keys())
         s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what
           << "\n";
-    if (!fills)
-        s << "  h         hide/show the panel\n  +/-       zoom (also the wheel)\n  drag      "
-             "rotate the scene\n";
-    s << "  Ctrl+= / Ctrl+-  larger / smaller panel text\n  Esc       quit\n";
+    if (!fills) {
+        s << "  h         " << tr("hide/show the panel") << "\n";
+        s << "  +/-       " << tr("zoom (also the wheel)") << "\n";
+        s << "  " << tr("drag") << std::string(8, ' ') << tr("rotate the scene") << "\n";
+    }
+    s << "  Ctrl+= / Ctrl+-  " << tr("larger / smaller panel text") << "\n";
+    s << "  Esc       " << tr("quit") << "\n";
     return s.str();
 }
 

@@ -90,6 +90,16 @@ std::string untranslatedWords(const std::string& text) {
         const std::string token = outside.substr(i, j - i);
         i = j;
         if (token.find_first_of("0123456789_.\\") != std::string::npos) continue; // a value
+        // An identifier the user types (a scene name: two-spheres, glass-cube).
+        bool hyphenated = false;
+        for (size_t k = 1; k + 1 < token.size(); ++k)
+            hyphenated = hyphenated || (token[k] == '-' && isLetter(token[k - 1]) && isLetter(token[k + 1]));
+        if (hyphenated) continue;
+        // A word of a pseudo-translation (accented) whose brackets are on another line.
+        bool nonAscii = false;
+        for (char c : token)
+            nonAscii = nonAscii || static_cast<unsigned char>(c) >= 0x80;
+        if (nonAscii) continue;
         for (size_t k = 0; k < token.size();) {
             if (!isLetter(token[k])) {
                 ++k;

@@ -26,7 +26,9 @@ const std::vector<std::string>& drawnTexts();
 // (core/i18n.h, i18n::pseudo): the words of `text` outside brackets that are English, i.e. did
 // not come through the catalogue. Runs of Latin letters are allowed when they are one letter
 // (key names, variables: g, K, x), part of a value (a token with a digit, '_', '.' or '\':
-// numbers with units, file names, GL_LIGHT0) or named in kAllowedWords (key caps, language names).
+// numbers with units, file names, GL_LIGHT0; or a hyphenated-name: scene names), in a token
+// with a non-ASCII letter (a pseudo-translated word cut off from its brackets where a lab wraps
+// lines itself; Cyrillic) or named in kAllowedWords (key caps, language names).
 // Empty when the text is clean.
 std::string untranslatedWords(const std::string& text);
 

@@ -95,7 +95,7 @@ class Launcher : public Lab {
     std::vector<KeyHelp> keys() const override {
         std::vector<KeyHelp> k;
         for (int i = 0; i < labCount() && i < 9; ++i)
-            k.push_back({std::to_string(i + 1), std::string("start ") + kLabs[i].executable});
+            k.push_back({std::to_string(i + 1), trf("start %s", kLabs[i].executable)});
         return k;
     }
     bool panelFillsWindow() const override { return true; }
@@ -156,7 +156,7 @@ class Launcher : public Lab {
             clicked = ImGui::ImageButton(
                 reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
         } else {
-            clicked = ImGui::Button(c.status.empty() ? "(no picture)" : c.status.c_str(), thumb);
+            clicked = ImGui::Button(c.status.empty() ? tr("(no picture)") : tr(c.status.c_str()), thumb);
         }
         ImGui::SameLine();
         ImGui::BeginGroup();
@@ -164,7 +164,7 @@ class Launcher : public Lab {
             ImGui::Text("%d  %s", i + 1, lab.executable);
         else
             ImGui::TextUnformatted(lab.executable);
-        ImGui::TextWrapped("%s", lab.topic);
+        ImGui::TextWrapped("%s", tr(lab.topic));
         if (*lab.docsPage) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
             ImGui::TextWrapped("%s", lab.docsPage);
@@ -173,7 +173,7 @@ class Launcher : public Lab {
         }
         if (ImGui::Button(tr("Start"))) clicked = true;
         ImGui::EndGroup();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.description);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(lab.description));
         ImGui::PopID();
         if (clicked) start(i);
     }
@@ -193,7 +193,7 @@ class Launcher : public Lab {
         c.renderer = spawn({headless, "--out", cached, "--size",
                             std::to_string(kThumbWidth) + "x" + std::to_string(kThumbHeight)},
                            true);
-        c.status = c.renderer > 0 ? "rendering..." : "(no picture)";
+        c.status = c.renderer > 0 ? N_("rendering...") : N_("(no picture)"); // tr() when shown
     }
 
     void pollRenderers(bool wait) {
@@ -204,7 +204,7 @@ class Launcher : public Lab {
             if (r == 0) continue;
             c.renderer = -1;
             const bool ok = r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-            if (!ok || !upload(c, c.renderPath)) c.status = "(no picture)";
+            if (!ok || !upload(c, c.renderPath)) c.status = N_("(no picture)");
         }
     }
 
@@ -229,19 +229,21 @@ class Launcher : public Lab {
         std::string exe = binDir() + "/" + kLabs[i].executable;
 #if defined(WB_HEADLESS)
         // The headless launcher (workbench-panel-check) has no display to open a lab on.
-        status_ = "would start " + exe;
+        status_ = trf("would start %s", exe.c_str());
         return;
 #endif
         pid_t pid = fork();
         if (pid == 0) {
             if (fork() == 0) {
-                execl(exe.c_str(), exe.c_str(), static_cast<char*>(nullptr));
+                // The lab opens in the language the launcher shows now (it may have been switched).
+                execl(exe.c_str(), exe.c_str(), "--lang", language().c_str(),
+                      static_cast<char*>(nullptr));
                 std::perror(exe.c_str());
             }
             _exit(0);
         }
         if (pid > 0) waitpid(pid, nullptr, 0);
-        status_ = pid > 0 ? "started " + exe : "could not start " + exe;
+        status_ = pid > 0 ? trf("started %s", exe.c_str()) : trf("could not start %s", exe.c_str());
         std::fprintf(stderr, "%s\n", status_.c_str());
     }
 
@@ -263,8 +265,8 @@ int renderAllHeadless(const std::string& outDir, const std::string& size) {
     for (int i = 0; i < labCount(); ++i) {
         std::string exe = binDir() + "/" + kLabs[i].executable + "-headless";
         std::string out = dir + "/" + kLabs[i].executable + ".png";
-        int rc = runAndWait({exe, "--out", out, "--size", size});
-        std::printf("%-16s %s  %s\n", kLabs[i].executable, rc == 0 ? "ok    " : "FAILED",
+        int rc = runAndWait({exe, "--out", out, "--size", size, "--lang", language()});
+        std::printf("%-16s %-6s  %s\n", kLabs[i].executable, rc == 0 ? tr("ok") : tr("FAILED"),
                     out.c_str());
         if (rc != 0) ++failed;
     }
