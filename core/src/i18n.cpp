@@ -133,7 +133,10 @@ std::string pseudo(std::string_view english) {
         if (c != '\n') ++visible;
     }
     // +40% (Russian runs 20-30% longer than English: the panel must have room for more).
-    out.append((visible * 2 + 4) / 5, '~');
+    // In words of up to 8, so that a wrapped line can break inside the padding.
+    const size_t pad = (visible * 2 + 4) / 5;
+    for (size_t i = 0; i < pad; ++i)
+        out += (i % 8 == 7 && i + 1 < pad) ? ' ' : '~';
     out += ']';
     out.append(id);
     return out;

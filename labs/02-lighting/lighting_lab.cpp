@@ -2,6 +2,7 @@
 
 #include "common/gl_util.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <imgui.h>
@@ -29,20 +30,20 @@ const char* comboLookFor(int combo) {
     switch (combo) {
     case 1:
         return N_("Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
-               "so elsewhere each cube shows its ambient term alone. The left cube's front "
-               "face turns towards the half-vector as a whole; the right cube's corner "
-               "normals catch it only faintly, near one corner.");
+                  "so elsewhere each cube shows its ambient term alone. The left cube's front "
+                  "face turns towards the half-vector as a whole; the right cube's corner "
+                  "normals catch it only faintly, near one corner.");
     case 2:
         return N_("Look for faces shaded by their angle to the light, and for the missing "
-               "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
-               "its dark green diffuse part (0.2) shows.");
+                  "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
+                  "its dark green diffuse part (0.2) shows.");
     case 3:
         return N_("Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
-               "light with only GL_SPECULAR reflects none of it; every face shows the same "
-               "ambient colour.");
+                  "light with only GL_SPECULAR reflects none of it; every face shows the same "
+                  "ambient colour.");
     default:
         return N_("Look for bright green faces turned to the light and darker ones turned away: "
-               "matte material, diffuse light, Lambert's cosine and no highlight anywhere.");
+                  "matte material, diffuse light, Lambert's cosine and no highlight anywhere.");
     }
 }
 
@@ -517,7 +518,7 @@ void LightingLab::gui() {
     ImGui::SliderFloat(tr("spot cutoff"), &s.spotCutoff, 0.0f, 90.0f);
     ImGui::SliderFloat(tr("spot exponent"), &s.spotExponent, 0.0f, 128.0f);
     ImGui::Checkbox(tr("light marker (m)"), &s.showMarker);
-    ImGui::SameLine();
+    sameLineIfFits(tr("blocker (b)"));
     ImGui::Checkbox(tr("blocker (b)"), &s.showBlocker);
     ImGui::SliderFloat(tr("camera tilt"), &s.tilt, -90.0f, 90.0f);
     ImGui::Separator();
@@ -537,8 +538,11 @@ void LightingLab::gui() {
         tr("Local viewer: the direction to the eye changes across the face, so h "
            "changes too and even the flat-normal left cube can show a highlight inside "
            "a large subdivided face."));
-    if (s.spotOn && s.lightPos.w == 0.0f)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), tr("a directional light has no spot cone"));
+    if (s.spotOn && s.lightPos.w == 0.0f) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));
+        ImGui::TextWrapped("%s", tr("a directional light has no spot cone"));
+        ImGui::PopStyleColor();
+    }
 }
 
 } // namespace

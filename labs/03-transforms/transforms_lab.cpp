@@ -4,6 +4,7 @@
 #include "common/gl_util.h"
 #include "core/teapot.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <glm/glm.hpp>
@@ -518,9 +519,9 @@ void TransformsLab::gui() {
     TransformsState& s = *s_;
     int proj = int(s.projection);
     ImGui::RadioButton(tr("glOrtho (1)"), &proj, 0);
-    ImGui::SameLine();
+    sameLineIfFits(tr("gluPerspective (2)"));
     ImGui::RadioButton(tr("gluPerspective (2)"), &proj, 1);
-    ImGui::SameLine();
+    sameLineIfFits(tr("glFrustum (3)"));
     ImGui::RadioButton(tr("glFrustum (3)"), &proj, 2);
     s.projection = Projection(proj);
     switch (s.projection) {
@@ -554,7 +555,7 @@ void TransformsLab::gui() {
     int seed = int(s.seed);
     if (ImGui::InputInt(tr("seed (r)"), &seed)) s.seed = unsigned(std::max(seed, 0));
     ImGui::Checkbox(tr("mirror in the blackboard wall (m)"), &s.mirror);
-    ImGui::Checkbox(tr("glFrontFace(GL_CW) in the mirror (w)"), &s.mirrorFrontFace);
+    ImGui::Checkbox(tr("glFrontFace(GL_CW) (w)"), &s.mirrorFrontFace); // under "mirror"
     ImGui::Checkbox(tr("mirrored light position (l)"), &s.mirrorLight);
     ImGui::TextWrapped(
         tr("Mirror: glTranslatef(0,0,wall) glScalef(1,1,-1) glTranslatef(0,0,-wall). "

@@ -7,6 +7,7 @@
 #include "environment.h"
 #include "texture_file.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -249,19 +250,24 @@ class TexturesLab : public Lab {
         int scene = int(s_->scene);
         ImGui::Text(tr("Scene (0-5)"));
         ImGui::RadioButton(tr("all"), &scene, 0);
-        ImGui::SameLine();
+        sameLineIfFits(tr("flat"));
         ImGui::RadioButton(tr("flat"), &scene, 1);
-        ImGui::SameLine();
+        sameLineIfFits(tr("sphere"));
         ImGui::RadioButton(tr("sphere"), &scene, 2);
-        ImGui::SameLine();
+        sameLineIfFits(tr("torus"));
         ImGui::RadioButton(tr("torus"), &scene, 3);
-        ImGui::SameLine();
+        sameLineIfFits(tr("mirror"));
         ImGui::RadioButton(tr("mirror"), &scene, 4);
-        ImGui::SameLine();
+        sameLineIfFits(tr("bump"));
         ImGui::RadioButton(tr("bump"), &scene, 5);
         s_->scene = TextureScene(scene);
         ImGui::Checkbox(tr("GL_REPEAT (w; off = GL_CLAMP)"), &s_->repeat);
         int filter = int(s_->filter);
+        // Wide enough for its longest value whatever the label's language leaves it.
+        ImGui::SetNextItemWidth(
+            std::max(ImGui::CalcItemWidth(), ImGui::CalcTextSize("GL_LINEAR_MIPMAP_LINEAR").x +
+                                                 ImGui::GetFrameHeight() +
+                                                 2.0f * ImGui::GetStyle().FramePadding.x));
         ImGui::Combo(tr("filter (f)"), &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
         s_->filter = TextureFilter(filter);
         // A Combo takes its items as one string of NUL-separated names: translated one by one.
@@ -273,8 +279,9 @@ class TexturesLab : public Lab {
         float depth = float(s_->bumpDepth);
         if (ImGui::SliderFloat(tr("bump depth"), &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
         float spin[2] = {float(s_->spinX), float(s_->spinY)};
-        if (ImGui::DragFloat2(tr("spin x, y (arrows)"), spin)) s_->spinX = spin[0], s_->spinY = spin[1];
-        ImGui::Text(tr("sphere map rebuilt %d times (once per new view)"), s_->sphereMapBuilds);
+        if (ImGui::DragFloat2(tr("spin (arrows)"), spin)) s_->spinX = spin[0], s_->spinY = spin[1];
+        ImGui::TextWrapped(tr("sphere map rebuilt %d times (once per new view)"),
+                           s_->sphereMapBuilds);
         ImGui::TextWrapped(tr("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
                               "pole vertices take s at their slice's middle."));
         if (!s_->message.empty())

@@ -3,6 +3,7 @@
 #include "common/gl_util.h"
 #include "core/teapot.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -532,18 +533,18 @@ void BezierLab::gui() {
     // The panel is narrow: one short item per line, numbers in monospaced tables.
     BezierLabState& s = *s_;
     ImGui::RadioButton(tr("circle (1)"), &s.shape, 0);
-    ImGui::SameLine();
+    sameLineIfFits(tr("sphere (2)"));
     ImGui::RadioButton(tr("sphere (2)"), &s.shape, 1);
-    ImGui::SameLine();
+    sameLineIfFits(tr("teapot (3)"));
     ImGui::RadioButton(tr("teapot (3)"), &s.shape, 2);
     ImGui::Checkbox(tr("control net (c)"), &s.showControl);
     if (s.shape != 2) {
-        ImGui::SameLine();
+        sameLineIfFits(tr("true shape (t)"));
         ImGui::Checkbox(tr("true shape (t)"), &s.showTrue);
     }
     if (s.shape >= 1) {
         ImGui::Checkbox(tr("wireframe (w)"), &s.wireframe);
-        ImGui::SameLine();
+        sameLineIfFits(tr("core normals (n)"));
         ImGui::Checkbox(tr("core normals (n)"), &s.coreNormals);
         ImGui::Checkbox(tr("zoom on the unlit spot (z)"), &s.zoomInset);
         if (s.shape == 1)
@@ -593,8 +594,10 @@ void BezierLab::gui() {
         ImGui::TextWrapped(tr("GL's evaluator (float) against core's de Casteljau (double) on "
                               "the same grid, read back with GL_FEEDBACK; normals through "
                               "lighting:"));
+        // Stretched to the panel: fixed-fit columns as wide as a long (translated) header ran
+        // past the panel's edge.
         if (ImGui::BeginTable("teapot", 4,
-                              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+                              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
             ImGui::TableSetupColumn(tr("grid"));
             ImGui::TableSetupColumn(tr("max |dp|"));
             ImGui::TableSetupColumn(tr("max angle"));

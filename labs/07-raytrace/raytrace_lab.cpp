@@ -7,6 +7,7 @@
 #include "common/gl.h"
 #include "common/gl_util.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <imgui.h>
@@ -275,8 +276,8 @@ class RaytraceLab : public Lab {
         }
         st.fraction = std::min(done / cells, 1.0);
         if (e.next < e.scenes.size())
-            st.current = e.scenes[e.next] +
-                         (e.column ? trf(", no BVH, run %d", e.run + 1) : trf(", BVH, run %d", e.run + 1));
+            st.current = e.scenes[e.next] + (e.column ? trf(", no BVH, run %d", e.run + 1)
+                                                      : trf(", BVH, run %d", e.run + 1));
         st.seconds = secondsSince(e.start);
         return st;
     }
@@ -1092,7 +1093,7 @@ void heatBar() {
     }
     ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
     wrapText(tr("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
-             "yellow at 64 and above (also under the picture)"));
+                "yellow at 64 and above (also under the picture)"));
 }
 
 // The timing experiment as a plot: trace time per scene on a log scale, BVH and no BVH.
@@ -1194,8 +1195,8 @@ void RaytraceLab::gui() {
         ImGui::EndCombo();
     }
     ImGui::TextUnformatted(tr("file (.nff / .obj):"));
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(tr("load")).x - 2 * ImGui::GetStyle().FramePadding.x -
-                            ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(tr("load")).x -
+                            2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
     ImGui::SameLine();
     if (ImGui::Button(tr("load"))) {
@@ -1218,11 +1219,11 @@ void RaytraceLab::gui() {
                   : "");
     int mode = s.traced ? 1 : 0;
     ImGui::RadioButton(tr("g: OpenGL"), &mode, 0);
-    ImGui::SameLine();
+    sameLineIfFits(tr("G: ray traced"));
     ImGui::RadioButton(tr("G: ray traced"), &mode, 1);
     s.traced = mode == 1;
     ImGui::Checkbox(tr("f: GLSL Phong"), &s.glsl);
-    ImGui::SameLine();
+    sameLineIfFits(tr("d: heat map"));
     ImGui::Checkbox(tr("d: heat map"), &s.showDiff);
     if (!programError_.empty()) wrapf(tr("shader: %s"), programError_.c_str());
 
@@ -1246,13 +1247,18 @@ void RaytraceLab::gui() {
             wrapf(st.finished ? tr("trace %.3f s (finished)") : tr("trace %.3f s (cancelled)"),
                   st.seconds);
         if (st.finished)
-            wrapf(tr("trace / raster = %.0f"), st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
+            wrapf(tr("trace / raster = %.0f"),
+                  st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
         // Live while tracing (tiles finished so far); one number per row, right-aligned.
         if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_SizingStretchProp)) {
+            // The counts get the room of the longest (10 digits); the names wrap beside them.
+            ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed,
+                                    ImGui::CalcTextSize("0000000000").x);
             auto row = [](const char* what, long long n) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(what);
+                ImGui::TextWrapped("%s", what);
                 ImGui::TableNextColumn();
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%lld", n);
@@ -1269,7 +1275,8 @@ void RaytraceLab::gui() {
     }
     if (s.showDiff) {
         if (diffValid_)
-            wrapf(tr("|raster - trace|: mean %.2f, max %d (of 255)"), diff_.meanDiff, diff_.maxDiff);
+            wrapf(tr("|raster - trace|: mean %.2f, max %d (of 255)"), diff_.meanDiff,
+                  diff_.maxDiff);
         else
             wrapText(tr("heat map: shown when the trace is finished"));
         heatBar();
@@ -1277,8 +1284,8 @@ void RaytraceLab::gui() {
 
     ImGui::Separator();
     if (tree_) {
-        wrapf(tr("ray tree of pixel (%d, %d), screen (%g, %g)"), inspectedPixel_.x, inspectedPixel_.y,
-              inspectedScreen_.x, inspectedScreen_.y);
+        wrapf(tr("ray tree of pixel (%d, %d), screen (%g, %g)"), inspectedPixel_.x,
+              inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y);
         ImGui::Checkbox(tr("draw the ray path"), &s.showRayPath);
         for (const std::string& l : treeLines_)
             wrapText(l);
@@ -1288,7 +1295,7 @@ void RaytraceLab::gui() {
     ImGui::Separator();
     int model = s.model == ModelKind::Course ? 0 : 1;
     ImGui::RadioButton(tr("course model"), &model, 0);
-    ImGui::SameLine();
+    sameLineIfFits(tr("phong model"));
     ImGui::RadioButton(tr("phong model"), &model, 1);
     s.model = model == 0 ? ModelKind::Course : ModelKind::Phong;
     if (s.model == ModelKind::Course) {
@@ -1303,8 +1310,8 @@ void RaytraceLab::gui() {
             const double sh = sc.distScale / std::max(glm::length(l.position - c), 1e-9);
             if (sh > 1.5) {
                 wrapf(tr("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
-                      "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
-                      "clamp at 255."),
+                         "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
+                         "clamp at 255."),
                       sc.distScale, glm::length(l.position - c), sh);
                 break;
             }
@@ -1356,7 +1363,8 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::Text(tr("%.1fms"), r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0) ImGui::Text(tr("%.3fs%s"), r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0)
+                ImGui::Text(tr("%.3fs%s"), r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
                 ImGui::Text(r.bruteEstimated ? tr("~%.0fs") : tr("%.3fs"), r.bruteSeconds);
@@ -1367,7 +1375,7 @@ void RaytraceLab::gui() {
         }
         ImGui::EndTable();
         wrapText(tr("* too few objects for a BVH (brute force in both columns); ~ estimated from "
-                 "the row above x objects, not run; Mray/s with the BVH."));
+                    "the row above x objects, not run; Mray/s with the BVH."));
         plotTimings(timings_);
     }
 }

@@ -12,6 +12,7 @@
 #include "core/radiosity/smoothing.h"
 #include "core/radiosity/solver.h"
 
+#include "common/panel.h"
 #include "core/i18n.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -143,7 +144,8 @@ class RadiosityLab : public Lab {
             else if (value == "gauss-seidel")
                 s.solver = 2;
             else {
-                error = trf("expected progressive, jacobi or gauss-seidel, got '%s'", value.c_str());
+                error =
+                    trf("expected progressive, jacobi or gauss-seidel, got '%s'", value.c_str());
                 return false;
             }
             return true;
@@ -943,15 +945,16 @@ void RadiosityLab::gui() {
     int method = int(s.method);
     ImGui::Text(tr("form factors:"));
     ImGui::RadioButton(tr("1 rays"), &method, 0);
-    ImGui::SameLine();
+    sameLineIfFits(tr("2 CPU"));
     ImGui::RadioButton(tr("2 CPU"), &method, 1);
-    ImGui::SameLine();
+    sameLineIfFits(tr("3 GL"));
     ImGui::RadioButton(tr("3 GL"), &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::GlHemicube)
         ImGui::TextWrapped(tr("GL rows are drawn on the GL thread: a run steps between frames. "
                               "Depth: %s."),
-                           glHemicube_.reversedDepth() ? tr("reversed float") : tr("float, far plane"));
+                           glHemicube_.reversedDepth() ? tr("reversed float")
+                                                       : tr("float, far plane"));
     ImGui::Text(tr("FF time %.3f s, %lld rows"), ff.seconds(), ff.rowsComputed());
     ImGui::Text(tr("F memory %.1f MiB (%s)"), double(ff.bytes()) / (1024.0 * 1024.0),
                 ff.stored() ? tr("stored") : tr("rows on demand"));
@@ -974,8 +977,8 @@ void RadiosityLab::gui() {
             lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
         const float lo = *std::min_element(lg.begin(), lg.end());
         const float hi = *std::max_element(lg.begin(), lg.end());
-        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, tr("log10 residual"), lo - 0.1f,
-                         hi + 0.1f, ImVec2(0, 70));
+        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, tr("log10 residual"),
+                         lo - 0.1f, hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
     if (ImGui::SliderFloat(tr("log10 tol"), &tol, -8.0f, -1.0f, "%.1f")) {
@@ -996,7 +999,7 @@ void RadiosityLab::gui() {
 
     ImGui::Separator();
     if (ImGui::Checkbox(tr("s smooth"), &s.smooth)) coloursDirty_ = true;
-    ImGui::SameLine();
+    sameLineIfFits(tr("p outlines"));
     ImGui::Checkbox(tr("p outlines"), &s.outlines);
     ImGui::Checkbox(tr("item colours (hemicube's view)"), &s.showItems);
     if (ImGui::SliderFloat(tr("exposure"), &s.exposure, 0.1f, 10.0f, "%.2f",

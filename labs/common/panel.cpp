@@ -109,6 +109,14 @@ ImFont* panelMonoFont() {
     return g_mono ? g_mono : ImGui::GetFont();
 }
 
+void sameLineIfFits(const char* nextLabel) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                        ImGui::CalcTextSize(nextLabel, nullptr, true).x;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
 namespace {
 
 // Keys as a two-column table: the key, then what it does, wrapped to the panel.
@@ -159,7 +167,7 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
                     p.frameMs > 0 ? 1000.0 / p.frameMs : 0.0);
     else
         ImGui::Text(tr("%.2f ms/frame"), p.frameMs);
-    ImGui::SameLine();
+    sameLineIfFits(tr("measure fps"));
     ImGui::Checkbox(tr("measure fps"), &p.measureFps);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s", tr("Redraw continuously (one core busy); off, the window redraws "
@@ -167,10 +175,14 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
     if (ImGui::Button(tr("Screenshot (PNG)"))) p.screenshotRequested = true;
     if (!p.lastScreenshot.empty()) ImGui::TextWrapped("%s", p.lastScreenshot.c_str());
 
+    // Half the width for a widget, half for its label (ImGui's default gives the label a third,
+    // too little for the Russian labels).
+    ImGui::PushItemWidth(std::floor(ImGui::GetContentRegionAvail().x * 0.5f));
     if (fills)
         lab.gui(); // the panel is the whole program (the launcher): no header above it
     else if (ImGui::CollapsingHeader(tr("Parameters"), ImGuiTreeNodeFlags_DefaultOpen))
         lab.gui();
+    ImGui::PopItemWidth();
     if (ImGui::CollapsingHeader(tr("View"))) {
         ImGui::TextUnformatted(tr("UI scale (Ctrl+= / Ctrl+-)"));
         ImGui::SetNextItemWidth(-1.0f);

@@ -60,7 +60,8 @@ TEST_CASE("font atlas: every character of every catalogue string has a glyph", "
     }
 }
 
-TEST_CASE("--keys: Russian-layout letters are the US keys at the same place", "[i18n]") {
+TEST_CASE("keys replay (--keys): Russian-layout letters are the US keys at the same place",
+          "[i18n]") {
     std::vector<int> codes;
     std::string error;
     REQUIRE(wb::parseKeys("пПыб{left}юЁх1", codes, error));
