@@ -109,6 +109,10 @@ ImFont* panelMonoFont() {
     return g_mono ? g_mono : ImGui::GetFont();
 }
 
+std::string idLabel(const char* label, const char* id) {
+    return std::string(label) + "###" + id;
+}
+
 void sameLineIfFits(const char* nextLabel) {
     const ImGuiStyle& style = ImGui::GetStyle();
     const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
@@ -159,7 +163,8 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
             ImGui::SetNextWindowSize(ImVec2(p.width, windowHeight), ImGuiCond_Always);
         }
     }
-    ImGui::Begin(lab.title().c_str(), nullptr, flags);
+    // "###panel": the same ImGui window (size, scroll) whatever language the title is in.
+    ImGui::Begin((lab.title() + "###panel").c_str(), nullptr, flags);
     if (!fills) p.width = ImGui::GetWindowWidth();
 
     if (p.measureFps)
@@ -180,10 +185,11 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
     ImGui::PushItemWidth(std::floor(ImGui::GetContentRegionAvail().x * 0.5f));
     if (fills)
         lab.gui(); // the panel is the whole program (the launcher): no header above it
-    else if (ImGui::CollapsingHeader(tr("Parameters"), ImGuiTreeNodeFlags_DefaultOpen))
+    else if (ImGui::CollapsingHeader(idLabel(tr("Parameters"), "params").c_str(),
+                                     ImGuiTreeNodeFlags_DefaultOpen))
         lab.gui();
     ImGui::PopItemWidth();
-    if (ImGui::CollapsingHeader(tr("View"))) {
+    if (ImGui::CollapsingHeader(idLabel(tr("View"), "view").c_str())) {
         ImGui::TextUnformatted(tr("UI scale (Ctrl+= / Ctrl+-)"));
         ImGui::SetNextItemWidth(-1.0f);
         ImGui::SliderFloat("##uiscale", &p.requestedScale, kMinUiScale, kMaxUiScale, "%.2f");
@@ -201,7 +207,8 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
         ImGui::NewLine();
     }
     // The launcher's keys are the numbers on its cards: its list starts closed.
-    if (ImGui::CollapsingHeader(tr("Keys"), fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader(idLabel(tr("Keys"), "keys").c_str(),
+                                fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         std::vector<KeyHelp> keys = lab.keys();
         if (p.keysLikeShell && !fills) {
             keys.push_back({"h", tr("hide/show this panel")});

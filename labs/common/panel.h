@@ -46,6 +46,10 @@ float defaultPanelWidth(float scale);
 void drawPanel(Lab& lab, PanelState& state, float windowWidth, float windowHeight,
                bool alwaysScrollbar = false);
 
+// `label` shown, `id` as ImGui's id ("label###id"): a header or window keeps its state (open,
+// size, scroll) when the language switches and its label changes.
+std::string idLabel(const char* label, const char* id);
+
 // ImGui::SameLine() when a checkbox or radio button labelled `nextLabel` still fits on the line,
 // else nothing (it starts the next line): a row of options that fits in English may not in
 // Russian, whose words run 20-30% longer.
