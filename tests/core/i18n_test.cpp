@@ -201,7 +201,9 @@ TEST_CASE("catalogue: every Russian translation keeps its msgid's printf convers
         for (auto it = std::sregex_iterator(str.begin(), str.end(), conv);
              it != std::sregex_iterator(); ++it) {
             std::string c = it->str();
-            c = std::regex_replace(c, std::regex(R"(\d+\$)"), ""); // %1$s reorders, same kind
+            // The kind only: %1$s reorders, %.0s prints nothing (an English plural "s" the
+            // translation does not need) - the argument's type is what must match.
+            c = std::regex_replace(c, std::regex(R"(%(?:\d+\$)?[-+ #0']*\d*(?:\.\d+)?)"), "%");
             out.push_back(c);
         }
         std::sort(out.begin(), out.end());
@@ -240,7 +242,7 @@ TEST_CASE("glossary: every course term of an English string is in its Russian tr
         const std::regex term("(^|[^A-Za-z_])" + english + (prefix ? "" : "($|[^A-Za-z_])"),
                               name ? std::regex::ECMAScript : std::regex::icase);
         const auto stems = split(cols[2], ' ');
-        const auto excepts = cols.size() > 4 ? split(cols[4], ' ') : std::vector<std::string>{};
+        const auto excepts = cols.size() > 4 ? split(cols[4], '|') : std::vector<std::string>{};
         for (const auto& m : msgs) {
             const std::string id(m.id);
             if (!std::regex_search(id, term)) continue;
