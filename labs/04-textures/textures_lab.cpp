@@ -124,7 +124,7 @@ class TexturesLab : public Lab {
             Image img;
             std::string msg;
             if (!loadTextureImage(path, img, msg)) {
-                std::fprintf(stderr, "lab04: %s\n", msg.c_str());
+                std::fprintf(stderr, tr("lab04: %s\n"), msg.c_str());
                 s_->message += msg + "\n";
             }
             upload(textures_[i], img);
@@ -136,7 +136,7 @@ class TexturesLab : public Lab {
         std::string err;
         bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
         if (!bumpProgram_) {
-            std::fprintf(stderr, "lab04: %s\n", err.c_str());
+            std::fprintf(stderr, tr("lab04: %s\n"), err.c_str());
             s_->message += err + tr(" (scene 5 falls back to the fixed-function torus)") + "\n";
         }
         room_ = toGl(makeSphere(30.0, 64, 32));

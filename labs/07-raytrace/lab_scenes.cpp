@@ -112,9 +112,9 @@ void buildSeedPart1(LabScene& s, bool withRect1) {
     // (W/2 + 4·xs, H/2 − 4·ys), so P(50, 0) is traced with the seed's very ray.
     s.camera.screenPixel = 0.25;
     s.about = withRect1 ? N_("seed 000 part 1: P(50,0) (pixel W/2+200, H/2) in the red "
-                          "rectangle's shadow: (10,117,10)")
+                             "rectangle's shadow: (10,117,10)")
                         : N_("seed 000 part 1, red rectangle removed: P(50,0) (pixel W/2+200, "
-                          "H/2) lit: (50,197,50)");
+                             "H/2) lit: (50,197,50)");
 }
 
 // Seed 000 part 2: the green rectangle (kr 0.5) reflects the red one standing in x = 50.
@@ -301,9 +301,10 @@ bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
             std::string known;
             for (const auto& k : builtinSceneNames())
                 known += " " + k;
-            error = trf("unknown scene '%s' (one of:%s, balls:N, jacks:N with N = 1..5, or a .nff / "
-                        ".obj file)",
-                        name.c_str(), known.c_str());
+            error =
+                trf("unknown scene '%s' (one of:%s, balls:N, jacks:N with N = 1..5, or a .nff / "
+                    ".obj file)",
+                    name.c_str(), known.c_str());
             return false;
         }
     } catch (const std::exception& e) {
@@ -332,7 +333,7 @@ bool setAccel(LabScene& s, bool on) {
     } catch (const std::exception& e) {
         // The BVH refused to build (bad options, memory): said, and traced with the plain
         // loop (the same pictures, slower) rather than ending the lab.
-        std::fprintf(stderr, "lab07: no BVH: %s; tracing with the plain loop\n", e.what());
+        std::fprintf(stderr, tr("lab07: no BVH: %s; tracing with the plain loop\n"), e.what());
         s.accel.reset();
         s.accelSeconds = 0;
         return false;

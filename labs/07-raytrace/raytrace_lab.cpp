@@ -136,7 +136,7 @@ class RaytraceLab : public Lab {
     void init() override {
         std::string err;
         if (!loadScene(s.sceneName, err)) {
-            std::fprintf(stderr, "lab07: %s\n", err.c_str());
+            std::fprintf(stderr, tr("lab07: %s\n"), err.c_str());
             loadScene("two-spheres", err);
         }
         if (modelOption_ == "course") s.model = ModelKind::Course;
@@ -350,13 +350,13 @@ class RaytraceLab : public Lab {
         if (!view.headless) return;
         // --inspect X,Y: the tree the panel shows, on stdout.
         if (!tree_) {
-            std::fprintf(stderr, "lab07: --inspect %d,%d is outside the %dx%d traced image\n",
+            std::fprintf(stderr, tr("lab07: --inspect %d,%d is outside the %dx%d traced image\n"),
                          inspectX_, inspectY_, tc.width, tc.height);
             headlessFailed_ = true;
             return;
         }
-        std::printf("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n", inspectedPixel_.x,
-                    inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y,
+        std::printf(tr("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n"),
+                    inspectedPixel_.x, inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y,
                     s.model == ModelKind::Course ? "course" : "phong");
         for (const std::string& l : treeLines_)
             std::printf("%s\n", l.c_str());
@@ -434,18 +434,18 @@ class RaytraceLab : public Lab {
             std::fprintf(stderr, "\n");
         else if (st.finished)
             std::fprintf(stderr, "[########################################] 100%%\n");
-        std::printf("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n", scene_.name.c_str(),
-                    scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
+        std::printf(tr("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n"),
+                    scene_.name.c_str(), scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
                     scene_.accelSeconds * 1e3);
         std::printf(
-            "%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
-            "%lld rays; %.2f M rays/s\n",
+            tr("%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
+               "%lld rays; %.2f M rays/s\n"),
             job_.camera().width, job_.camera().height, st.threads, st.seconds * 1e3, st.primaryRays,
             st.shadowRays, st.secondaryRays,
             st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
         if (st.nonFinitePixels) {
             // Written black, the picture would pass for fine: the shell writes nothing.
-            std::fprintf(stderr, "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n",
+            std::fprintf(stderr, tr("lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n"),
                          scene_.name.c_str(), st.nonFinitePixels);
             headlessFailed_ = true;
         }
@@ -873,7 +873,7 @@ void RaytraceLab::stepExperiment(const View& view) {
         if (e.next >= e.scenes.size()) {
             e.active = false;
             if (printTimings_) {
-                std::printf("%dx%d, %d threads (0 = all), best of up to %d traces\n",
+                std::printf(tr("%dx%d, %d threads (0 = all), best of up to %d traces\n"),
                             view.width / s.divisor, view.height / s.divisor, s.threads,
                             kExperimentRuns);
                 std::printf("%-12s %6s %8s %9s %9s %10s %8s %8s %7s\n", "scene", "prims", "tris",
@@ -891,8 +891,8 @@ void RaytraceLab::stepExperiment(const View& view) {
                                 r.raysPerSecond / 1e6,
                                 r.traceSeconds * 1000.0 / std::max(r.rasterMs, 1e-9));
                 }
-                std::printf("(~: estimated from the row above x objects, not run; ratio = BVH "
-                            "trace / raster)\n");
+                std::printf(tr("(~: estimated from the row above x objects, not run; ratio = BVH "
+                               "trace / raster)\n"));
                 std::fflush(stdout);
             }
             return;
@@ -903,7 +903,7 @@ void RaytraceLab::stepExperiment(const View& view) {
             std::string err;
             e.scene = LabScene{};
             if (!loadLabScene(e.scenes[e.next], e.scene, err)) {
-                std::fprintf(stderr, "lab07 experiment: %s\n", err.c_str());
+                std::fprintf(stderr, tr("lab07 experiment: %s\n"), err.c_str());
                 ++e.next;
                 return;
             }
@@ -955,8 +955,8 @@ void RaytraceLab::stepExperiment(const View& view) {
                     e.row.bruteEstimated = true;
                     if (view.headless)
                         std::fprintf(stderr,
-                                     "experiment: %s without the BVH: about %.0f s, "
-                                     "not run\n",
+                                     tr("experiment: %s without the BVH: about %.0f s, "
+                                        "not run\n"),
                                      e.row.scene.c_str(), estimate);
                     timings_.push_back(e.row);
                     e.column = 0;
@@ -997,7 +997,7 @@ void RaytraceLab::stepExperiment(const View& view) {
         return;
     }
     if (view.headless)
-        std::fprintf(stderr, "experiment: %-10s %-7s %8.3f s (%d run%s)\n", e.row.scene.c_str(),
+        std::fprintf(stderr, tr("experiment: %-10s %-7s %8.3f s (%d run%s)\n"), e.row.scene.c_str(),
                      brute ? "no BVH" : "BVH", best, e.run, e.run > 1 ? "s" : "");
     e.tracing = false;
     if (!brute) {

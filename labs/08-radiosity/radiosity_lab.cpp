@@ -346,7 +346,7 @@ class RadiosityLab : public Lab {
             install(std::move(m));
         } catch (const std::exception& e) {
             message_ = e.what();
-            std::fprintf(stderr, "lab08: scene %s: %s\n", name.c_str(), e.what());
+            std::fprintf(stderr, tr("lab08: scene %s: %s\n"), name.c_str(), e.what());
         }
     }
 
@@ -500,7 +500,7 @@ class RadiosityLab : public Lab {
         } catch (const std::exception& e) {
             // Never leave the lab without a solver: progressive with the CPU hemicube.
             message_ = e.what();
-            std::fprintf(stderr, "lab08: %s (progressive with the CPU hemicube instead)\n",
+            std::fprintf(stderr, tr("lab08: %s (progressive with the CPU hemicube instead)\n"),
                          e.what());
             s.method = FfMethod::CpuHemicube;
             s.solver = 0;
@@ -578,11 +578,12 @@ class RadiosityLab : public Lab {
         printedVersion_ = snap.version;
         const rad::FormFactors& ff = *model_->ff;
         const char* methods[] = {"rays", "CPU hemicube", "GL hemicube"};
-        std::printf("%s: %zu patches, %s, %d steps, residual %.2e, form factors %.2f s (%lld rows, "
-                    "%.1f MiB), last run %.2f s\n",
-                    model_->scene.name.c_str(), model_->mesh.patches.size(), methods[int(s.method)],
-                    snap.steps, snap.residual, ff.seconds(), ff.rowsComputed(),
-                    double(ff.bytes()) / (1024.0 * 1024.0), runSeconds_.load());
+        std::printf(
+            tr("%s: %zu patches, %s, %d steps, residual %.2e, form factors %.2f s (%lld rows, "
+               "%.1f MiB), last run %.2f s\n"),
+            model_->scene.name.c_str(), model_->mesh.patches.size(), methods[int(s.method)],
+            snap.steps, snap.residual, ff.seconds(), ff.rowsComputed(),
+            double(ff.bytes()) / (1024.0 * 1024.0), runSeconds_.load());
         std::fflush(stdout);
     }
 

@@ -50,7 +50,8 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     const int width = opts.width, height = opts.height;
     const HeadlessContext context(width, height);
     if (!context.ok()) {
-        std::fprintf(stderr, "%s: OSMesa: cannot create a %dx%d context\n", program, width, height);
+        std::fprintf(stderr, tr("%s: OSMesa: cannot create a %dx%d context\n"), program, width,
+                     height);
         return 1;
     }
     View view;
@@ -98,7 +99,7 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
         for (const auto& c : panelcheck::stop()) {
             if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
             reported.push_back(c.text);
-            std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n", program,
+            std::printf(tr("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n"), program,
                         state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str());
             ++clipped;
         }
@@ -108,7 +109,7 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
                 std::find(reported.begin(), reported.end(), text) != reported.end())
                 continue;
             reported.push_back(text);
-            std::printf("%s: untranslated %s: \"%s\" (English: %s)\n", program, state.c_str(),
+            std::printf(tr("%s: untranslated %s: \"%s\" (English: %s)\n"), program, state.c_str(),
                         text.c_str(), words.c_str());
             ++untranslated;
         }
@@ -121,10 +122,10 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
         check("after key '" + k.key + "'");
     }
     ImGui::DestroyContext(); // the GL context finishes and goes at the end of the scope
-    std::printf("%s: panel check at %.0fx%d, UI scale %.2f, language %s: %d clipped text%s",
+    std::printf(tr("%s: panel check at %.0fx%d, UI scale %.2f, language %s: %d clipped text%s"),
                 program, double(windowW), opts.height, double(opts.uiScale), language().c_str(),
                 clipped, clipped == 1 ? "" : "s");
-    if (pseudo) std::printf(", %d untranslated", untranslated);
+    if (pseudo) std::printf(tr(", %d untranslated"), untranslated);
     std::printf("\n");
     return clipped || untranslated ? 1 : 0;
 }
@@ -153,7 +154,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return checkPanel(argv[0], *lab, opts, keys);
     }
     if (opts.out.empty()) {
-        std::fprintf(stderr, "%s: the headless renderer needs --out FILE.png\n", argv[0]);
+        std::fprintf(stderr, tr("%s: the headless renderer needs --out FILE.png\n"), argv[0]);
         return 2;
     }
     std::vector<int> keys;
@@ -168,7 +169,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 1;
     }
     if (lab->headlessFailed()) {
-        std::fprintf(stderr, "%s: %s not written\n", argv[0], opts.out.c_str());
+        std::fprintf(stderr, tr("%s: %s not written\n"), argv[0], opts.out.c_str());
         return 1;
     }
     if (!writePng(opts.out, img, &error)) {

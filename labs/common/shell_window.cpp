@@ -85,7 +85,7 @@ void setUiScale(float scale) {
 
 void labKey(int code) {
     if (g->logKeys) {
-        std::fprintf(stderr, "lab key %d\n", code);
+        std::fprintf(stderr, "lab key %d\n", code); // read by tests/shell/russian_keys.sh
         std::fflush(stderr);
     }
     if (code == 27) return quit();
@@ -355,7 +355,7 @@ int execHeadless(char** argv) {
     char self[PATH_MAX] = {};
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) {
-        std::fprintf(stderr, "%s: cannot find my own executable\n", argv[0]);
+        std::fprintf(stderr, tr("%s: cannot find my own executable\n"), argv[0]);
         return 1;
     }
     std::string path = std::string(self, size_t(n)) + "-headless";
@@ -384,10 +384,11 @@ int runLab(int argc, char** argv, LabFactory factory) {
     if (state.opts.headless) return execHeadless(argv);
     const char* displayEnv = std::getenv("DISPLAY");
     if (!displayEnv || !*displayEnv) {
-        std::fprintf(stderr,
-                     "%s: no display (DISPLAY is not set); render to a file with --headless --out "
-                     "FILE.png\n",
-                     argv[0]);
+        std::fprintf(
+            stderr,
+            tr("%s: no display (DISPLAY is not set); render to a file with --headless --out "
+               "FILE.png\n"),
+            argv[0]);
         return 2;
     }
     std::vector<int> keys;
@@ -418,7 +419,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
-        std::fprintf(stderr, "%s: GLEW: %s\n", argv[0],
+        std::fprintf(stderr, tr("%s: GLEW: %s\n"), argv[0],
                      reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
         return 1;
     }

@@ -12,13 +12,14 @@
 //              the SPD's "depth 5" counting the eye ray as level 1)
 //   --spd      SPD rules: eye rays through the pixel corners ((w+1)(h+1) rays), depth 4
 //   --no-bvh   the plain loop over objects
+#include "common/cli_values.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/scene_file.h"
-#include "common/cli_values.h"
 
+#include "core/i18n.h"
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -30,8 +31,9 @@
 
 namespace {
 
-constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
-                               "[--depth D] [--spd] [--no-bvh]\n";
+constexpr const char* kUsage =
+    "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
+    "[--depth D] [--spd] [--no-bvh]\n";
 
 int usage(const char* argv0) {
     std::fprintf(stderr, kUsage, argv0);
@@ -72,7 +74,8 @@ int main(int argc, char** argv) {
     app.add_flag("--no-bvh", noBvh);
     const auto args = wb::cli::joinValues(argc, argv, {"--out", "--size", "--threads", "--depth"});
     try {
-        app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
+        app.parse(
+            std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
     } catch (const CLI::ParseError&) {
         if (!valueError.empty()) std::fprintf(stderr, "%s: %s\n", argv[0], valueError.c_str());
         return usage(argv[0]);
@@ -92,12 +95,13 @@ int main(int argc, char** argv) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         // The reader's repairs (faces dropped, a missing .mtl, ...): counted, the first lines.
         if (sf.warningCount > 0) {
-            std::fprintf(stderr, "%s: %zu warning%s:\n", scenePath.c_str(), sf.warningCount,
+            std::fprintf(stderr, wb::tr("%s: %zu warning%s:\n"), scenePath.c_str(), sf.warningCount,
                          sf.warningCount == 1 ? "" : "s");
             for (const std::string& w : sf.warnings)
                 std::fprintf(stderr, "  %s\n", w.c_str());
             if (sf.warningCount > sf.warnings.size())
-                std::fprintf(stderr, "  ... and %zu more\n", sf.warningCount - sf.warnings.size());
+                std::fprintf(stderr, wb::tr("  ... and %zu more\n"),
+                             sf.warningCount - sf.warnings.size());
         }
         std::unique_ptr<wb::rt::Bvh> bvh;
         if (useBvh) bvh = wb::rt::makeAggregate(*sf.scene);
@@ -132,10 +136,11 @@ int main(int argc, char** argv) {
             printBar(1, 1, false);
         if (st.nonFinitePixels) {
             // A NaN/Inf colour is written black: the picture would be wrong, not fine.
-            std::fprintf(stderr,
-                         "%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not writing "
-                         "the image\n",
-                         argv[0], scenePath.c_str(), st.nonFinitePixels);
+            std::fprintf(
+                stderr,
+                wb::tr("%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not writing "
+                       "the image\n"),
+                argv[0], scenePath.c_str(), st.nonFinitePixels);
             return 1;
         }
         std::string err;
@@ -144,11 +149,11 @@ int main(int argc, char** argv) {
             return 1;
         }
         const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
-        std::printf("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n", scenePath.c_str(),
-                    sf.scene->primitives.size(), loadS * 1e3,
+        std::printf(wb::tr("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n"),
+                    scenePath.c_str(), sf.scene->primitives.size(), loadS * 1e3,
                     bvh ? bvh->stats().buildSeconds * 1e3 : 0.0, bvh ? "" : ", plain loop");
-        std::printf("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
-                    "reflection+refraction %lld rays; %.2f M rays/s -> %s\n",
+        std::printf(wb::tr("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
+                           "reflection+refraction %lld rays; %.2f M rays/s -> %s\n"),
                     width, height, depth, st.threads, st.seconds * 1e3, st.primaryRays,
                     st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6, out.c_str());
     } catch (const std::exception& e) {
