@@ -3,6 +3,8 @@
 #include "core/raytrace/nff.h"
 #include "core/raytrace/obj_file.h"
 
+#include "core/file_read.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -19,7 +21,9 @@ LookAtCamera SceneFile::camera() const {
     // up only gives a direction: scaled by a power of two (exact, so an up of (0, 1, 0)
     // keeps every bit) so that cross(at − from, up) cannot overflow for a far-away
     // from/at and a huge up (issue 12 point 5).
-    return LookAtCamera(view.from, view.at, scaledUp(view.up), view.angle);
+    LookAtCamera cam(view.from, view.at, scaledUp(view.up), view.angle);
+    cam.setHither(view.hither); // NFF's near plane (issue 20 point 14)
+    return cam;
 }
 
 SceneFile loadSceneFile(const std::string& path) {
@@ -28,22 +32,26 @@ SceneFile loadSceneFile(const std::string& path) {
     if (dot != std::string::npos) ext = path.substr(dot + 1);
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
+    // The path as messages show it: escape bytes and newlines (issue 20 point 16).
+    const std::string shown = escapeForMessage(path, 4096);
     if (ext == "nff") {
         try {
             SceneFile sf = toScene(readNffFile(path));
             if (sf.scene->primitives.empty())
-                throw SceneFileError(path +
+                throw SceneFileError(shown +
                                      ":0: nothing to draw: no objects (s, c, p, pp) in the file");
+            // toScene names the document "NFF"; give the file name instead.
+            for (std::string& w : sf.warnings)
+                if (w.rfind("NFF:", 0) == 0) w = shown + w.substr(3);
             return sf;
         } catch (const SceneFileError& e) {
-            // toScene names the document "NFF"; give the file name instead.
             std::string msg = e.what();
-            if (msg.rfind("NFF:", 0) == 0) msg = path + msg.substr(3);
+            if (msg.rfind("NFF:", 0) == 0) msg = shown + msg.substr(3);
             throw SceneFileError(msg);
         }
     }
     if (ext == "obj") return loadObjFile(path);
-    throw SceneFileError(path + ":0: unknown scene format (expected .nff or .obj)");
+    throw SceneFileError(shown + ":0: unknown scene format (expected .nff or .obj)");
 }
 
 SceneView frameScene(const Scene& scene, double angle) {
