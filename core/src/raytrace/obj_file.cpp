@@ -159,10 +159,10 @@ class ObjScanner {
     explicit ObjScanner(const std::string& path) : err_(path) {}
 
     ObjScan run(std::string_view text, bool checkedOnly = false) {
-        // A NUL anywhere: refused at once with its line, by the check the NFF reader shares
-        // (one memchr over the file; the fast path need not look for NUL bytes).
-        if (const int nulLine = firstNulLine(text)) err_.fail(nulLine, nulByteMessage());
-        if (checkedOnly) {
+        // A NUL anywhere: every line the checked way, which names the line that holds it
+        // with the NFF reader's message, in line order with the other problems (one
+        // memchr over the file; the fast path need not look for NUL bytes).
+        if (checkedOnly || std::memchr(text.data(), '\0', text.size()) != nullptr) {
             forEachLine(text, [&](int line, std::string_view l) { checkedLine(line, l); });
             return std::move(scan_);
         }
@@ -200,6 +200,7 @@ class ObjScanner {
     void checkedLine(int line, std::string_view l) {
         const FileErrors& err = err_;
         ObjScan& scan = scan_;
+        if (l.find('\0') != std::string_view::npos) err.fail(line, nulByteMessage());
         const std::vector<std::string_view> w = words(l);
         if (w.empty()) return;
         const std::string_view cmd = w[0];

@@ -116,7 +116,7 @@ bool triangulateWithin(const std::vector<glm::dvec3>& v, long long& budget,
     out.reserve(size_t(n - 2));
     int left = n, cur = 0, sinceEar = 0;
     while (left > 3) {
-        ++work;
+        if (++work > kWork) break; // over the budget, ears or not: fan the rest or refuse
         const int a = prev[size_t(cur)], c = next[size_t(cur)];
         if (turn(cur) == 0 &&
             glm::dot(p[size_t(a)] - p[size_t(cur)], p[size_t(c)] - p[size_t(cur)]) <= 0) {
