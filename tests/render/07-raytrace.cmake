@@ -2,7 +2,7 @@
 # cancel during a trace, the raster mesh's triangle budget, the timing experiment.
 wb_test(raytrace_lab_test SOURCES raytrace_lab_render_test.cpp raytrace_lab_inspector_test.cpp
   raytrace_lab_cancel_test.cpp raytrace_lab_mesh_test.cpp
-  raytrace_lab_experiment_test.cpp LIBS lab07-raytrace_headless)
+  raytrace_lab_experiment_test.cpp raytrace_lab_read_once_test.cpp LIBS lab07-raytrace_headless)
 
 # Command-line front ends of the tracer (rt_render, lab07-raytrace --headless): a failed
 # write, a piped progress bar (issue 12). Each case runs through sh so one test checks
