@@ -8,7 +8,8 @@
 //
 // Mapping (how SPD authors meant it): colour = rgb, kd = Kd, ks = Ks, Phong
 // exponent = Shine, kr = Ks (Ks is also the mirror reflectance), kt = T, refraction
-// index inside = ior (1 when ior <= 0), ka = 0 (NFF has no ambient term) and the
+// index inside = ior (> 0 required when T > 0; an opaque surface never uses it and the
+// SPD generators write 0), ka = 0 (NFF has no ambient term) and the
 // scene's global ambient 0; `l` without a colour has intensity 1/sqrt(number of
 // lights), so the sum of all lights stays near 1; polygons become fans of
 // triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone

@@ -22,7 +22,8 @@ struct SceneView {
     glm::dvec3 at{0.0};       // point looked at (centre of the image)
     glm::dvec3 up{0, 1, 0};   // up hint, not parallel to at − from
     double angle = 45.0;      // NFF angle: full vertical field of view in degrees, (0, 180)
-    double hither = 1e-3;     // NFF hither: near distance (read and written, not used to clip)
+    double hither = 1e-3;     // NFF hither: the near plane's distance; nearer is clipped
+                              // (eye rays start on it, ScreenCamera::hither)
     int width = 512;          // NFF resolution (image size the author meant)
     int height = 512;
 };
