@@ -143,8 +143,8 @@ bool checkOutputFile(const std::string& path, std::string& target, std::string& 
             if (errno == ELOOP)
                 return fail(tr("is a symbolic link that loops or passes through more than "
                                "40 links"));
-            return fail(trf("is a symbolic link that cannot be followed (%s)",
-                            std::strerror(errno)));
+            return fail(
+                trf("is a symbolic link that cannot be followed (%s)", std::strerror(errno)));
         }
         target = real;
         std::free(real);
@@ -190,7 +190,9 @@ int firstNulLine(std::string_view text) {
     return line;
 }
 
-const char* nulByteMessage() { return tr("NUL byte in the line (a binary file?)"); }
+const char* nulByteMessage() {
+    return tr("NUL byte in the line (a binary file?)");
+}
 
 std::string escapeForMessage(const std::string& bytes, std::size_t maxChars) {
     std::string s;

@@ -46,8 +46,7 @@ bool ViewCamera::operator==(const ViewCamera& o) const {
     return screen.eye == o.screen.eye && screen.screenCentre == o.screen.screenCentre &&
            screen.screenX == o.screen.screenX && screen.screenY == o.screen.screenY &&
            screen.pixelSize == o.screen.pixelSize && screen.hither == o.screen.hither &&
-           width == o.width && height == o.height &&
-           pixelOffset == o.pixelOffset;
+           width == o.width && height == o.height && pixelOffset == o.pixelOffset;
 }
 
 rt::Ray PixelCamera::primaryRay(int x, int y, int width, int height) const {

@@ -41,7 +41,6 @@ CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threa
 // value (`--out ""`, `--out=`) sets `error` naming the flag and returns nothing: CLI11
 // would take the next flag as the value.
 std::vector<std::string> joinValues(int argc, const char* const* argv,
-                                    const std::vector<std::string>& valueFlags,
-                                    std::string& error);
+                                    const std::vector<std::string>& valueFlags, std::string& error);
 
 } // namespace wb::cli

@@ -37,8 +37,8 @@ bool checkWritable(const std::string& path, std::string& error) {
     struct stat st {};
     const bool existed = ::stat(target.c_str(), &st) == 0;
     // A regular file (or a new one): opening it cannot block.
-    const int fd = ::open(target.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NONBLOCK | O_CLOEXEC,
-                          0666);
+    const int fd =
+        ::open(target.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NONBLOCK | O_CLOEXEC, 0666);
     if (fd < 0) {
         error = escapeForMessage(path, 4096) + ": cannot write (" + std::strerror(errno) + ")";
         return false;

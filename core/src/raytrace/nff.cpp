@@ -9,10 +9,12 @@
 #include "core/raytrace/sphere.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cfloat>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -21,10 +23,8 @@
 #include <iterator>
 #include <ostream>
 #include <sstream>
-#include <unordered_map>
-#include <array>
-#include <cstdint>
 #include <string_view>
+#include <unordered_map>
 
 namespace wb::rt {
 
@@ -256,8 +256,7 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
             if (!(v.hither >= 0 && v.hither <= kNffMaxCoordinate))
                 tk.fail(line, trf("hither %s: the near plane's distance must be 0 or more",
                                   Tokens::fmt(v.hither).c_str()));
-        }
-        else {
+        } else {
             const long long w = tk.integer("resolution width", line);
             const long long h = tk.integer("resolution height", line);
             if (w < 1 || h < 1 || w > 16384 || h > 16384)
@@ -398,9 +397,9 @@ NffDocument readNffFile(const std::string& path) {
     std::string text, error;
     if (!readRegularFile(path, kNffMaxBytes, text, error)) {
         const std::string shown = escapeForMessage(path, 4096);
-        throw SceneFileError(shown + ":0: " +
-                             (error.rfind(shown + ": ", 0) == 0 ? error.substr(shown.size() + 2)
-                                                                : error));
+        throw SceneFileError(
+            shown +
+            ":0: " + (error.rfind(shown + ": ", 0) == 0 ? error.substr(shown.size() + 2) : error));
     }
     return readNffText(text, path);
 }
@@ -666,10 +665,10 @@ SceneFile toScene(const NffDocument& doc) {
         }
     }
     if (duplicates > 0) {
-        sf.warnings.push_back(
-            "NFF:0: " + trf("%zu exact duplicate object%s dropped (same shape, position and "
-                            "surface as an earlier one: they add nothing to the picture)",
-                            duplicates, duplicates == 1 ? "" : "s"));
+        sf.warnings.push_back("NFF:0: " +
+                              trf("%zu exact duplicate object%s dropped (same shape, position and "
+                                  "surface as an earlier one: they add nothing to the picture)",
+                                  duplicates, duplicates == 1 ? "" : "s"));
         sf.warningCount = sf.warnings.size();
     }
     sf.hasView = doc.hasView;

@@ -11,16 +11,16 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
-#include <cstdint>
-#include <sys/stat.h>
 #include <istream>
 #include <map>
 #include <sstream>
 #include <streambuf>
 #include <string_view>
+#include <sys/stat.h>
 #include <unordered_map>
 
 namespace wb::rt {
@@ -538,7 +538,8 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     std::string raw, why;
     if (!readRegularFile(path, kObjMaxBytes, raw, why))
         throw SceneFileError(
-            shown + ":0: " + (why.rfind(shown + ": ", 0) == 0 ? why.substr(shown.size() + 2) : why));
+            shown +
+            ":0: " + (why.rfind(shown + ": ", 0) == 0 ? why.substr(shown.size() + 2) : why));
     const std::string_view text = skipBom(raw);
     lap(rep.times.read);
     // 2. Numbers, indices and the triangle cap, with line numbers.
@@ -680,7 +681,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
         };
         for (int k = 0; k < 3; ++k) {
             const auto [pv, nv_] = cornersOf(t, k);
-            const double c[6] = {pv.x + 0.0, pv.y + 0.0, pv.z + 0.0,
+            const double c[6] = {pv.x + 0.0,  pv.y + 0.0,  pv.z + 0.0,
                                  nv_.x + 0.0, nv_.y + 0.0, nv_.z + 0.0}; // -0 as +0
             mix(c, sizeof c);
         }

@@ -49,12 +49,11 @@ TEST_CASE("rt_nff: hither clips what is nearer than the hither plane", "[raytrac
                       Catch::Contains("t.nff:6: hither -1: the near plane's distance"));
 }
 
-TEST_CASE("rt_nff: exact duplicates are dropped and counted, near ones kept",
-          "[raytrace][nff]") {
+TEST_CASE("rt_nff: exact duplicates are dropped and counted, near ones kept", "[raytrace][nff]") {
     std::string text = "f 1 1 1 1 0 0 0 1\n";
     for (int i = 0; i < 1000; ++i)
         text += "s 0 0 0 1\n";
-    text += "s 0 0 0 1.0000000000000002\n"; // one ulp larger: not the same sphere
+    text += "s 0 0 0 1.0000000000000002\n";   // one ulp larger: not the same sphere
     text += "f 1 0 0 1 0 0 0 1\ns 0 0 0 1\n"; // the same sphere in another surface: kept
     text += "p 3\n0 0 0\n1 0 0\n0 1 0\np 3\n0 0 0\n1 0 0\n0 1 0\n";
     const SceneFile sf = toScene(readNffText(text, "d.nff"));
@@ -91,8 +90,7 @@ TEST_CASE("rt_polygon: one ear-clipping budget shared by the polygons of a file"
     CHECK(triangulatePolygon(star(4)).size() == 2);
 }
 
-TEST_CASE("output files: FIFOs, devices, directories and broken links are refused",
-          "[file_read]") {
+TEST_CASE("output files: FIFOs, devices, directories and broken links are refused", "[file_read]") {
     namespace fs = std::filesystem;
     const std::string dir = std::string(WB_TEST_TMP) + "/hostile_out";
     fs::remove_all(dir);

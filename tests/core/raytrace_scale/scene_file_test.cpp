@@ -170,7 +170,8 @@ TEST_CASE("rt_nff: material, light and background values outside their meaning a
                StartsWith("t.nff:1: index of refraction 0 with T = 1: a transparent surface"));
     CHECK_THAT(nffError("f 1 1 1 1 1 0 0.5 -2\n"), StartsWith("t.nff:1: index of refraction -2"));
     // The edges of each range are accepted.
-    CHECK_NOTHROW(nff("f 1 1 1 1 1 0 1 1e-300\nf 0 0 0 0 0 1e6 0 -1\nl 0 0 0 1e6 0 1e6\nb 1e6 0 0\n"));
+    CHECK_NOTHROW(
+        nff("f 1 1 1 1 1 0 1 1e-300\nf 0 0 0 0 0 1e6 0 -1\nl 0 0 0 1e6 0 1e6\nb 1e6 0 0\n"));
 }
 
 TEST_CASE("rt_nff: too many lights are refused; the cap is reached exactly", "[raytrace][nff]") {
