@@ -68,16 +68,18 @@ std::string memoryRefusal(int width, int height, const wb::rt::ParallelRenderOpt
     if (::getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
         limit = std::min(limit, 0.9 * double(rl.rlim_cur));
     if (frame <= limit) return {};
-    return wb::trf("a %dx%d render%s needs about %.1f GB (image %.1f GB%s, PNG encoding %.1f GB); "
-                   "the limit here is %.1f GB (at most 4 GB, half the machine's memory): use a smaller --size",
-                   width, height, opt.cornerRays ? " with --spd" : "", frame / 1e9,
-                   3.0 * width * double(height) / 1e9,
-                   opt.cornerRays
-                       ? wb::trf(", SPD corner colours %.1f GB",
-                                 double(width + 1) * double(height + 1) * 24.0 / 1e9)
-                             .c_str()
-                       : "",
-                   6.0 * width * double(height) / 1e9, limit / 1e9);
+    const double image = 3.0 * width * double(height), png = 2.0 * image;
+    if (opt.cornerRays)
+        return wb::trf("a %dx%d render with --spd needs about %.1f GB (image %.1f GB, SPD corner "
+                       "colours %.1f GB, PNG encoding %.1f GB); the limit here is %.1f GB (at "
+                       "most 4 GB, half the machine's memory): use a smaller --size",
+                       width, height, frame / 1e9, image / 1e9,
+                       double(width + 1) * double(height + 1) * 24.0 / 1e9, png / 1e9,
+                       limit / 1e9);
+    return wb::trf("a %dx%d render needs about %.1f GB (image %.1f GB, PNG encoding %.1f GB); "
+                   "the limit here is %.1f GB (at most 4 GB, half the machine's memory): use a "
+                   "smaller --size",
+                   width, height, frame / 1e9, image / 1e9, png / 1e9, limit / 1e9);
 }
 
 } // namespace

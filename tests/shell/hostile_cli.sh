@@ -164,7 +164,7 @@ nff-duplicates)
         i=$((i + 1))
     done
     echo "s 0 0 0 1.5" >>dup.nff
-    expect 0 "19 exact duplicate objects dropped.*2 primitives" "$bin/rt_render" dup.nff --out x.png --size 8x8
+    expect 0 "exact duplicate objects dropped: 19 .*2 primitives" "$bin/rt_render" dup.nff --out x.png --size 8x8
     ;;
 nff-earclip)
     # One 100,000-vertex random star polygon (simple, about half its corners reflex):
@@ -195,12 +195,12 @@ obj-duplicates)
         i=$((i + 1))
     done
     echo "f 1 4 3" >>dup.obj # the same corners through another vertex record
-    expect 0 "30 exact duplicate triangles dropped.*1 primitives" "$bin/rt_render" dup.obj --out x.png --size 8x8
+    expect 0 "exact duplicate triangles dropped: 30 .*1 primitives" "$bin/rt_render" dup.obj --out x.png --size 8x8
     ;;
 obj-map-kd)
     printf 'mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n' >t.obj
     printf 'newmtl red\nKd 1 0 0\nmap_Kd nowhere.png\n' >m.mtl
-    expect 0 "1 material names a map_Kd texture \(first 'nowhere.png', which does not exist\)" \
+    expect 0 "materials naming a map_Kd texture: 1 \(the first: 'nowhere.png', which does not exist\)" \
         "$bin/rt_render" t.obj --out x.png --size 8x8
     ;;
 mtl-per-scene)

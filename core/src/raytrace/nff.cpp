@@ -666,9 +666,10 @@ SceneFile toScene(const NffDocument& doc) {
     }
     if (duplicates > 0) {
         sf.warnings.push_back("NFF:0: " +
-                              trf("%zu exact duplicate object%s dropped (same shape, position and "
-                                  "surface as an earlier one: they add nothing to the picture)",
-                                  duplicates, duplicates == 1 ? "" : "s"));
+                              trf("exact duplicate objects dropped: %zu (same shape, position "
+                                  "and surface as an earlier one: they add nothing to the "
+                                  "picture)",
+                                  duplicates));
         sf.warningCount = sf.warnings.size();
     }
     sf.hasView = doc.hasView;

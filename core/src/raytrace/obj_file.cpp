@@ -634,11 +634,14 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             const std::string firstPath = (!first.empty() && first[0] == '/') ? first : dir + first;
             const bool exists = ::stat(firstPath.c_str(), &st) == 0;
             warn(rep, shown + ": " +
-                          trf("%zu material%s a map_Kd texture (first '%s'%s); textures are "
-                              "not drawn by the tracer: the Kd colour is used",
-                              textured, textured == 1 ? " names" : "s name",
-                              escapeForMessage(first, 200).c_str(),
-                              exists ? "" : ", which does not exist"));
+                          (exists ? trf("materials naming a map_Kd texture: %zu (the first: "
+                                        "'%s'); textures are not drawn by the tracer: the Kd "
+                                        "colour is used",
+                                        textured, escapeForMessage(first, 200).c_str())
+                                  : trf("materials naming a map_Kd texture: %zu (the first: "
+                                        "'%s', which does not exist); textures are not drawn "
+                                        "by the tracer: the Kd colour is used",
+                                        textured, escapeForMessage(first, 200).c_str())));
         }
     }
     Material def;
@@ -753,9 +756,9 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     }
     if (duplicates > 0)
         warn(rep, shown + ": " +
-                      trf("%zu exact duplicate triangle%s dropped (same corners and material as "
-                          "an earlier one: they add nothing to the picture)",
-                          duplicates, duplicates == 1 ? "" : "s"));
+                      trf("exact duplicate triangles dropped: %zu (same corners and material "
+                          "as an earlier one: they add nothing to the picture)",
+                          duplicates));
     // 4. Nothing to draw is an error, not an empty picture (issue 12 point 7).
     if (rep.triangles == 0) {
         std::string what = "nothing to draw: no faces with 3 or more vertices";
