@@ -12,4 +12,20 @@ extra=()
 "$root/scripts/i18n/extract.sh" "$root" "$build/i18n/workbench.pot" "${extra[@]}"
 msgmerge --quiet --no-fuzzy-matching --no-wrap --update --backup=off \
   "$root/i18n/ru/workbench.po" "$build/i18n/workbench.pot"
+# A msgid another fragment (i18n/ru/<branch>.po) translates is left to it: dropped here while
+# untranslated, so the merged catalogue takes that fragment's translation.
+others=$(ls "$root"/i18n/ru/*.po | grep -v '/workbench.po$' || true)
+if [ -n "$others" ]; then
+  tmp=$(mktemp -d)
+  msgcat --use-first $others | msgattrib --translated -o "$tmp/others.po"
+  msgattrib --untranslated -o "$tmp/untranslated.po" "$root/i18n/ru/workbench.po"
+  if [ -s "$tmp/untranslated.po" ] && [ -s "$tmp/others.po" ]; then
+    msgcomm --more-than=1 -o "$tmp/both.po" "$tmp/others.po" "$tmp/untranslated.po" || true
+    if [ -s "$tmp/both.po" ]; then
+      msgattrib --no-wrap --set-obsolete --only-file="$tmp/both.po" -o "$tmp/ru.po" "$root/i18n/ru/workbench.po"
+      msgattrib --no-wrap --no-obsolete -o "$root/i18n/ru/workbench.po" "$tmp/ru.po"
+    fi
+  fi
+  rm -rf "$tmp"
+fi
 msgfmt --check --statistics -o /dev/null "$root/i18n/ru/workbench.po"
