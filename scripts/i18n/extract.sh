@@ -9,4 +9,12 @@ shift 2
 cd "$src"
 { find labs core tests/bench -name '*.cpp' -o -name '*.h' | sort; printf '%s\n' "$@"; } |
   xgettext --keyword=tr --keyword=trf --keyword=N_ --from-code=UTF-8 --language=C++ \
-    --package-name=workbench --add-comments=TRANSLATORS: --sort-by-file -f - -o "$out"
+    --package-name=workbench --add-comments=TRANSLATORS: --sort-by-file -f - -o "$out.main"
+# The NFF reader names what it expected by literals given to its token readers
+# (tk.point("sphere centre", line)), translated where the message is made: extracted here.
+xgettext --keyword= --keyword=number:1 --keyword=coordinate:1 --keyword=point:1 --keyword=vec3:1 \
+  --keyword=colour:1 --keyword=integer:1 --from-code=UTF-8 --language=C++ \
+  --package-name=workbench -o "$out.nff" core/src/raytrace/nff.cpp
+sed -i "s/charset=CHARSET/charset=UTF-8/" "$out.main" "$out.nff"
+msgcat --use-first -o "$out" "$out.main" "$out.nff"
+rm -f "$out.main" "$out.nff"
