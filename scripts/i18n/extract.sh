@@ -15,6 +15,9 @@ cd "$src"
 xgettext --keyword= --keyword=number:1 --keyword=coordinate:1 --keyword=point:1 --keyword=vec3:1 \
   --keyword=colour:1 --keyword=integer:1 --from-code=UTF-8 --language=C++ \
   --package-name=workbench -o "$out.nff" core/src/raytrace/nff.cpp
-sed -i "s/charset=CHARSET/charset=UTF-8/" "$out.main" "$out.nff"
-msgcat --use-first -o "$out" "$out.main" "$out.nff"
-rm -f "$out.main" "$out.nff"
+# The OBJ reader's the same way: err.number(word, line, "vertex coordinate").
+xgettext --keyword= --keyword=number:3 --from-code=UTF-8 --language=C++ \
+  --package-name=workbench -o "$out.obj" core/src/raytrace/obj_file.cpp
+sed -i "s/charset=CHARSET/charset=UTF-8/" "$out.main" "$out.nff" "$out.obj"
+msgcat --use-first -o "$out" "$out.main" "$out.nff" "$out.obj"
+rm -f "$out.main" "$out.nff" "$out.obj"
