@@ -191,7 +191,8 @@ WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenW
     const float grow = std::max(1.0f, uiScale);
     f.height = std::min(maxH, opts.sizeGiven ? opts.height : int(float(opts.height) * grow + 0.5f));
     if (panelFillsWindow) { // the launcher: its cards want room as the text grows
-        f.width = std::min(maxW, opts.sizeGiven ? opts.width : int(float(opts.width) * grow + 0.5f));
+        f.width =
+            std::min(maxW, opts.sizeGiven ? opts.width : int(float(opts.width) * grow + 0.5f));
         f.uiScale = uiScale;
         return f;
     }

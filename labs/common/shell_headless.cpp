@@ -74,8 +74,8 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     ShellOptions asOpened;
     asOpened.uiScale = opts.uiScale;
     for (const ScreenSize& screen : kCheckedScreens) {
-        const WindowFit fit = fitWindow(asOpened, lab.panelFillsWindow(), screen.width,
-                                        screen.height, opts.uiScale);
+        const WindowFit fit =
+            fitWindow(asOpened, lab.panelFillsWindow(), screen.width, screen.height, opts.uiScale);
         const std::string fontMessage = setupImGuiFonts(fit.uiScale);
         if (!fontMessage.empty() && &screen == kCheckedScreens)
             std::fprintf(stderr, "%s: %s\n", program, fontMessage.c_str());
@@ -91,9 +91,9 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
         panel.uiScale = panel.requestedScale = fit.uiScale;
         panel.width = float(fit.panelWidth);
         panel.resetWidth = true;
-        const std::string where = trf("on a %dx%d screen (window %dx%d, UI scale %.2f)",
-                                      screen.width, screen.height, fit.width, fit.height,
-                                      double(fit.uiScale));
+        const std::string where =
+            trf("on a %dx%d screen (window %dx%d, UI scale %.2f)", screen.width, screen.height,
+                fit.width, fit.height, double(fit.uiScale));
         auto check = [&](const std::string& state) {
             glViewport(0, 0, width, height);
             lab.draw(view);
@@ -107,12 +107,11 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
                 ImGui::Render();
             }
             for (const auto& c : panelcheck::stop()) {
-                if (std::find(reported.begin(), reported.end(), c.text) != reported.end())
-                    continue;
+                if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
                 reported.push_back(c.text);
-                std::printf("%s: clipped %s %s: \"%s\" runs %.0f px past the edge (%s)\n", program,
-                            state.c_str(), where.c_str(), c.text.c_str(), double(c.overflow),
-                            c.window.c_str());
+                std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s) %s\n", program,
+                            state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str(),
+                            where.c_str());
                 ++clipped;
             }
         };

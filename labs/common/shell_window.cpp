@@ -118,12 +118,12 @@ void applyUiScale() {
     const bool fills = g->lab->panelFillsWindow();
     const WindowFit fit =
         fitWindow(g->opts, fills, g->screenWidth, g->screenHeight, p.requestedScale);
-    p.scaleNote = fit.uiScale < p.requestedScale
-                      ? trf("UI scale %.2f does not fit beside the scene on this %dx%d screen: "
-                            "%.2f is the largest that does.",
-                            double(p.requestedScale), g->screenWidth, g->screenHeight,
-                            double(fit.uiScale))
-                      : "";
+    p.scaleNote =
+        fit.uiScale < p.requestedScale
+            ? trf("UI scale %.2f does not fit beside the scene on this %dx%d screen: "
+                  "%.2f is the largest that does.",
+                  double(p.requestedScale), g->screenWidth, g->screenHeight, double(fit.uiScale))
+            : "";
     p.requestedScale = fit.uiScale;
     if (fit.uiScale == p.uiScale) return;
     p.uiScale = fit.uiScale;
@@ -397,11 +397,10 @@ int runLab(int argc, char** argv, LabFactory factory) {
     const WindowFit fit = fitWindow(state.opts, state.lab->panelFillsWindow(), state.screenWidth,
                                     state.screenHeight, state.opts.uiScale);
     if (fit.uiScale < state.opts.uiScale) {
-        state.panel.scaleNote =
-            trf("UI scale %.2f does not fit beside the scene on this %dx%d screen: %.2f is the "
-                "largest that does.",
-                double(state.opts.uiScale), state.screenWidth, state.screenHeight,
-                double(fit.uiScale));
+        state.panel.scaleNote = trf(
+            "UI scale %.2f does not fit beside the scene on this %dx%d screen: %.2f is the "
+            "largest that does.",
+            double(state.opts.uiScale), state.screenWidth, state.screenHeight, double(fit.uiScale));
         std::fprintf(stderr, "%s: %s\n", argv[0], state.panel.scaleNote.c_str());
     }
     state.panel.uiScale = state.panel.requestedScale = fit.uiScale;

@@ -117,7 +117,8 @@ TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]"
                 if (fills) continue;
                 // The panel's layout needs kPanelWidth x scale; the scene keeps its share.
                 CHECK(f.panelWidth == int(float(kPanelWidth) * f.uiScale + 0.5f));
-                CHECK(float(f.width - f.panelWidth) >= (1.0f - kMaxPanelShare) * float(f.width) - 1.0f);
+                CHECK(float(f.width - f.panelWidth) >=
+                      (1.0f - kMaxPanelShare) * float(f.width) - 1.0f);
                 // The panel shows at least 70% of the lines the 600-px window shows at scale 1
                 // (a 1280x800 laptop at scale 2 -> 1.65 has 720 px: 436 / 600 = 73%).
                 CHECK(float(f.height) / f.uiScale >= 600.0f * 0.7f);

@@ -64,7 +64,7 @@ public:
 private:
     bool failed_ = false;
     static constexpr int kRunFrames = 12; // past the frames drawn after start-up events
-    bool running_ = false; // `B`
+    bool running_ = false;                // `B`
     int ranFrames_ = 0;
     TestLabState own_;
     float value_ = 0.5f;
