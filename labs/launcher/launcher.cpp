@@ -167,7 +167,7 @@ class Launcher : public Lab {
         scaleNow_ = scaleText;
         const ImVec2 thumb(float(kThumbWidth) * 0.5f * scale, float(kThumbHeight) * 0.5f * scale);
         const int columns =
-            ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 260.0f * scale) ? 2 : 1;
+            ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 220.0f * scale) ? 2 : 1;
         if (ImGui::BeginTable("labs", columns,
                               ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_PadOuterX)) {
             for (int i = 0; i < labCount(); ++i) {
