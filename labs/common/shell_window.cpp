@@ -405,6 +405,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     }
     state.panel.uiScale = state.panel.requestedScale = fit.uiScale;
     state.panel.width = float(fit.panelWidth);
+    state.panel.resetWidth = true; // the first frame sizes the panel to it
     state.panel.keysLikeShell = !state.lab->panelFillsWindow();
     state.windowWidth = fit.width;
     state.windowHeight = fit.height;
