@@ -1355,9 +1355,11 @@ void RaytraceLab::gui() {
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("scene");
-        ImGui::TableSetupColumn("raster");
-        ImGui::TableSetupColumn("BVH");
-        ImGui::TableSetupColumn("no BVH");
+        // Units in the headers, numbers alone in the cells: the five columns fit the
+        // 420-px panel (with "ms"/"s" in every cell the last column was cut).
+        ImGui::TableSetupColumn("raster ms");
+        ImGui::TableSetupColumn("BVH s");
+        ImGui::TableSetupColumn("no BVH s");
         ImGui::TableSetupColumn("Mray/s");
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
@@ -1365,12 +1367,12 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(r.scene.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.1fms", r.rasterMs);
+            ImGui::Text("%.1f", r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0) ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0) ImGui::Text("%.3f%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
-                ImGui::Text(r.bruteEstimated ? "~%.0fs" : "%.3fs", r.bruteSeconds);
+                ImGui::Text(r.bruteEstimated ? "~%.0f" : "%.3f", r.bruteSeconds);
             else
                 ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();
