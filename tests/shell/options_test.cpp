@@ -2,6 +2,7 @@
 #include "common/cli_values.h"
 #include "common/options.h"
 #include "common/shell.h"
+#include "launcher/launcher.h"
 
 #include <limits>
 
@@ -190,4 +191,13 @@ TEST_CASE("zoom stays finite and comes back after a thousand + presses", "[optio
         shellKey('-', v, panel);
     CHECK(v.zoom == kMinZoom);
     CHECK(clampZoom(std::numeric_limits<float>::infinity()) == 1.0f);
+}
+
+TEST_CASE("the launcher passes its flags on, less those about its own window", "[options]") {
+    const char* argv[] = {"workbench", "--ui-scale", "2",    "--size",  "800x600", "--lang", "ru",
+                          "--frames",  "3",          "--smoke", "--keys", "1",     "--root", "/r",
+                          "--screenshot=s.png", "--future-flag"};
+    const std::vector<std::string> flags = labFlagsFrom(int(std::size(argv)), argv);
+    CHECK(flags == std::vector<std::string>{"--ui-scale", "2", "--lang", "ru", "--root", "/r",
+                                            "--future-flag"});
 }
