@@ -3,6 +3,7 @@
 #include "common/gl.h"
 #include "common/gl_util.h"
 #include "common/paths.h"
+#include "core/i18n.h"
 #include "core/mesh.h"
 #include "environment.h"
 #include "texture_file.h"
@@ -263,6 +264,12 @@ class TexturesLab : public Lab {
         ImGui::Combo("filter (f)", &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
         s_->filter = TextureFilter(filter);
         ImGui::Combo("texture (t)", &s_->texture, "bricks\0uv grid\0");
+        if (s_->scene == TextureScene::Overview)
+            ImGui::TextWrapped("%s", s_->texture == 0
+                                         ? wb::tr("overview: t swaps the textures of the sphere "
+                                                  "(uv grid) and the torus (bricks)")
+                                         : wb::tr("overview: t swaps the textures of the sphere "
+                                                  "(bricks) and the torus (uv grid)"));
         ImGui::Checkbox("mirror torus (o; off = sphere)", &s_->mirrorTorus);
         ImGui::Checkbox("background room (b)", &s_->background);
         ImGui::Checkbox("bump mapping (k)", &s_->bump);
@@ -342,10 +349,12 @@ class TexturesLab : public Lab {
         drawMirror(view);
         glPopMatrix();
         place(-1.8, -0.6, 0.48, 25.0);
-        drawLit(sphere_, 1);
+        // `t` swaps the two bodies' textures here (at start: the uv grid on the sphere, the
+        // bricks on the torus), so the key changes what the first view shows.
+        drawLit(sphere_, 1 - s_->texture);
         glPopMatrix();
         place(1.8, -0.6, 0.42, 40.0);
-        drawLit(torus_, 0);
+        drawLit(torus_, s_->texture);
         glPopMatrix();
     }
 

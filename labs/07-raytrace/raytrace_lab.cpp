@@ -6,6 +6,7 @@
 #include "common/cli_values.h"
 #include "common/gl.h"
 #include "common/gl_util.h"
+#include "core/i18n.h"
 
 #include <imgui.h>
 
@@ -1119,7 +1120,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     ImGui::TextColored(ImColor(yellow), "-- BVH");
     ImGui::SameLine();
     ImGui::TextColored(ImColor(cyan), "-- no BVH (brute force)");
-    const float w = ImGui::GetContentRegionAvail().x, h = 120.0f;
+    // Tall enough for a label above each decade line and one below the top line with room
+    // between them at any UI scale (a fixed 120 px put "10 ms" over "100 ms").
+    const float th = ImGui::GetTextLineHeight();
+    const float w = ImGui::GetContentRegionAvail().x,
+                h = std::max(8.0f * th, (hi - lo) * (2.0f * th + 4.0f) +
+                                            2.0f * ImGui::GetStyle().FramePadding.y);
     const ImVec2 pos = ImGui::GetCursorScreenPos();
     // Both series on one log scale, drawn on an ImGui frame (PlotLines has no log axis
     // and would show log10 values in its tooltip); the speed-up below is a PlotHistogram.
@@ -1156,9 +1162,9 @@ void plotTimings(const std::vector<TimingRow>& rows) {
             std::snprintf(label, sizeof label, "%g s", ms / 1000);
         else
             std::snprintf(label, sizeof label, "%g ms", ms);
-        // Below its line, except the lowest one (above it): labels never overlap.
-        const float th = ImGui::GetTextLineHeight();
-        const float ty = d == int(lo) ? y - th : y + 1;
+        // Above its line, except the top one (below it, inside the frame): with the height
+        // above, a decade holds two labels and never overlaps its neighbours'.
+        const float ty = d == int(hi) ? y + 1 : y - th - 1;
         dl->AddText(ImVec2(x0 + 2, ty), IM_COL32(230, 230, 230, 200), label);
     }
     ImGui::SetCursorScreenPos(after);
@@ -1229,6 +1235,11 @@ void RaytraceLab::gui() {
     ImGui::Separator();
     const TraceStatus st = job_.status();
     const ExperimentStatus es = experimentStatus();
+    if (es.cancelled && !es.active) {
+        wrapText(tr("timing experiment cancelled (x): the rows measured so far are in the table "
+                    "below; t starts it again"));
+        ImGui::Separator();
+    }
     if (es.active) {
         // Up here, where it is seen without scrolling: the table and plot are at the end.
         wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
@@ -1344,9 +1355,11 @@ void RaytraceLab::gui() {
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("scene");
-        ImGui::TableSetupColumn("raster");
-        ImGui::TableSetupColumn("BVH");
-        ImGui::TableSetupColumn("no BVH");
+        // Units in the headers, numbers alone in the cells: the five columns fit the
+        // 420-px panel (with "ms"/"s" in every cell the last column was cut).
+        ImGui::TableSetupColumn("raster ms");
+        ImGui::TableSetupColumn("BVH s");
+        ImGui::TableSetupColumn("no BVH s");
         ImGui::TableSetupColumn("Mray/s");
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
@@ -1354,12 +1367,12 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(r.scene.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text("%.1fms", r.rasterMs);
+            ImGui::Text("%.1f", r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0) ImGui::Text("%.3fs%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0) ImGui::Text("%.3f%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
-                ImGui::Text(r.bruteEstimated ? "~%.0fs" : "%.3fs", r.bruteSeconds);
+                ImGui::Text(r.bruteEstimated ? "~%.0f" : "%.3f", r.bruteSeconds);
             else
                 ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();
