@@ -229,6 +229,11 @@ TaskResult runTask(const LabExercises& lab, const Task& task, const void* studen
     }
     r.status = Status::Fails;
     r.caseName = lastCase;
+    try { // the case's input, from the (deterministic) case list
+        for (const Case& c : task.cases())
+            if (c.name == lastCase) r.input = show(task.showIn, c.in);
+    } catch (...) {
+    }
     if (timedOut) {
         char buf[120];
         std::snprintf(buf, sizeof buf,
