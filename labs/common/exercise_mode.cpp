@@ -84,6 +84,7 @@ struct ExerciseMode::Impl {
     enum class Step { Idle, Compiling, Checking };
     bool on = false;
     bool started = false;
+    bool watch = true;
     std::string source, compileScript, checker, liveDir, builtObject;
     double sourceTime = 0; // mtime of the source the current object was built from
     Step step = Step::Idle;
@@ -180,11 +181,12 @@ void ExerciseMode::setOn(bool value) {
 
 bool ExerciseMode::busy() const {
     // While on: the file is watched (poll() from draw), so the window keeps drawing.
-    return impl_->on || impl_->step != Impl::Step::Idle;
+    return (impl_->on && impl_->watch) || impl_->step != Impl::Step::Idle;
 }
 
-bool ExerciseMode::poll() {
+bool ExerciseMode::poll(bool watch) {
     Impl& m = *impl_;
+    m.watch = watch;
     if (!m.started) return false;
     bool changed = false;
     const auto now = Clock::now();
