@@ -142,7 +142,7 @@ class AffineLab : public Lab {
                 {"r", "new random line through K, L (next seed)"},
                 {"Left Right", "turn l (mode 2) / move S (mode 3)"},
                 {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"},
-                {"e", tr("your code (labs/01-affine/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
 

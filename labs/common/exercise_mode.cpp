@@ -132,7 +132,8 @@ struct ExerciseMode::Impl {
     }
 };
 
-ExerciseMode::ExerciseMode(const LabExercises& lab) : lab_(lab), impl_(std::make_unique<Impl>()) {
+ExerciseMode::ExerciseMode(const LabExercises& lab, char key)
+    : lab_(lab), key_(key), impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.source = assetPath(lab.file);
     m.compileScript = std::string(WB_EXERCISE_DIR) + "/lab" + lab.lab + ".compile";
@@ -143,8 +144,12 @@ ExerciseMode::ExerciseMode(const LabExercises& lab) : lab_(lab), impl_(std::make
 
 ExerciseMode::~ExerciseMode() = default;
 
+KeyHelp ExerciseMode::keyHelp() const {
+    return {std::string(1, key_), trf("your code (%s) / the reference", lab_.file.c_str())};
+}
+
 bool ExerciseMode::key(int k) {
-    if (k != 'e') return false;
+    if (k != key_) return false;
     setOn(!on());
     return true;
 }
@@ -301,10 +306,10 @@ void ExerciseMode::gui() {
     Impl& m = *impl_;
     if (!ImGui::CollapsingHeader(tr("Exercises"), ImGuiTreeNodeFlags_DefaultOpen)) return;
     bool onNow = m.on;
-    if (ImGui::Checkbox(tr("your code (e); the reference as a ghost"), &onNow)) setOn(onNow);
+    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow)) setOn(onNow);
     ImGui::TextWrapped("%s", trf("your file: %s", lab_.file.c_str()).c_str());
     if (!m.started) {
-        ImGui::TextWrapped("%s", tr("Press e to draw your answers and check them."));
+        ImGui::TextWrapped("%s", trf("Press %c to draw your answers and check them.", key_).c_str());
         return;
     }
     const ImVec4 red(0.85f, 0.1f, 0.1f, 1), green(0.1f, 0.55f, 0.1f, 1), grey(0.45f, 0.45f, 0.45f, 1);
