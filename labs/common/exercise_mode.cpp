@@ -49,6 +49,7 @@ pid_t spawn(const std::vector<std::string>& argv, int& outFd, const std::string&
         } else {
             dup2(fds[1], 2);
         }
+        setenv("LC_ALL", "C", 1); // plain ASCII quotes in the compiler's messages (the panel's font)
         std::vector<char*> args;
         for (const std::string& a : argv)
             args.push_back(const_cast<char*>(a.c_str()));
@@ -94,6 +95,7 @@ struct ExerciseMode::Impl {
     Clock::time_point lastPoll{}, changeSeen{}, stepStart{};
     double lastCompileS = 0, lastCheckS = 0, lastTotalS = 0;
     int generation = 0;
+    int reloads = 0; // changes of the file seen while running
     std::vector<std::unique_ptr<StudentObject>> objects; // kept loaded: pointers stay valid
     const StudentObject* current = nullptr;
     std::string compileError, loadError;
@@ -236,11 +238,20 @@ bool ExerciseMode::poll(bool watch) {
                     std::stringstream ss;
                     ss << f.rdbuf();
                     m.compileError = firstError(ss.str(), m.source);
+                    // The path as the student knows it, from the repository's root.
+                    const std::string root = assetRoot() + "/";
+                    if (m.compileError.rfind(root, 0) == 0) m.compileError.erase(0, root.size());
                     m.step = Impl::Step::Idle;
                 }
             } else if (m.step == Impl::Step::Checking) {
                 m.lastCheckS = took;
-                m.lastTotalS = std::chrono::duration<double>(now - m.changeSeen).count();
+                // From the file's save (its mtime, wall clock) to the results: what the student waits.
+                const double wall = std::chrono::duration<double>(
+                                        std::chrono::system_clock::now().time_since_epoch())
+                                        .count();
+                m.lastTotalS = m.sourceTime > 0 && m.reloads > 0
+                                   ? wall - m.sourceTime
+                                   : std::chrono::duration<double>(now - m.changeSeen).count();
                 std::istringstream in(m.output);
                 std::string line;
                 while (std::getline(in, line)) {
@@ -262,6 +273,7 @@ bool ExerciseMode::poll(bool watch) {
         if (t != m.sourceTime && t != 0) {
             m.sourceTime = t;
             m.changeSeen = now;
+            ++m.reloads;
             m.startCompile();
             changed = true;
         }
@@ -317,6 +329,8 @@ void ExerciseMode::gui() {
         ImGui::TextWrapped("%s", tr("compiling your file..."));
     else if (m.step == Impl::Step::Checking)
         ImGui::TextWrapped("%s", tr("checking..."));
+    else if (m.reloads == 0 && m.checked)
+        ImGui::TextWrapped("%s", trf("checked in %.1f s", m.lastCheckS).c_str());
     else if (m.lastTotalS > 0)
         ImGui::TextWrapped("%s", trf("reloaded %.1f s after saving (compile %.1f s, check %.1f s)",
                                      m.lastTotalS, m.lastCompileS, m.lastCheckS)
