@@ -13,7 +13,7 @@ WB_CHECK=$checker "$work/clone/scripts/handout.sh" "$work/handout"
 h=$work/handout
 
 # No answers in it: no mutants, no reference table, no answer code left in the stripped files.
-if grep -l "WB_MUTANT(\|WB_EXERCISE_TABLE(" "$h"/labs/[0-9]*/*.cpp; then echo "FAIL: mutant/reference code in the handout"; exit 1; fi
+if grep -l "WB_MUTANT(" "$h"/labs/[0-9]*/*.cpp || grep -l "WB_EXERCISE_TABLE(" "$h"/labs/*/exercises_reference.cpp; then echo "FAIL: mutant/reference code in the handout"; exit 1; fi
 if grep -q "outerProduct\|2.0 \* n" "$h/core/src/affine.cpp" 2>/dev/null && \
    grep -A8 "^glm::dmat3 mirrorLine" "$h/core/src/affine.cpp" | grep -q "requireNormal"; then
   echo "FAIL: core's mirrorLine is still in the handout"; exit 1
