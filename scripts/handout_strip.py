@@ -51,11 +51,17 @@ def main():
             failed = True
             continue
         if mode == 'body':
-            open_pos = text.index('{', at)
-            close = block_end(text, open_pos)
             name = start.split('(')[0].split()[-1]
+            params = start[start.index('(') + 1:start.rindex(')')]
+            unused = ''.join(f'    (void){p.split()[-1].lstrip("&*")};\n'
+                             for p in params.split(',') if p.strip())
             repl = f[3].replace('\\n', '\n') if len(f) > 3 else (
-                f'\n    throw std::logic_error("{name}: not in the handout: it is a graded task");\n')
+                f'\n{unused}    throw std::logic_error("{name}: not in the handout: it is a graded task");\n')
+            # Helpers only the cut code used are left unused.
+            if '#pragma GCC diagnostic ignored "-Wunused-function"' not in text:
+                text = '#pragma GCC diagnostic ignored "-Wunused-function" // the handout cut answers here\n' + text
+            open_pos = text.index('{', line_start(text, start))
+            close = block_end(text, open_pos)
             text = text[:open_pos + 1] + repl + text[close:]
         elif mode == 'decl':
             open_pos = text.index('{', at)
