@@ -33,6 +33,13 @@ cat "$work/stubs.txt"
 grep -q "Nothing attempted yet" "$work/stubs.txt" || { echo "FAIL: stubs not all not done"; exit 1; }
 if grep -q "✓\|✗" "$work/stubs.txt"; then echo "FAIL: a stub passed or failed"; exit 1; fi
 
+# The labs with exercises build in it and draw (headless) with the stubs: no reference, no crash.
+cmake --build "$BUILD_DIR" -j 2 --target lab01-affine-headless lab02-lighting-headless > "$work/labs.txt" 2>&1 ||
+  { cat "$work/labs.txt"; echo "FAIL: the handout's labs do not build"; exit 1; }
+for lab in lab01-affine lab02-lighting; do
+  "$BUILD_DIR/bin/$lab-headless" --out "$work/$lab-stubs.png" || { echo "FAIL: $lab in the handout"; exit 1; }
+done
+
 # The reference answers pasted over the stubs (as a student who solved everything).
 for d in "$repo"/labs/*/; do
   [ -f "$d/exercises_reference.cpp" ] || continue
@@ -40,6 +47,9 @@ for d in "$repo"/labs/*/; do
 done
 (cd "$h" && ./wb check) > "$work/reference.txt" 2>&1 || { cat "$work/reference.txt"; echo "FAIL: the references must pass"; exit 1; }
 cat "$work/reference.txt"
+for lab in lab01-affine lab02-lighting; do
+  "$BUILD_DIR/bin/$lab-headless" --out "$work/$lab-answers.png" || { echo "FAIL: $lab in the handout"; exit 1; }
+done
 if grep -q "✗\|not done" "$work/reference.txt"; then echo "FAIL: not every task passes"; exit 1; fi
 labs=$(grep -c "grade:" "$work/reference.txt")
 fives=$(grep -c "grade: ⑤" "$work/reference.txt")
