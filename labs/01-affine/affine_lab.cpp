@@ -153,6 +153,8 @@ class AffineLab : public Lab {
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
 
     void draw(const View& view) override {
         ex_.poll(!view.headless);

@@ -260,6 +260,8 @@ class LightingLab : public Lab {
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     void init() override {
         // init() runs once per context (headless renders make a new one each time).
         program_ = loadProgram("shaders/phong.vert", "shaders/phong.frag", programError_);

@@ -87,6 +87,7 @@ struct ExerciseMode::Impl {
     bool on = false;
     bool started = false;
     bool watch = true;
+    bool shellPolls = false; // the window polls on a timer (it asked pollMs()): no redraws to watch
     std::string source, compileScript, checker, liveDir, builtObject;
     double sourceTime = 0; // mtime of the source the current object was built from
     Step step = Step::Idle;
@@ -196,7 +197,7 @@ void ExerciseMode::setOn(bool value) {
 
 bool ExerciseMode::busy() const {
     // While on: the file is watched (poll() from draw), so the window keeps drawing.
-    return (impl_->on && impl_->watch) || impl_->step != Impl::Step::Idle;
+    return (impl_->on && impl_->watch && !impl_->shellPolls) || impl_->step != Impl::Step::Idle;
 }
 
 bool ExerciseMode::poll(bool watch) {
@@ -288,6 +289,15 @@ bool ExerciseMode::poll(bool watch) {
         }
     }
     return changed;
+}
+
+int ExerciseMode::pollMs() const {
+    impl_->shellPolls = true; // the window asks this before busy(), and then polls
+    return impl_->on ? 500 : 0;
+}
+
+bool ExerciseMode::shellPoll() {
+    return poll(impl_->watch);
 }
 
 const void* ExerciseMode::studentRaw() const {

@@ -42,7 +42,11 @@ class ExerciseMode {
     // File watch, compile and check progress; true when something changed. `watch`: keep
     // watching the file (false in headless renders, which must come to an end).
     bool poll(bool watch = true);
-    bool busy() const; // compiling or checking, or on and watching
+    bool busy() const; // compiling or checking, or on and watching (see pollMs)
+    // For the lab's Lab::pollMs() / poll(): the window then watches the file every 0.5 s
+    // without redrawing (busy() stops counting the watch once the shell polls).
+    int pollMs() const;
+    bool shellPoll();
     void gui();        // the panel section
 
     // The student's table (Table of the lab's exercises.h), nullptr when none is loaded.
