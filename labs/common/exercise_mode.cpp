@@ -87,6 +87,7 @@ struct ExerciseMode::Impl {
     bool on = false;
     bool started = false;
     bool watch = true;
+    int extraFrames = 0; // frames still to draw after a change (the panel is laid out before draw())
     bool shellPolls = false; // the window polls on a timer (it asked pollMs()): no redraws to watch
     std::string source, compileScript, checker, liveDir, builtObject;
     double sourceTime = 0; // mtime of the source the current object was built from
@@ -197,12 +198,14 @@ void ExerciseMode::setOn(bool value) {
 
 bool ExerciseMode::busy() const {
     // While on: the file is watched (poll() from draw), so the window keeps drawing.
-    return (impl_->on && impl_->watch && !impl_->shellPolls) || impl_->step != Impl::Step::Idle;
+    return (impl_->on && impl_->watch && !impl_->shellPolls) || impl_->step != Impl::Step::Idle ||
+           impl_->extraFrames > 0;
 }
 
 bool ExerciseMode::poll(bool watch) {
     Impl& m = *impl_;
     m.watch = watch;
+    if (m.extraFrames > 0) --m.extraFrames;
     if (!m.started) return false;
     bool changed = false;
     const auto now = Clock::now();
@@ -288,6 +291,8 @@ bool ExerciseMode::poll(bool watch) {
             changed = true;
         }
     }
+    // The window lays the panel out before draw() polls: one more frame shows the change.
+    if (changed) m.extraFrames = 2;
     return changed;
 }
 
