@@ -1,7 +1,10 @@
 #include "affine_lab.h"
 
+#include "common/exercise_mode.h"
 #include "common/gl.h"
 #include "common/panel.h"
+#include "core/i18n.h"
+#include "exercises.h"
 #include "core/homogeneous.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,9 +12,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstdio>
 #include <random>
 #include <string>
+
+const wb::ex::LabExercises& wbExercises_lab01();
 
 namespace wb {
 namespace {
@@ -116,7 +122,7 @@ void drawPrism(bool lit) {
 
 class AffineLab : public Lab {
   public:
-    explicit AffineLab(AffineState* s) : s_(s ? s : &own_) {
+    explicit AffineLab(AffineState* s) : s_(s ? s : &own_), ex_(wbExercises_lab01()) {
         if (!s) reseed(own_, own_.seed);
         // Exercise 1.1 once: the composite and the closed form, and how far apart they are.
         const Line2 ex{3, -2, 1};
@@ -135,10 +141,13 @@ class AffineLab : public Lab {
                 {"v", "2D view / 3D view"},
                 {"r", "new random line through K, L (next seed)"},
                 {"Left Right", "turn l (mode 2) / move S (mode 3)"},
-                {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"}};
+                {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"},
+                {"e", tr("your code (labs/01-affine/exercises.cpp) / the reference")}};
     }
+    bool busy() const override { return ex_.busy(); }
 
     void draw(const View& view) override {
+        ex_.poll(!view.headless);
         glViewport(0, 0, view.width, view.height);
         if (s_->view3d)
             draw3d(view);
@@ -147,6 +156,7 @@ class AffineLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         AffineState& s = *s_;
         const bool pointMode = s.mode == AffineMode::ShadowPoint;
         switch (k) {
@@ -200,6 +210,7 @@ class AffineLab : public Lab {
 
     void gui() override {
         AffineState& s = *s_;
+        ex_.gui();
         int mode = int(s.mode);
         ImGui::RadioButton("1 mirror image", &mode, 1);
         ImGui::RadioButton("2 shadow, light at infinity along l", &mode, 2);
@@ -223,6 +234,11 @@ class AffineLab : public Lab {
             if (s.mode == AffineMode::ShadowPoint)
                 ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
             matrix(glm::value_ptr(m), 3);
+            if (ex_.on()) {
+                const std::optional<glm::dmat3> mine = studentMatrix();
+                ImGui::TextWrapped("%s", mine ? tr("your M:") : tr("your M: none (not done or failing)"));
+                if (mine) matrix(glm::value_ptr(*mine), 3);
+            }
             ImGui::TextWrapped("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
                                lastBehind_);
         } else {
@@ -288,37 +304,8 @@ class AffineLab : public Lab {
         }
         glEnd();
 
-        const std::vector<glm::dvec2>& poly = affinePolygon();
-        const glm::dmat3 m = affineMatrix2d(s);
-        // The lab's point: all vertices in ONE product M·[P1 ... Pn], then divide by w.
-        const HomogeneousColumns<3> h = multiply(m, toHomogeneous(poly));
-        const ProjectedPoints<glm::dvec2> img = dehomogenize(h);
-        lastAtInfinity_ = img.atInfinity;
-        lastBehind_ = 0;
-        std::vector<bool> usable(poly.size());
-        for (size_t i = 0; i < poly.size(); ++i) {
-            // Under the point-light matrix w > 0 exactly for vertices nearer the line than S.
-            usable[i] = img.kinds[i] == PointKind::Finite && h.at(2, i) > 0;
-            if (img.kinds[i] == PointKind::Finite && h.at(2, i) <= 0) ++lastBehind_;
-        }
-
-        // Rays from the light through each vertex to its shadow, dotted.
-        if (s.mode != AffineMode::Mirror) {
-            glEnable(GL_LINE_STIPPLE);
-            glLineStipple(2, 0xAAAA);
-            glColor3ub(230, 150, 0);
-            glBegin(GL_LINES);
-            const glm::dvec2 l = affineLightDir(s);
-            for (size_t i = 0; i < poly.size(); ++i) {
-                if (!usable[i]) continue;
-                const glm::dvec2 from =
-                    s.mode == AffineMode::ShadowPoint ? s.light : poly[i] - 3.0 * l;
-                glVertex2dv(glm::value_ptr(from));
-                glVertex2dv(glm::value_ptr(img.points[i]));
-            }
-            glEnd();
-            glDisable(GL_LINE_STIPPLE);
-        }
+        // The reference's rays under everything else, as the lab always drew them.
+        if (!ex_.on()) drawImage(affineMatrix2d(s), s, true, false);
 
         // The line Λ, drawn across the whole view, and K, L.
         const glm::dvec2 d = glm::normalize(s.l - s.k) * (4.0 * (hw + hh));
@@ -336,9 +323,59 @@ class AffineLab : public Lab {
         glEnd();
 
         // The object, filled, outline darker.
+        const std::vector<glm::dvec2>& poly = affinePolygon();
         fillPolygon(poly, std::vector<bool>(poly.size(), true), kPolygonColor);
         outline(poly, std::vector<bool>(poly.size(), true), 20, 50, 140, 2);
 
+        // Your code (e): your matrix's image, and the reference's as a ghost over it.
+        if (ex_.on()) {
+            if (const std::optional<glm::dmat3> mine = studentMatrix()) drawImage(*mine, s, true, true);
+            ex::ExerciseMode::ghostBegin();
+            drawImage(affineMatrix2d(s), s, true, true);
+            ex::ExerciseMode::ghostEnd();
+        } else {
+            drawImage(affineMatrix2d(s), s, false, true);
+        }
+        if (s.mode != AffineMode::Mirror) drawLight2d(s, hw, hh);
+        glLineWidth(1);
+        glPointSize(1);
+    }
+
+    // The polygon's image under m (mirror image filled, shadow as a thick outline on Λ)
+    // with the rays from the light to it.
+    void drawImage(const glm::dmat3& m, const AffineState& s, bool rays, bool image) {
+        const std::vector<glm::dvec2>& poly = affinePolygon();
+        // The lab's point: all vertices in ONE product M·[P1 ... Pn], then divide by w.
+        const HomogeneousColumns<3> h = multiply(m, toHomogeneous(poly));
+        const ProjectedPoints<glm::dvec2> img = dehomogenize(h);
+        lastAtInfinity_ = img.atInfinity;
+        lastBehind_ = 0;
+        std::vector<bool> usable(poly.size());
+        for (size_t i = 0; i < poly.size(); ++i) {
+            // Under the point-light matrix w > 0 exactly for vertices nearer the line than S.
+            usable[i] = img.kinds[i] == PointKind::Finite && h.at(2, i) > 0;
+            if (img.kinds[i] == PointKind::Finite && h.at(2, i) <= 0) ++lastBehind_;
+        }
+
+        // Rays from the light through each vertex to its shadow, dotted.
+        if (rays && s.mode != AffineMode::Mirror) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0xAAAA);
+            glColor3ub(230, 150, 0);
+            glBegin(GL_LINES);
+            const glm::dvec2 l = affineLightDir(s);
+            for (size_t i = 0; i < poly.size(); ++i) {
+                if (!usable[i]) continue;
+                const glm::dvec2 from =
+                    s.mode == AffineMode::ShadowPoint ? s.light : poly[i] - 3.0 * l;
+                glVertex2dv(glm::value_ptr(from));
+                glVertex2dv(glm::value_ptr(img.points[i]));
+            }
+            glEnd();
+            glDisable(GL_LINE_STIPPLE);
+        }
+
+        if (!image) return;
         if (s.mode == AffineMode::Mirror) {
             fillPolygon(img.points, usable, kImageColor);
             outline(img.points, usable, 140, 20, 20, 2);
@@ -346,10 +383,7 @@ class AffineLab : public Lab {
             // A shadow on a line has no area: its outline collapses onto Λ.
             outline(img.points, usable, kShadowColor[0], kShadowColor[1], kShadowColor[2],
                     float(kShadowLineWidth));
-            drawLight2d(s, hw, hh);
         }
-        glLineWidth(1);
-        glPointSize(1);
     }
 
     static void fillPolygon(const std::vector<glm::dvec2>& p, const std::vector<bool>& ok,
@@ -532,8 +566,40 @@ class AffineLab : public Lab {
         glLineWidth(1);
     }
 
+    // Your matrix for the current mode and inputs, when the task's check let it be called.
+    std::optional<glm::dmat3> studentMatrix() const {
+        const AffineState& s = *s_;
+        const lab01::Table* t = ex_.studentTable<lab01::Table>();
+        if (!t) return std::nullopt;
+        std::optional<glm::dmat3> m;
+        switch (s.mode) {
+        case AffineMode::Mirror:
+            m = ex_.call("01.mirror", [&] { return t->mirror(s.k, s.l); });
+            break;
+        case AffineMode::ShadowDirectional:
+            m = ex_.call("01.shadow-dir", [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); });
+            break;
+        case AffineMode::ShadowPoint:
+            m = ex_.call("01.shadow-point", [&] { return t->shadowPoint(s.k, s.l, s.light); });
+            break;
+        }
+        if (!m) return m;
+        // Any non-zero multiple is the same map; drawn with the reference's sign so that
+        // w > 0 marks the same vertices (GL and this lab skip w <= 0).
+        const glm::dmat3 ref = affineMatrix2d(s);
+        double dot = 0;
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r) {
+                if (!std::isfinite((*m)[c][r])) return std::nullopt;
+                dot += (*m)[c][r] * ref[c][r];
+            }
+        if (dot < 0) *m = -*m;
+        return m;
+    }
+
     AffineState own_;
     AffineState* s_;
+    ex::ExerciseMode ex_;
     glm::dmat3 exComposite_{1.0}, exClosed_{1.0};
     double exDiff_ = 0;
     size_t lastAtInfinity_ = 0, lastBehind_ = 0;

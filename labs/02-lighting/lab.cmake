@@ -1,2 +1,3 @@
 add_lab(02-lighting lab02-lighting "Phong lighting: two cubes, keys 1-4, ambient, local viewer, emission, spot, subdivided faces, GLSL Phong"
   SOURCES lighting_lab.cpp)
+add_exercises(02 02-lighting CHECKS exercise_checks.cpp)

@@ -36,8 +36,10 @@ class ExerciseMode {
     bool key(int key);     // `e`: toggle; true when used
     bool on() const;       // drawing your code (false: the reference, as the lab always did)
     void setOn(bool on);
-    bool poll();           // file watch, compile and check progress; true when something changed
-    bool busy() const;     // compiling or checking
+    // File watch, compile and check progress; true when something changed. `watch`: keep
+    // watching the file (false in headless renders, which must come to an end).
+    bool poll(bool watch = true);
+    bool busy() const;     // compiling or checking, or on and watching
     void gui();            // the panel section
 
     // The student's table (Table of the lab's exercises.h), nullptr when none is loaded.
