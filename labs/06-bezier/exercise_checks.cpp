@@ -133,6 +133,70 @@ std::string showPatches(const Values& out) {
     return s;
 }
 
+// ----- ③ a point by de Casteljau: in = u, then the control points' xyz -----
+std::vector<Case> pointCases() {
+    std::vector<Case> cs;
+    auto add = [&cs](std::string n, double u, const Curve& p) {
+        Values in{u};
+        for (const auto& q : p)
+            in.insert(in.end(), {q.x, q.y, q.z});
+        cs.push_back({std::move(n), in});
+    };
+    const Curve cubic = {{0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, -1}};
+    add("cubic at u = 0.3", 0.3, cubic);
+    add("cubic at u = 0 (q = p0 exactly)", 0.0, cubic);
+    add("cubic at u = 1 (q = p3 exactly)", 1.0, cubic);
+    add("cubic at u = 1e-12", 1e-12, cubic);
+    add("a line (degree 1) at u = 0.25", 0.25, {{1, 1, 1}, {5, -3, 2}});
+    add("one point (degree 0)", 0.6, {{2, 3, 4}});
+    unsigned s = 10u;
+    auto rnd = [&s] {
+        s = s * 1664525u + 1013904223u;
+        return double(s >> 8) / double(1u << 24);
+    };
+    for (int i = 1; i <= 6; ++i) {
+        Curve p(size_t(2 + i));
+        for (auto& q : p)
+            q = {10 * rnd() - 5, 10 * rnd() - 5, 10 * rnd() - 5};
+        add("seed " + std::to_string(i) + ": degree " + std::to_string(i + 1), rnd(), p);
+    }
+    Curve high(21);
+    for (size_t i = 0; i < high.size(); ++i)
+        high[i] = {std::cos(0.3 * double(i)) * 1e3, std::sin(0.7 * double(i)) * 1e3, double(i)};
+    add("degree 20, coordinates ~1e3, u = 0.7", 0.7, high);
+    return cs;
+}
+
+Verdict pointCompare(const Values& in, const Values& expected, const Values& got) {
+    const glm::dvec3 e(expected.at(0), expected.at(1), expected.at(2));
+    const glm::dvec3 q(got.at(0), got.at(1), got.at(2));
+    const double u = in.at(0);
+    const size_t n = (in.size() - 1) / 3;
+    const glm::dvec3 p0(in.at(1), in.at(2), in.at(3));
+    const glm::dvec3 pk(in.at(in.size() - 3), in.at(in.size() - 2), in.at(in.size() - 1));
+    if ((u == 0 && q != p0) || (u == 1 && q != pk))
+        return Verdict::fail(u == 0 ? tr("q(0) must be p0 exactly (the curve starts at its first "
+                                         "control point); u and 1 - u swapped?")
+                                    : tr("q(1) must be the last control point exactly; u and "
+                                         "1 - u swapped?"));
+    // de Casteljau's k rounds of convex combinations: each coordinate off by at most
+    // ~2k ulps of max |p_i|; a Bernstein sum does as well. 16(k+1) ε max|p_i| allows both.
+    double big = 0;
+    for (size_t i = 1; i < in.size(); ++i)
+        big = std::max(big, std::fabs(in[i]));
+    const double tol = 16.0 * double(n) * 2.2204460492503131e-16 * std::max(big, 1e-300);
+    if (glm::length(q - e) <= tol) return Verdict::pass();
+    Curve p;
+    for (size_t i = 1; i + 2 < in.size(); i += 3)
+        p.push_back({in[i], in[i + 1], in[i + 2]});
+    if (glm::length(q - evalDeCasteljau(p, 1 - u)) <= tol)
+        return Verdict::fail(tr("that is q(1 - u): the curve runs backwards - each round takes "
+                                "(1 - u)·p_i + u·p_{i+1}"));
+    return Verdict::fail(trf("off by %.3g: k = %d rounds of (1 - u)·p_i + u·p_{i+1} leave one "
+                             "point (one round short, or halves instead of u?)",
+                             glm::length(q - e), int(n) - 1));
+}
+
 // ----- ④ circle -----
 std::vector<Case> circleCases() {
     std::vector<Case> cs = {{"radius 1", {1.0}},
@@ -282,6 +346,26 @@ const ex::LabExercises& exercises() {
         l.title = N_("Lab 06 - Bezier curves and patches");
         l.file = "labs/06-bezier/exercises.cpp";
         l.reference = wbExerciseReference_lab06();
+        ex::Task point;
+        point.id = "06.point";
+        point.grade = 3;
+        point.title = N_("A point of a Bezier curve by de Casteljau");
+        point.section = "§1.10, Theorem 0.4 (practical 10)";
+        point.cases = pointCases;
+        point.run = [](const void* table, const Values& in) {
+            Curve p;
+            for (size_t i = 1; i + 2 < in.size(); i += 3)
+                p.push_back({in[i], in[i + 1], in[i + 2]});
+            const glm::dvec3 q = static_cast<const Table*>(table)->bezierPoint(p, in.at(0));
+            return Values{q.x, q.y, q.z};
+        };
+        point.compare = pointCompare;
+        point.showIn = [](const Values& in) {
+            std::string s = "u = " + fmtNum(in.at(0)) + ", points";
+            for (size_t i = 1; i + 2 < in.size() && i < 40; i += 3)
+                s += " " + fmtVec({in[i], in[i + 1], in[i + 2]});
+            return in.size() > 40 ? s + " ..." : s;
+        };
         ex::Task circle;
         circle.id = "06.circle";
         circle.grade = 4;
@@ -306,8 +390,11 @@ const ex::LabExercises& exercises() {
         sphere.compare = sphereCompare;
         sphere.showIn = [](const Values&) { return std::string("-"); };
         sphere.showOut = showPatches;
-        l.tasks = {circle, sphere};
-        l.mutants = {{1, "06.circle", N_("quarter-circle handle 0.5523 for half circles")},
+        l.tasks = {point, circle, sphere};
+        l.mutants = {{21, "06.point", N_("u and 1 - u swapped")},
+                     {22, "06.point", N_("one round of de Casteljau short")},
+                     {23, "06.point", N_("midpoints instead of (1 - u, u)")},
+                     {1, "06.circle", N_("quarter-circle handle 0.5523 for half circles")},
                      {2, "06.circle", N_("second curve over the upper half again (sign of y)")},
                      {3, "06.circle", N_("handle not scaled with the radius")},
                      {4, "06.circle", N_("inner control points in the wrong order")},

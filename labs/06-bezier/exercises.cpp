@@ -5,6 +5,11 @@
 
 namespace wb::lab06 {
 
+glm::dvec3 bezierPoint(const Curve& p, double u) {
+    (void)p, (void)u;
+    WB_NOT_DONE();
+}
+
 std::vector<Curve> circleCurves(double radius) {
     (void)radius;
     WB_NOT_DONE();
@@ -16,4 +21,4 @@ std::vector<Patch> spherePatches() {
 
 } // namespace wb::lab06
 
-WB_EXERCISE_TABLE(wb::lab06::Table, lab06, {&wb::lab06::circleCurves, &wb::lab06::spherePatches})
+WB_EXERCISE_TABLE(wb::lab06::Table, lab06, {&wb::lab06::bezierPoint, &wb::lab06::circleCurves, &wb::lab06::spherePatches})

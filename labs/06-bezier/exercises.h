@@ -21,6 +21,13 @@ struct Patch {
     std::vector<glm::dvec3> points;
 };
 
+// ③ (§1.10, Theorem 0.4; practical 10, which §2.6 sends you to) A point of a Bezier curve.
+// q(u) = Σ B_i^k(u) p_i for the control points p0..pk (1 <= k+1 <= 30), u in [0, 1], by
+// de Casteljau: repeat p_i <- (1 - u)·p_i + u·p_{i+1} on the list until one point is left
+// (k rounds). q(0) = p0 and q(1) = pk exactly. This is what glEvalCoord1 computes for a
+// glMap1f curve, and what the two tasks below are drawn with.
+glm::dvec3 bezierPoint(const Curve& p, double u);
+
 // ④ (§2.6 task ④, §1.10) A circle from two Bezier curves.
 // The circle of radius `radius` (0.1 .. 10) about the origin in the plane z = 0, drawn as
 // TWO Bezier curves (glMap1f + glEvalMesh1): the first ends where the second begins and
@@ -44,6 +51,7 @@ std::vector<Patch> spherePatches();
 
 // The exercise table, in task order.
 struct Table {
+    glm::dvec3 (*bezierPoint)(const Curve& p, double u);
     std::vector<Curve> (*circleCurves)(double radius);
     std::vector<Patch> (*spherePatches)();
 };

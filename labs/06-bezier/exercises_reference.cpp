@@ -6,6 +6,16 @@
 
 namespace wb::lab06 {
 
+glm::dvec3 bezierPoint(const Curve& p, double u) {
+    if (WB_MUTANT(21)) u = 1 - u; // 21: the curve run backwards (u and 1 - u swapped)
+    Curve q = p;
+    const size_t rounds = WB_MUTANT(22) ? (q.size() > 1 ? q.size() - 2 : 0) : q.size() - 1; // 22: one round short
+    for (size_t r = 0; r < rounds; ++r)
+        for (size_t i = 0; i + 1 < q.size() - r; ++i)
+            q[i] = WB_MUTANT(23) ? 0.5 * (q[i] + q[i + 1]) : (1 - u) * q[i] + u * q[i + 1]; // 23: midpoints
+    return q.empty() ? glm::dvec3(0.0) : q[0];
+}
+
 std::vector<Curve> circleCurves(double radius) {
     // Half circles: the arc's midpoint (p0 + 3p1 + 3p2 + p3)/8 lies on the circle when
     // the handle is k = 4/3·tan(θ/4) = 4/3 for θ = π.
@@ -44,4 +54,4 @@ std::vector<Patch> spherePatches() {
 
 } // namespace wb::lab06
 
-WB_EXERCISE_TABLE(wb::lab06::Table, lab06, {&wb::lab06::circleCurves, &wb::lab06::spherePatches})
+WB_EXERCISE_TABLE(wb::lab06::Table, lab06, {&wb::lab06::bezierPoint, &wb::lab06::circleCurves, &wb::lab06::spherePatches})
