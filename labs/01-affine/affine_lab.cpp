@@ -23,6 +23,13 @@ namespace wb {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// A student handout (./wb handout) has no reference answers: core's 2D mirror and shadow
+// matrices are stripped from it, so the lab draws and shows only the student's.
+#ifdef WB_HANDOUT
+constexpr bool kHaveReference = false;
+#else
+constexpr bool kHaveReference = true;
+#endif
 
 // The letter F, counter-clockwise, 1.3 × the unit design, centred near (-1.5, 0.5).
 std::vector<glm::dvec2> makePolygon() {
@@ -125,6 +132,7 @@ class AffineLab : public Lab {
     explicit AffineLab(AffineState* s) : s_(s ? s : &own_), ex_(wbExercises_lab01()) {
         if (!s) reseed(own_, own_.seed);
         // Exercise 1.1 once: the composite and the closed form, and how far apart they are.
+        if (!kHaveReference) return;
         const Line2 ex{3, -2, 1};
         exComposite_ = mirrorLineComposite(ex);
         exClosed_ = mirrorLine(ex);
@@ -142,7 +150,7 @@ class AffineLab : public Lab {
                 {"r", "new random line through K, L (next seed)"},
                 {"Left Right", "turn l (mode 2) / move S (mode 3)"},
                 {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"},
-                {"e", tr("your code (labs/01-affine/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
 
@@ -229,11 +237,13 @@ class AffineLab : public Lab {
             ImGui::Text("l = (%.3f, %.3f)", l.x, l.y);
             double sxy[2] = {s.light.x, s.light.y};
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
-            const glm::dmat3 m = affineMatrix2d(s);
-            ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
-            if (s.mode == AffineMode::ShadowPoint)
-                ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
-            matrix(glm::value_ptr(m), 3);
+            if (kHaveReference) {
+                const glm::dmat3 m = affineMatrix2d(s);
+                ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
+                if (s.mode == AffineMode::ShadowPoint)
+                    ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
+                matrix(glm::value_ptr(m), 3);
+            }
             if (ex_.on()) {
                 const std::optional<glm::dmat3> mine = studentMatrix();
                 ImGui::TextWrapped("%s", mine ? tr("your M:") : tr("your M: none (not done or failing)"));
@@ -257,6 +267,7 @@ class AffineLab : public Lab {
             ImGui::TextWrapped("M (4x4), given to glMultMatrixd:");
             matrix(glm::value_ptr(m), 4);
         }
+        if (!kHaveReference) return;
         ImGui::Separator();
         ImGui::TextWrapped("Exercise 1.1: mirror in 3x - 2y + 1 = 0");
         ImGui::TextWrapped("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):");
@@ -305,7 +316,7 @@ class AffineLab : public Lab {
         glEnd();
 
         // The reference's rays under everything else, as the lab always drew them.
-        if (!ex_.on()) drawImage(affineMatrix2d(s), s, true, false);
+        if (!ex_.on() && kHaveReference) drawImage(affineMatrix2d(s), s, true, false);
 
         // The line Λ, drawn across the whole view, and K, L.
         const glm::dvec2 d = glm::normalize(s.l - s.k) * (4.0 * (hw + hh));
@@ -330,9 +341,11 @@ class AffineLab : public Lab {
         // Your code (e): your matrix's image, and the reference's as a ghost over it.
         if (ex_.on()) {
             if (const std::optional<glm::dmat3> mine = studentMatrix()) drawImage(*mine, s, true, true);
-            ex::ExerciseMode::ghostBegin();
-            drawImage(affineMatrix2d(s), s, true, true);
-            ex::ExerciseMode::ghostEnd();
+            if (kHaveReference) {
+                ex::ExerciseMode::ghostBegin();
+                drawImage(affineMatrix2d(s), s, true, true);
+                ex::ExerciseMode::ghostEnd();
+            }
         } else {
             drawImage(affineMatrix2d(s), s, false, true);
         }
@@ -585,14 +598,19 @@ class AffineLab : public Lab {
         }
         if (!m) return m;
         // Any non-zero multiple is the same map; drawn with the reference's sign so that
-        // w > 0 marks the same vertices (GL and this lab skip w <= 0).
-        const glm::dmat3 ref = affineMatrix2d(s);
-        double dot = 0;
+        // w > 0 marks the same vertices (GL and this lab skip w <= 0). In a handout: the sign
+        // that makes w > 0 at the polygon's first vertex (on the light's side).
         for (int c = 0; c < 3; ++c)
-            for (int r = 0; r < 3; ++r) {
+            for (int r = 0; r < 3; ++r)
                 if (!std::isfinite((*m)[c][r])) return std::nullopt;
-                dot += (*m)[c][r] * ref[c][r];
-            }
+        double dot = ((*m) * glm::dvec3(affinePolygon()[0], 1.0)).z;
+        if (kHaveReference) {
+            const glm::dmat3 ref = affineMatrix2d(s);
+            dot = 0;
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r)
+                    dot += (*m)[c][r] * ref[c][r];
+        }
         if (dot < 0) *m = -*m;
         return m;
     }
@@ -633,8 +651,10 @@ void reseed(AffineState& s, unsigned seed) {
         const Line2 line = affineLine(s);
         const double dist = std::abs(signedDistance(line, c));
         if (dist < r + 0.8 || dist > 6.0) continue;
-        const glm::dvec3 mc = mirrorLine(line) * glm::dvec3(c, 1.0);
-        if (std::abs(mc.x) > 9.5 - r || std::abs(mc.y) > 8.5 - r) continue;
+        if (kHaveReference) {
+            const glm::dvec3 mc = mirrorLine(line) * glm::dvec3(c, 1.0);
+            if (std::abs(mc.x) > 9.5 - r || std::abs(mc.y) > 8.5 - r) continue;
+        }
         // S: beyond the polygon seen from Λ, a little to the side.
         const glm::dvec2 n = normalTowardsPolygon(s), t(-n.y, n.x);
         s.light = c + n * (r + 1.5) + t * 1.0;

@@ -56,6 +56,9 @@ struct Task {
     std::function<std::string(const Values& in)> showIn;   // optional
     std::function<std::string(const Values& out)> showOut; // optional
     bool needsGl = false; // the child gets a current OSMesa context (e.g. lab 03 reads GL matrices)
+    // False when compare() judges `got` from the input alone (e.g. lab 02's cubes): nothing is
+    // recorded for the handout (the recording would be the answer), expected is empty.
+    bool needsExpected = true;
     double timeLimitSeconds = 5.0; // for all cases together; endless loops end here
 };
 

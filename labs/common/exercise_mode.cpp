@@ -49,6 +49,7 @@ pid_t spawn(const std::vector<std::string>& argv, int& outFd, const std::string&
         } else {
             dup2(fds[1], 2);
         }
+        setenv("LC_ALL", "C", 1); // plain ASCII quotes in the compiler's messages (the panel's font)
         std::vector<char*> args;
         for (const std::string& a : argv)
             args.push_back(const_cast<char*>(a.c_str()));
@@ -94,6 +95,7 @@ struct ExerciseMode::Impl {
     Clock::time_point lastPoll{}, changeSeen{}, stepStart{};
     double lastCompileS = 0, lastCheckS = 0, lastTotalS = 0;
     int generation = 0;
+    int reloads = 0; // changes of the file seen while running
     std::vector<std::unique_ptr<StudentObject>> objects; // kept loaded: pointers stay valid
     const StudentObject* current = nullptr;
     std::string compileError, loadError;
@@ -132,19 +134,30 @@ struct ExerciseMode::Impl {
     }
 };
 
-ExerciseMode::ExerciseMode(const LabExercises& lab) : lab_(lab), impl_(std::make_unique<Impl>()) {
+ExerciseMode::ExerciseMode(const LabExercises& lab, char key)
+    : lab_(lab), key_(key), impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.source = assetPath(lab.file);
     m.compileScript = std::string(WB_EXERCISE_DIR) + "/lab" + lab.lab + ".compile";
     m.checker = std::string(WB_BIN_DIR) + "/wb-check";
     m.liveDir = std::string(WB_EXERCISE_DIR) + "/live";
     m.builtObject = std::string(WB_EXERCISE_DIR) + "/lab" + lab.lab + ".so";
+#ifdef WB_HANDOUT
+    setOn(true); // a handout has no reference to show: the lab draws your code
+#endif
 }
 
 ExerciseMode::~ExerciseMode() = default;
 
+KeyHelp ExerciseMode::keyHelp() const {
+    return {std::string(1, key_), trf("your code (%s) / the reference", lab_.file.c_str())};
+}
+
 bool ExerciseMode::key(int k) {
-    if (k != 'e') return false;
+    if (k != key_) return false;
+#ifdef WB_HANDOUT
+    return true; // always your code in a handout
+#endif
     setOn(!on());
     return true;
 }
@@ -231,11 +244,20 @@ bool ExerciseMode::poll(bool watch) {
                     std::stringstream ss;
                     ss << f.rdbuf();
                     m.compileError = firstError(ss.str(), m.source);
+                    // The path as the student knows it, from the repository's root.
+                    const std::string root = assetRoot() + "/";
+                    if (m.compileError.rfind(root, 0) == 0) m.compileError.erase(0, root.size());
                     m.step = Impl::Step::Idle;
                 }
             } else if (m.step == Impl::Step::Checking) {
                 m.lastCheckS = took;
-                m.lastTotalS = std::chrono::duration<double>(now - m.changeSeen).count();
+                // From the file's save (its mtime, wall clock) to the results: what the student waits.
+                const double wall = std::chrono::duration<double>(
+                                        std::chrono::system_clock::now().time_since_epoch())
+                                        .count();
+                m.lastTotalS = m.sourceTime > 0 && m.reloads > 0
+                                   ? wall - m.sourceTime
+                                   : std::chrono::duration<double>(now - m.changeSeen).count();
                 std::istringstream in(m.output);
                 std::string line;
                 while (std::getline(in, line)) {
@@ -257,6 +279,7 @@ bool ExerciseMode::poll(bool watch) {
         if (t != m.sourceTime && t != 0) {
             m.sourceTime = t;
             m.changeSeen = now;
+            ++m.reloads;
             m.startCompile();
             changed = true;
         }
@@ -301,10 +324,10 @@ void ExerciseMode::gui() {
     Impl& m = *impl_;
     if (!ImGui::CollapsingHeader(tr("Exercises"), ImGuiTreeNodeFlags_DefaultOpen)) return;
     bool onNow = m.on;
-    if (ImGui::Checkbox(tr("your code (e); the reference as a ghost"), &onNow)) setOn(onNow);
+    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow)) setOn(onNow);
     ImGui::TextWrapped("%s", trf("your file: %s", lab_.file.c_str()).c_str());
     if (!m.started) {
-        ImGui::TextWrapped("%s", tr("Press e to draw your answers and check them."));
+        ImGui::TextWrapped("%s", trf("Press %c to draw your answers and check them.", key_).c_str());
         return;
     }
     const ImVec4 red(0.85f, 0.1f, 0.1f, 1), green(0.1f, 0.55f, 0.1f, 1), grey(0.45f, 0.45f, 0.45f, 1);
@@ -312,6 +335,8 @@ void ExerciseMode::gui() {
         ImGui::TextWrapped("%s", tr("compiling your file..."));
     else if (m.step == Impl::Step::Checking)
         ImGui::TextWrapped("%s", tr("checking..."));
+    else if (m.reloads == 0 && m.checked)
+        ImGui::TextWrapped("%s", trf("checked in %.1f s", m.lastCheckS).c_str());
     else if (m.lastTotalS > 0)
         ImGui::TextWrapped("%s", trf("reloaded %.1f s after saving (compile %.1f s, check %.1f s)",
                                      m.lastTotalS, m.lastCompileS, m.lastCheckS)

@@ -19,6 +19,7 @@
 // flags of the build (build/exercises/labNN.compile), loads it and re-runs the checks in a
 // child process (wb-check --lab NN --student SO --machine), without restarting the lab.
 #include "common/exercise_check.h"
+#include "common/lab.h"
 
 #include <memory>
 #include <optional>
@@ -28,12 +29,14 @@ namespace wb::ex {
 
 class ExerciseMode {
   public:
-    explicit ExerciseMode(const LabExercises& lab);
+    // `key` toggles the mode: 'e' unless the lab already uses it ('E' in labs 02 and 05).
+    explicit ExerciseMode(const LabExercises& lab, char key = 'e');
     ~ExerciseMode();
     ExerciseMode(const ExerciseMode&) = delete;
     ExerciseMode& operator=(const ExerciseMode&) = delete;
 
-    bool key(int key);     // `e`: toggle; true when used
+    bool key(int key);     // the mode's key: toggle; true when used
+    KeyHelp keyHelp() const; // the line for the lab's keys()
     bool on() const;       // drawing your code (false: the reference, as the lab always did)
     void setOn(bool on);
     // File watch, compile and check progress; true when something changed. `watch`: keep
@@ -71,6 +74,7 @@ class ExerciseMode {
     const void* studentRaw() const;
     bool callable(const std::string& taskId) const;
     const LabExercises& lab_;
+    char key_;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -29,7 +29,11 @@ function(add_exercises nn dir)
   target_compile_definitions(${exe} PRIVATE WB_EXERCISES=1)
   target_compile_definitions(${exe}_headless PUBLIC WB_EXERCISES=1)
 
-  foreach(kind student reference mutants)
+  set(kinds student reference mutants)
+  if(WB_HANDOUT)
+    set(kinds student) # no answers to build
+  endif()
+  foreach(kind IN LISTS kinds)
     if(kind STREQUAL student)
       set(file ${src}/exercises.cpp)
       set(out lab${nn})
@@ -99,6 +103,9 @@ ${list}    };
   target_compile_options(wb-check PRIVATE ${WB_WARNINGS})
   target_compile_definitions(wb-check PRIVATE WB_EXERCISE_DIR="${WB_EXERCISE_DIR}"
     WB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  if(WB_HANDOUT)
+    target_compile_definitions(wb-check PRIVATE WB_HANDOUT_EXPECTED="${PROJECT_SOURCE_DIR}/labs/handout_expected.tsv")
+  endif()
   target_link_libraries(wb-check PRIVATE ${libs} wb_shell_headless)
   add_dependencies(wb-check exercises-student)
   # The window runs wb-check on each reload.
