@@ -101,8 +101,7 @@ void render(const Steps& s, int w, int h, std::vector<uint8_t>& out) {
 ExerciseTrace traceExercise(const ex::ExerciseMode& mode, int width, int height) {
     ExerciseTrace t;
     t.width = width, t.height = height;
-    const auto* ref = mode.referenceTable<lab07::Table>();
-    if (!ref) return t;
+    const auto* ref = mode.referenceTable<lab07::Table>(); // nullptr in a handout
     const auto* mine = mode.studentTable<lab07::Table>();
     // A step is yours when its check let it be called (passing or failing: a failing step
     // shows what it does); the others are the reference's.
@@ -113,13 +112,14 @@ ExerciseTrace traceExercise(const ex::ExerciseMode& mode, int width, int height)
     };
     const Steps s{pick("07.intersect", "intersectSphere"), pick("07.normal", "sphereNormal"),
                   pick("07.shade", "shade"), pick("07.reflect", "reflectDirection")};
-    render(s, width, height, t.mine);
-    render({ref, ref, ref, ref}, width, height, t.reference);
+    // In a handout a step of yours that is not done has no stand-in: no picture until all are.
+    if (s.hit && s.normal && s.shade && s.reflect) render(s, width, height, t.mine);
+    if (ref) render({ref, ref, ref, ref}, width, height, t.reference);
     return t;
 }
 
 void drawExerciseTrace(const ExerciseTrace& t, int viewWidth, int viewHeight) {
-    if (t.mine.empty()) return;
+    if (t.mine.empty() && t.reference.empty()) return;
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     glOrtho(0, viewWidth, 0, viewHeight, -1, 1);
@@ -132,8 +132,14 @@ void drawExerciseTrace(const ExerciseTrace& t, int viewWidth, int viewHeight) {
     const float y0 = 0.5f * (float(viewHeight) - zoom * float(t.height));
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelZoom(zoom, zoom);
-    glRasterPos2f(x0, y0);
-    glDrawPixels(t.width, t.height, GL_RGB, GL_UNSIGNED_BYTE, t.mine.data());
+    if (!t.mine.empty()) {
+        glRasterPos2f(x0, y0);
+        glDrawPixels(t.width, t.height, GL_RGB, GL_UNSIGNED_BYTE, t.mine.data());
+    }
+    if (t.reference.empty()) {
+        glPixelZoom(1, 1);
+        return;
+    }
     // The reference over it, translucent (the ghost): where both agree nothing changes.
     glEnable(GL_BLEND);
     glBlendColor(0, 0, 0, ex::ExerciseMode::kGhostAlpha);

@@ -421,6 +421,7 @@ const ex::LabExercises& exercises() {
         rays.cases = raysCases;
         rays.run = raysRun;
         rays.compare = raysCompare;
+        rays.needsExpected = false; // judged from the input and the exact V alone
         rays.showIn = [](const Values& in) {
             const RaysIn r = unpackRays(in);
             return trf("P_i %s, P_j %s, k = %d, seed %u, %d blocker(s)", showQuad(r.i).c_str(),
