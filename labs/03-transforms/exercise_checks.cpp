@@ -54,14 +54,15 @@ std::vector<Case> frustumCases() {
     Lcg g{31};
     for (int i = 1; i <= 4; ++i) {
         const double n = g.in(0.1, 10);
-        cs.push_back({"seed " + std::to_string(i), {g.in(5, 170), g.in(0.2, 5), n, n * g.in(2, 100)}});
+        cs.push_back(
+            {"seed " + std::to_string(i), {g.in(5, 170), g.in(0.2, 5), n, n * g.in(2, 100)}});
     }
     return cs;
 }
 
 Values frustumRun(const void* table, const Values& in) {
     const Frustum f = static_cast<const Table*>(table)->perspectiveAsFrustum(in.at(0), in.at(1),
-                                                                            in.at(2), in.at(3));
+                                                                             in.at(2), in.at(3));
     Values out{f.left, f.right, f.bottom, f.top, f.zNear, f.zFar};
     // OpenGL's own two matrices: glFrustum with these numbers, gluPerspective with the case's.
     GLfloat m[16];
@@ -86,7 +87,8 @@ Verdict frustumCompare(const Values& in, const Values& expected, const Values& g
     if (!ex::allNear(want, six, 1e-12)) {
         if (std::fabs(got[0] + got[1]) > 1e-12 * std::fabs(got[1]) ||
             std::fabs(got[2] + got[3]) > 1e-12 * std::fabs(got[3]))
-            return Verdict::fail(tr("gluPerspective's view is centred: left = -right, bottom = -top"));
+            return Verdict::fail(
+                tr("gluPerspective's view is centred: left = -right, bottom = -top"));
         if (got[4] != in.at(2) || got[5] != in.at(3))
             return Verdict::fail(tr("the near and far planes are gluPerspective's own"));
         const double ratio = got[3] / want[3];
@@ -137,8 +139,8 @@ std::vector<Case> cameraCases() {
 Values cameraRun(const void* table, const Values& in) {
     LookAt cam{v3(in, 0), v3(in, 3), v3(in, 6)};
     const LookAt out = static_cast<const Table*>(table)->moveCamera(cam, in.at(9));
-    return {out.eye.x,    out.eye.y,    out.eye.z, out.centre.x, out.centre.y,
-            out.centre.z, out.up.x,     out.up.y,  out.up.z};
+    return {out.eye.x,    out.eye.y, out.eye.z, out.centre.x, out.centre.y,
+            out.centre.z, out.up.x,  out.up.y,  out.up.z};
 }
 
 Verdict cameraCompare(const Values& in, const Values& expected, const Values& got) {
@@ -186,8 +188,8 @@ std::vector<Case> mirrorCases() {
         in.insert(in.end(), p, p + 16);
         cs.push_back({std::move(name), in});
     };
-    const glm::mat4 labCamera = glm::lookAt(glm::vec3(0, 6.34f, 7.59f), glm::vec3(0, 0, -1),
-                                            glm::vec3(0, 1, 0));
+    const glm::mat4 labCamera =
+        glm::lookAt(glm::vec3(0, 6.34f, 7.59f), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
     add("the lab's wall z = -6 under the identity", -6.0f, glm::mat4(1.0f));
     add("the lab's wall z = -6 under the lab's camera", -6.0f, labCamera);
     add("a wall through the origin z = 0", 0.0f, labCamera);
@@ -195,8 +197,9 @@ std::vector<Case> mirrorCases() {
     add("a far wall z = -100", -100.0f, labCamera);
     Lcg g{37};
     for (int i = 1; i <= 3; ++i) {
-        const glm::mat4 cam = glm::lookAt(glm::vec3(g.in(-10, 10), g.in(0, 10), g.in(-10, 10)),
-                                          glm::vec3(g.in(-2, 2), 0, g.in(-2, 2)), glm::vec3(0, 1, 0));
+        const glm::mat4 cam =
+            glm::lookAt(glm::vec3(g.in(-10, 10), g.in(0, 10), g.in(-10, 10)),
+                        glm::vec3(g.in(-2, 2), 0, g.in(-2, 2)), glm::vec3(0, 1, 0));
         add("seed " + std::to_string(i), float(g.in(-20, 20)), cam);
     }
     return cs;
@@ -248,7 +251,8 @@ Verdict mirrorCompare(const Values& in, const Values& expected, const Values& go
         for (int c = 0; c < 4; ++c)
             for (int k = 0; k < 4; ++k) {
                 camIdentity = camIdentity && std::fabs(cam[c][k] - (c == k ? 1 : 0)) < 1e-9;
-                isReflection = isReflection && std::fabs(g[c][k] - r[c][k]) <= 1e-5 * (1 + std::fabs(z));
+                isReflection =
+                    isReflection && std::fabs(g[c][k] - r[c][k]) <= 1e-5 * (1 + std::fabs(z));
             }
         if (!camIdentity && isReflection)
             return Verdict::fail(tr("the camera's matrix is gone: multiply the current matrix "
@@ -264,7 +268,8 @@ Verdict mirrorCompare(const Values& in, const Values& expected, const Values& go
                                      "-wallZ) last",
                                      z, p.x, p.y, p.z));
         }
-        return Verdict::fail(tr("not the reflection in the wall: (x, y, z) -> (x, y, 2·wallZ - z)"));
+        return Verdict::fail(
+            tr("not the reflection in the wall: (x, y, z) -> (x, y, 2·wallZ - z)"));
     }
     (void)expected;
     if (got.at(16) != double(GL_CW))
@@ -293,7 +298,8 @@ const ex::LabExercises& exercises() {
         fr.compare = frustumCompare;
         fr.needsGl = true;
         fr.showIn = [](const Values& in) {
-            return trf("gluPerspective(%.6g, %.6g, %.6g, %.6g)", in.at(0), in.at(1), in.at(2), in.at(3));
+            return trf("gluPerspective(%.6g, %.6g, %.6g, %.6g)", in.at(0), in.at(1), in.at(2),
+                       in.at(3));
         };
         fr.showOut = [](const Values& out) {
             return trf("glFrustum(%.9g, %.9g, %.9g, %.9g, %.6g, %.6g)", out.at(0), out.at(1),
@@ -318,7 +324,8 @@ const ex::LabExercises& exercises() {
         ex::Task mir;
         mir.id = "03.mirror";
         mir.grade = 5;
-        mir.title = N_("The classroom mirrored in the blackboard wall with glScalef, glTranslatef, glRotatef");
+        mir.title = N_(
+            "The classroom mirrored in the blackboard wall with glScalef, glTranslatef, glRotatef");
         mir.section = "§2.3 task 5";
         mir.cases = mirrorCases;
         mir.run = mirrorRun;
@@ -327,7 +334,9 @@ const ex::LabExercises& exercises() {
         mir.showIn = [](const Values& in) { return trf("wall z = %g, camera loaded", in.at(0)); };
         mir.showOut = [](const Values& out) {
             return ex::showMatrix(Values(out.begin(), out.begin() + 16), 4) +
-                   (out.at(16) == double(GL_CW) ? ", GL_CW" : out.at(16) == double(GL_CCW) ? ", GL_CCW" : ", ?");
+                   (out.at(16) == double(GL_CW)    ? ", GL_CW"
+                    : out.at(16) == double(GL_CCW) ? ", GL_CCW"
+                                                   : ", ?");
         };
         l.tasks = {fr, cam, mir};
         l.mutants = {{21, "03.frustum", N_("fovy not halved")},
@@ -349,4 +358,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab03
 
-const wb::ex::LabExercises& wbExercises_lab03() { return wb::lab03::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab03() {
+    return wb::lab03::exercises();
+}

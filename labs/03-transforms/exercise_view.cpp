@@ -9,8 +9,8 @@ bool exerciseProjection(const ex::ExerciseMode& mode, double fovy, double aspect
                         double zFar) {
     const auto* t = mode.on() ? mode.studentTable<lab03::Table>() : nullptr;
     if (!t) return false;
-    const auto f = mode.call("03.frustum",
-                             [&] { return t->perspectiveAsFrustum(fovy, aspect, zNear, zFar); });
+    const auto f =
+        mode.call("03.frustum", [&] { return t->perspectiveAsFrustum(fovy, aspect, zNear, zFar); });
     if (!f) return false;
     glFrustum(f->left, f->right, f->bottom, f->top, f->zNear, f->zFar);
     return true;

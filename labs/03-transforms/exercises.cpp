@@ -26,4 +26,6 @@ unsigned mirrorInWall(float wallZ) {
 
 } // namespace wb::lab03
 
-WB_EXERCISE_TABLE(wb::lab03::Table, lab03, {&wb::lab03::perspectiveAsFrustum, &wb::lab03::moveCamera, &wb::lab03::mirrorInWall})
+WB_EXERCISE_TABLE(wb::lab03::Table, lab03,
+                  {&wb::lab03::perspectiveAsFrustum, &wb::lab03::moveCamera,
+                   &wb::lab03::mirrorInWall})

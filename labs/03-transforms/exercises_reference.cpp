@@ -12,15 +12,15 @@ namespace wb::lab03 {
 Frustum perspectiveAsFrustum(double fovy, double aspect, double zNear, double zFar) {
     constexpr double kPi = 3.14159265358979323846;
     const double half = WB_MUTANT(21) ? fovy * kPi / 180 : fovy * kPi / 360; // 21: not halved
-    const double top = zNear * std::tan(WB_MUTANT(22) ? fovy / 2 : half);     // 22: degrees
-    const double right = WB_MUTANT(23) ? top / aspect : top * aspect;          // 23: aspect inverted
+    const double top = zNear * std::tan(WB_MUTANT(22) ? fovy / 2 : half);    // 22: degrees
+    const double right = WB_MUTANT(23) ? top / aspect : top * aspect;        // 23: aspect inverted
     return {-right, right, -top, top, zNear, zFar};
 }
 
 LookAt moveCamera(const LookAt& camera, double step) {
     const glm::dvec3 toEye = camera.eye - camera.centre;
     const double dist = glm::length(toEye);
-    double next = dist - (WB_MUTANT(2) ? -step : step); // 2: in and out swapped
+    double next = dist - (WB_MUTANT(2) ? -step : step);                     // 2: in and out swapped
     if (!WB_MUTANT(4)) next = std::clamp(next, kMinDistance, kMaxDistance); // 4: no limit
     LookAt out = camera;
     if (WB_MUTANT(1)) { // 1: the unnormalised line of sight: moves step·dist
@@ -52,4 +52,6 @@ unsigned mirrorInWall(float wallZ) {
 
 } // namespace wb::lab03
 
-WB_EXERCISE_TABLE(wb::lab03::Table, lab03, {&wb::lab03::perspectiveAsFrustum, &wb::lab03::moveCamera, &wb::lab03::mirrorInWall})
+WB_EXERCISE_TABLE(wb::lab03::Table, lab03,
+                  {&wb::lab03::perspectiveAsFrustum, &wb::lab03::moveCamera,
+                   &wb::lab03::mirrorInWall})

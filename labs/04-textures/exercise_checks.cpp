@@ -73,8 +73,9 @@ std::string showMesh(const Values& out) {
 double area(const wb::Mesh& m) {
     double a = 0;
     for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
-        a += 0.5 * glm::length(glm::cross(m.positions[m.indices[k + 1]] - m.positions[m.indices[k]],
-                                          m.positions[m.indices[k + 2]] - m.positions[m.indices[k]]));
+        a += 0.5 *
+             glm::length(glm::cross(m.positions[m.indices[k + 1]] - m.positions[m.indices[k]],
+                                    m.positions[m.indices[k + 2]] - m.positions[m.indices[k]]));
     return a;
 }
 
@@ -97,8 +98,9 @@ Verdict checkMesh(const Mesh& m, double size, double coreArea, double spanS, dou
                                      i, int(n)));
     for (size_t i = 0; i < n; ++i) {
         const std::string why = vertexWrong(i);
-        if (!why.empty()) return Verdict::fail(trf("vertex %d at %s: %s", int(i),
-                                                   fmtVec(m.positions[i]).c_str(), why.c_str()));
+        if (!why.empty())
+            return Verdict::fail(
+                trf("vertex %d at %s: %s", int(i), fmtVec(m.positions[i]).c_str(), why.c_str()));
     }
     double total = 0;
     for (size_t k = 0; k < m.indices.size(); k += 3) {
@@ -113,7 +115,8 @@ Verdict checkMesh(const Mesh& m, double size, double coreArea, double spanS, dou
                 "own vertices with s = 1 (t = 1)",
                 int(k / 3), std::min({ta.x, tb.x, tc.x}), std::max({ta.x, tb.x, tc.x}),
                 std::min({ta.y, tb.y, tc.y}), std::max({ta.y, tb.y, tc.y})));
-        const glm::dvec3 cr = glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
+        const glm::dvec3 cr =
+            glm::cross(m.positions[b] - m.positions[a], m.positions[c] - m.positions[a]);
         const double ar = 0.5 * glm::length(cr);
         total += ar;
         if (ar <= kTol * size * size) continue; // a degenerate triangle at a pole: no side
@@ -125,7 +128,8 @@ Verdict checkMesh(const Mesh& m, double size, double coreArea, double spanS, dou
     if (std::fabs(total - coreArea) > 1e-9 * coreArea)
         return Verdict::fail(trf("the triangles cover an area of %.9g, the %s's grid %.9g (%.3g "
                                  "%%): a row or column of %s missing or drawn twice (off by one?)",
-                                 total, cellsWord, coreArea, 100 * (total / coreArea - 1), tr("cells")));
+                                 total, cellsWord, coreArea, 100 * (total / coreArea - 1),
+                                 tr("cells")));
     return Verdict::pass();
 }
 
@@ -169,8 +173,8 @@ Verdict texelCompare(const Values& in, const Values& expected, const Values& got
     if (got.at(0) == expected.at(0)) return Verdict::pass();
     const int size = int(in.at(1));
     if (got.at(0) < 0 || got.at(0) >= size)
-        return Verdict::fail(trf("texel %d does not exist: a row has texels 0..%d", int(got.at(0)),
-                                 size - 1));
+        return Verdict::fail(
+            trf("texel %d does not exist: a row has texels 0..%d", int(got.at(0)), size - 1));
     if (in.at(2) != 0 && in.at(0) < 0)
         return Verdict::fail(tr("GL_REPEAT keeps the fraction s - floor(s), which is >= 0 also "
                                 "for negative s (fmod and int() round towards zero)"));
@@ -207,8 +211,8 @@ Verdict sphereCompare(const Values& in, const Values&, const Values& got) {
                        st.x);
         return {};
     };
-    return checkMesh(m, r, area(makeSphere(r, slices, stacks)), 1.0 / slices, 1.0 / stacks,
-                     vertex, "sphere");
+    return checkMesh(m, r, area(makeSphere(r, slices, stacks)), 1.0 / slices, 1.0 / stacks, vertex,
+                     "sphere");
 }
 
 // ----- ④ torus: in = R, r, rings, sides -----
@@ -223,7 +227,8 @@ Verdict torusCompare(const Values& in, const Values&, const Values& got) {
         const glm::dvec2 st = m.texCoords[i];
         const double rho = std::hypot(p.x, p.z);
         if (!(rho > 0)) return tr("on the axis: not on the torus");
-        const glm::dvec3 c = glm::dvec3(p.x, 0, p.z) * (R / rho); // nearest point of the centre circle
+        const glm::dvec3 c =
+            glm::dvec3(p.x, 0, p.z) * (R / rho); // nearest point of the centre circle
         if (std::fabs(glm::length(p - c) - r) > kTol * size)
             return trf("%.9g from the tube's centre circle, not r = %g", glm::length(p - c), r);
         if (std::fabs(glm::length(n) - 1) > kTol)
@@ -244,8 +249,8 @@ Verdict torusCompare(const Values& in, const Values&, const Values& got) {
                        st.y);
         return {};
     };
-    return checkMesh(m, size, area(makeTorus(R, r, rings, sides)), 1.0 / rings, 1.0 / sides,
-                     vertex, "torus");
+    return checkMesh(m, size, area(makeTorus(R, r, rings, sides)), 1.0 / rings, 1.0 / sides, vertex,
+                     "torus");
 }
 
 // ----- ⑤ sphere map: in = eye position, unit normal; out = student s, t, GL's s, t, ok -----
@@ -343,8 +348,10 @@ Verdict mapCompare(const Values& in, const Values& expected, const Values& got) 
     const double tol = 1e-12 / m + 1e-12;
     if (glm::length(st - e) > tol) {
         auto variant = [&](const glm::dvec3& uu, bool plus, double one) {
-            const glm::dvec3 ff = plus ? uu + 2.0 * n * glm::dot(n, uu) : uu - 2.0 * n * glm::dot(n, uu);
-            const double mm = 2 * std::sqrt(ff.x * ff.x + ff.y * ff.y + (ff.z + one) * (ff.z + one));
+            const glm::dvec3 ff =
+                plus ? uu + 2.0 * n * glm::dot(n, uu) : uu - 2.0 * n * glm::dot(n, uu);
+            const double mm =
+                2 * std::sqrt(ff.x * ff.x + ff.y * ff.y + (ff.z + one) * (ff.z + one));
             return glm::dvec2(ff.x / mm + 0.5, ff.y / mm + 0.5);
         };
         if (glm::length(st - variant(p, false, 1)) <= 1e-9)
@@ -362,8 +369,8 @@ Verdict mapCompare(const Values& in, const Values& expected, const Values& got) 
     if (got.at(4) != 0) {
         const glm::dvec2 gl(got.at(2), got.at(3));
         if (glm::length(st - gl) > 4e-6 / std::min(1.0, m) + 4e-6)
-            return Verdict::fail(trf("OpenGL's GL_SPHERE_MAP texgen gives (%.6f, %.6f) here",
-                                     gl.x, gl.y));
+            return Verdict::fail(
+                trf("OpenGL's GL_SPHERE_MAP texgen gives (%.6f, %.6f) here", gl.x, gl.y));
     }
     return Verdict::pass();
 }
@@ -410,7 +417,8 @@ const ex::LabExercises& exercises() {
                                                                          int(in.at(2))));
         };
         sphere.compare = sphereCompare;
-        sphere.needsExpected = false; // judged from the input alone: a recording would be the answer
+        sphere.needsExpected =
+            false; // judged from the input alone: a recording would be the answer
         sphere.showIn = [](const Values& in) {
             return trf("radius %g, %d slices, %d stacks", in.at(0), int(in.at(1)), int(in.at(2)));
         };
@@ -451,7 +459,9 @@ const ex::LabExercises& exercises() {
             return trf("eye position (%.4g, %.4g, %.4g), normal (%.4g, %.4g, %.4g)", in.at(0),
                        in.at(1), in.at(2), in.at(3), in.at(4), in.at(5));
         };
-        map.showOut = [](const Values& out) { return trf("(s, t) = (%.9g, %.9g)", out.at(0), out.at(1)); };
+        map.showOut = [](const Values& out) {
+            return trf("(s, t) = (%.9g, %.9g)", out.at(0), out.at(1));
+        };
         l.tasks = {texel, sphere, torus, map};
         l.mutants = {{31, "04.texel", N_("fmod for the fraction (negative s)")},
                      {32, "04.texel", N_("GL_REPEAT treated as clamping")},
@@ -474,4 +484,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab04
 
-const wb::ex::LabExercises& wbExercises_lab04() { return wb::lab04::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab04() {
+    return wb::lab04::exercises();
+}

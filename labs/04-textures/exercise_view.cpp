@@ -17,7 +17,8 @@ void arrays(const lab04::Mesh& m, bool withNormals) {
         if (i >= n) return; // GL would read past the arrays
     std::vector<float> p, nn, t;
     for (size_t i = 0; i < n; ++i) {
-        p.insert(p.end(), {float(m.positions[i].x), float(m.positions[i].y), float(m.positions[i].z)});
+        p.insert(p.end(),
+                 {float(m.positions[i].x), float(m.positions[i].y), float(m.positions[i].z)});
         nn.insert(nn.end(), {float(m.normals[i].x), float(m.normals[i].y), float(m.normals[i].z)});
         t.insert(t.end(), {float(m.texCoords[i].x), float(m.texCoords[i].y)});
     }
@@ -29,7 +30,8 @@ void arrays(const lab04::Mesh& m, bool withNormals) {
         glNormalPointer(GL_FLOAT, 0, nn.data());
         glTexCoordPointer(2, GL_FLOAT, 0, t.data());
     }
-    glDrawElements(GL_TRIANGLES, GLsizei(m.indices.size() / 3 * 3), GL_UNSIGNED_INT, m.indices.data());
+    glDrawElements(GL_TRIANGLES, GLsizei(m.indices.size() / 3 * 3), GL_UNSIGNED_INT,
+                   m.indices.data());
     glDisableClientState(GL_VERTEX_ARRAY);
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -44,7 +46,8 @@ lab04::Mesh make(const lab04::Table* t, bool torus, double a, double b, int n, i
 bool drawExerciseMesh(const ex::ExerciseMode& mode, bool torus, double a, double b, int n, int m) {
     const auto* t = mode.on() ? mode.studentTable<lab04::Table>() : nullptr;
     if (!t) return false;
-    const auto mine = mode.call(torus ? "04.torus" : "04.sphere", [&] { return make(t, torus, a, b, n, m); });
+    const auto mine =
+        mode.call(torus ? "04.torus" : "04.sphere", [&] { return make(t, torus, a, b, n, m); });
     if (!mine) return false;
     arrays(*mine, true);
     if (const auto* r = mode.referenceTable<lab04::Table>()) {

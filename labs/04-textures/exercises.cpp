@@ -31,4 +31,5 @@ glm::dvec2 sphereMap(const glm::dvec3& eyePos, const glm::dvec3& n) {
 } // namespace wb::lab04
 
 WB_EXERCISE_TABLE(wb::lab04::Table, lab04,
-                  {&wb::lab04::texelIndex, &wb::lab04::sphereMesh, &wb::lab04::torusMesh, &wb::lab04::sphereMap})
+                  {&wb::lab04::texelIndex, &wb::lab04::sphereMesh, &wb::lab04::torusMesh,
+                   &wb::lab04::sphereMap})

@@ -46,10 +46,11 @@ Mesh sphereMesh(double radius, int slices, int stacks) {
             // The seam: column `slices` is s = 1 (mutant 1: wrapped back to s = 0).
             const double s = WB_MUTANT(1) && i == slices ? 0.0 : double(i) / slices;
             const double phi = 2 * kPi * s;
-            const double cl = pole ? 0.0 : std::cos(lat), sl = pole ? (j == 0 ? -1.0 : 1.0) : std::sin(lat);
+            const double cl = pole ? 0.0 : std::cos(lat),
+                         sl = pole ? (j == 0 ? -1.0 : 1.0) : std::sin(lat);
             const glm::dvec3 n(cl * std::sin(phi), sl, cl * std::cos(phi));
             m.positions.push_back(radius * n);
-            m.normals.push_back(WB_MUTANT(3) ? radius * n : n); // 3: not normalised
+            m.normals.push_back(WB_MUTANT(3) ? radius * n : n);   // 3: not normalised
             m.texCoords.push_back({s, WB_MUTANT(5) ? 1 - t : t}); // 5: t from the north pole
         }
     }
@@ -81,8 +82,8 @@ Mesh torusMesh(double R, double r, int rings, int sides) {
 
 glm::dvec2 sphereMap(const glm::dvec3& eyePos, const glm::dvec3& n) {
     const double len = glm::length(eyePos);
-    const glm::dvec3 u = WB_MUTANT(21) ? eyePos : eyePos / len; // 21: u not normalised
-    const glm::dvec3 f = WB_MUTANT(22) ? u + 2.0 * n * glm::dot(n, u)  // 22: sign of the reflection
+    const glm::dvec3 u = WB_MUTANT(21) ? eyePos : eyePos / len;       // 21: u not normalised
+    const glm::dvec3 f = WB_MUTANT(22) ? u + 2.0 * n * glm::dot(n, u) // 22: sign of the reflection
                                        : u - 2.0 * n * glm::dot(n, u);
     const double fz1 = WB_MUTANT(23) ? f.z : f.z + 1; // 23: the +1 forgotten
     const double m = 2 * std::sqrt(f.x * f.x + f.y * f.y + fz1 * fz1);
@@ -93,4 +94,5 @@ glm::dvec2 sphereMap(const glm::dvec3& eyePos, const glm::dvec3& n) {
 } // namespace wb::lab04
 
 WB_EXERCISE_TABLE(wb::lab04::Table, lab04,
-                  {&wb::lab04::texelIndex, &wb::lab04::sphereMesh, &wb::lab04::torusMesh, &wb::lab04::sphereMap})
+                  {&wb::lab04::texelIndex, &wb::lab04::sphereMesh, &wb::lab04::torusMesh,
+                   &wb::lab04::sphereMap})

@@ -55,16 +55,15 @@ struct Lcg {
 
 // ----- ③ reflection: in = plane -----
 std::vector<Case> reflectionCases() {
-    std::vector<Case> cs = {
-        {"the rectangular mirror's plane z = -2.98", {0, 0, 1, -kMirrorZ}},
-        {"the back wall z = -3, normal of length 5", {0, 0, 5, -5 * kWallZ}},
-        {"a plane through the origin, y = x", {1, -1, 0, 0}},
-        {"a tilted plane far out (D = 40)", {1, 2, 2, 40}},
-        {"a tiny normal (1e-6 long)", {1e-6, 0, 0, -2e-6}}};
+    std::vector<Case> cs = {{"the rectangular mirror's plane z = -2.98", {0, 0, 1, -kMirrorZ}},
+                            {"the back wall z = -3, normal of length 5", {0, 0, 5, -5 * kWallZ}},
+                            {"a plane through the origin, y = x", {1, -1, 0, 0}},
+                            {"a tilted plane far out (D = 40)", {1, 2, 2, 40}},
+                            {"a tiny normal (1e-6 long)", {1e-6, 0, 0, -2e-6}}};
     Lcg g{51};
     for (int i = 1; i <= 6; ++i)
-        cs.push_back({"seed " + std::to_string(i),
-                      {g.in(-3, 3), g.in(-3, 3), g.in(-3, 3), g.in(-10, 10)}});
+        cs.push_back(
+            {"seed " + std::to_string(i), {g.in(-3, 3), g.in(-3, 3), g.in(-3, 3), g.in(-10, 10)}});
     return cs;
 }
 
@@ -81,12 +80,15 @@ Verdict reflectionCompare(const Values& in, const Values& expected, const Values
     const double len = glm::length(n);
     const glm::dvec3 onPlane = -in.at(3) / (len * len) * n;
     const glm::dvec4 q = g * glm::dvec4(onPlane, 1);
-    if (std::fabs(q.w) > 0 && glm::length(glm::dvec3(q) / q.w - onPlane) > 1e-9 * (1 + glm::length(onPlane)))
+    if (std::fabs(q.w) > 0 &&
+        glm::length(glm::dvec3(q) / q.w - onPlane) > 1e-9 * (1 + glm::length(onPlane)))
         return Verdict::fail(tr("a point of the plane moves: the mirror must leave its own plane "
                                 "in place (the sign of D, or the normal not divided by its "
                                 "length?)"));
-    const glm::dvec4 o = g * glm::dvec4(onPlane + n / len, 1), oe = e * glm::dvec4(onPlane + n / len, 1);
-    if (std::fabs(o.w) > 0 && glm::length(glm::dvec3(o) / o.w - onPlane) < 1e-9 * (1 + glm::length(onPlane)))
+    const glm::dvec4 o = g * glm::dvec4(onPlane + n / len, 1),
+                     oe = e * glm::dvec4(onPlane + n / len, 1);
+    if (std::fabs(o.w) > 0 &&
+        glm::length(glm::dvec3(o) / o.w - onPlane) < 1e-9 * (1 + glm::length(onPlane)))
         return Verdict::fail(tr("a point 1 in front of the plane lands ON it: that projects onto "
                                 "the plane (factor 1) instead of reflecting (factor 2)"));
     (void)oe;
@@ -106,8 +108,8 @@ std::vector<Case> shadowCases() {
         add("tread " + std::to_string(k) + ": y = " + std::to_string(k * kStepHeight).substr(0, 3),
             {0, 1, 0, -k * kStepHeight}, light);
         const double x = kStairX0 + k * kStepWidth;
-        add("riser " + std::to_string(k) + ": x = " + std::to_string(x).substr(0, 4),
-            {-1, 0, 0, x}, light);
+        add("riser " + std::to_string(k) + ": x = " + std::to_string(x).substr(0, 4), {-1, 0, 0, x},
+            light);
     }
     add("the stairs' front side z = 1.2", {0, 0, 1, -kStairHalfDepth}, light);
     add("the back wall z = -3", {0, 0, 1, -kWallZ}, light);
@@ -136,13 +138,15 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
     if (zero)
         return Verdict::fail(tr("the zero matrix is no map at all: with the light on the plane "
                                 "M = -L·πᵀ"));
-    const glm::dvec4 pl(in.at(0), in.at(1), in.at(2), in.at(3)), l(in.at(4), in.at(5), in.at(6), in.at(7));
+    const glm::dvec4 pl(in.at(0), in.at(1), in.at(2), in.at(3)),
+        l(in.at(4), in.at(5), in.at(6), in.at(7));
     if (std::fabs(glm::dot(pl, l)) > 1e-9 * glm::length(pl) * glm::length(l)) {
         // A point of the plane must stay where it is.
         const glm::dvec3 n(pl);
         const glm::dvec3 p0 = -pl.w / glm::dot(n, n) * n;
         const glm::dvec4 q = g * glm::dvec4(p0, 1);
-        if (std::fabs(q.w) > 1e-12 && glm::length(glm::dvec3(q) / q.w - p0) > 1e-6 * (1 + glm::length(p0)))
+        if (std::fabs(q.w) > 1e-12 &&
+            glm::length(glm::dvec3(q) / q.w - p0) > 1e-6 * (1 + glm::length(p0)))
             return Verdict::fail(tr("a point of the plane moves under your matrix: the (π·L)·I "
                                     "term, or D left out of π·L"));
     }
@@ -151,13 +155,13 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
 
 // ----- ⑤ ellipse: in = cx, cy, a, b, z, n -----
 std::vector<Case> ellipseCases() {
-    std::vector<Case> cs = {
-        {"the lab's elliptical mirror, 64 points",
-         {kEllipseMirror[0], kEllipseMirror[1], kEllipseMirror[2], kEllipseMirror[3], kMirrorZ, 64}},
-        {"the fewest: 8 points", {0, 0, 2, 1, 0, 8}},
-        {"a circle (a = b), 100 points", {1, -1, 0.5, 0.5, 3, 100}},
-        {"a thin ellipse 100 x 0.01, 1024 points", {0, 0, 100, 0.01, -1, 1024}},
-        {"taller than wide, 33 points", {-2, 5, 0.3, 4, -2.98, 33}}};
+    std::vector<Case> cs = {{"the lab's elliptical mirror, 64 points",
+                             {kEllipseMirror[0], kEllipseMirror[1], kEllipseMirror[2],
+                              kEllipseMirror[3], kMirrorZ, 64}},
+                            {"the fewest: 8 points", {0, 0, 2, 1, 0, 8}},
+                            {"a circle (a = b), 100 points", {1, -1, 0.5, 0.5, 3, 100}},
+                            {"a thin ellipse 100 x 0.01, 1024 points", {0, 0, 100, 0.01, -1, 1024}},
+                            {"taller than wide, 33 points", {-2, 5, 0.3, 4, -2.98, 33}}};
     Lcg g{57};
     for (int i = 1; i <= 4; ++i)
         cs.push_back({"seed " + std::to_string(i),
@@ -185,7 +189,8 @@ Verdict ellipseCompare(const Values& in, const Values& /*expected*/, const Value
     const double size = std::max(a, b);
     double area2 = 0;
     for (int k = 0; k < n; ++k) {
-        const double x = got[size_t(3 * k)], y = got[size_t(3 * k + 1)], zz = got[size_t(3 * k + 2)];
+        const double x = got[size_t(3 * k)], y = got[size_t(3 * k + 1)],
+                     zz = got[size_t(3 * k + 2)];
         if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(zz))
             return Verdict::fail(trf("point %d is not a number", k));
         // On the ellipse: sin/cos and one product each; 1e-9 relative.
@@ -244,12 +249,13 @@ const ex::LabExercises& exercises() {
         shadow.cases = shadowCases;
         shadow.run = [](const void* table, const Values& in) {
             return pack(static_cast<const Table*>(table)->shadowMatrix(
-                {in.at(0), in.at(1), in.at(2), in.at(3)}, {in.at(4), in.at(5), in.at(6), in.at(7)}));
+                {in.at(0), in.at(1), in.at(2), in.at(3)},
+                {in.at(4), in.at(5), in.at(6), in.at(7)}));
         };
         shadow.compare = shadowCompare;
         shadow.showIn = [](const Values& in) {
-            return showPlane(in) + trf(", light (%.6g, %.6g, %.6g, %g)", in.at(4), in.at(5),
-                                       in.at(6), in.at(7));
+            return showPlane(in) +
+                   trf(", light (%.6g, %.6g, %.6g, %g)", in.at(4), in.at(5), in.at(6), in.at(7));
         };
         shadow.showOut = [](const Values& out) { return ex::showMatrix(out, 4); };
         ex::Task ell;
@@ -290,4 +296,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab05
 
-const wb::ex::LabExercises& wbExercises_lab05() { return wb::lab05::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab05() {
+    return wb::lab05::exercises();
+}

@@ -14,8 +14,8 @@ glm::dmat4 exerciseReflection(const ex::ExerciseMode& mode, const Plane& plane,
     return m ? *m : reference;
 }
 
-glm::dmat4 exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane,
-                          const glm::dvec3& light, const glm::dmat4& reference) {
+glm::dmat4 exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane, const glm::dvec3& light,
+                          const glm::dmat4& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
     const auto m = mode.call("05.shadow", [&] {

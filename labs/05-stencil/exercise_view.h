@@ -16,8 +16,8 @@ namespace wb {
 glm::dmat4 exerciseReflection(const ex::ExerciseMode& mode, const Plane& plane,
                               const glm::dmat4& reference);
 // The shadow on `plane` from the point light: yours (05.shadow) or `reference`.
-glm::dmat4 exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane,
-                          const glm::dvec3& light, const glm::dmat4& reference);
+glm::dmat4 exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane, const glm::dvec3& light,
+                          const glm::dmat4& reference);
 // The elliptical mirror's outline: yours (05.ellipse, `n` points) or `reference`.
 std::vector<glm::dvec3> exerciseEllipse(const ex::ExerciseMode& mode, const glm::dvec2& centre,
                                         double a, double b, double z, int n,

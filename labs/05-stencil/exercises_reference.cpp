@@ -28,7 +28,8 @@ glm::dmat4 shadowMatrix(const glm::dvec4& plane, const glm::dvec4& light) {
     glm::dmat4 m(0.0);
     for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r)
-            m[c][r] = sign * ((r == c && !WB_MUTANT(12) ? dot : 0.0) - light[r] * pi[c]); // 12: no (π·L)I
+            m[c][r] =
+                sign * ((r == c && !WB_MUTANT(12) ? dot : 0.0) - light[r] * pi[c]); // 12: no (π·L)I
     return WB_MUTANT(11) ? glm::transpose(m) : m; // 11: transposed
 }
 
@@ -39,8 +40,8 @@ std::vector<glm::dvec3> ellipseOutline(const glm::dvec2& centre, double a, doubl
     const double step = WB_MUTANT(23) ? 2 * kPi / (n - 1) : 2 * kPi / n; // 23: last = first
     const double ax = WB_MUTANT(21) ? b : a, by = WB_MUTANT(21) ? a : b; // 21: a and b swapped
     for (int k = 0; k < n; ++k) {
-        double t = WB_MUTANT(22) ? -k * step : k * step;  // 22: clockwise
-        if (WB_MUTANT(24)) t = 360.0 * k / n;               // 24: degrees into sin/cos
+        double t = WB_MUTANT(22) ? -k * step : k * step; // 22: clockwise
+        if (WB_MUTANT(24)) t = 360.0 * k / n;            // 24: degrees into sin/cos
         p.push_back({centre.x + ax * std::cos(t), centre.y + by * std::sin(t), z});
     }
     return p;

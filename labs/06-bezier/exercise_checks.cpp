@@ -217,8 +217,8 @@ Verdict circleCompare(const Values& in, const Values& /*expected*/, const Values
     const double r = in.at(0);
     std::vector<Curve> cs;
     if (!unpackCurves(got, cs) || cs.size() != 2)
-        return Verdict::fail(trf("%d curves returned: the task asks for exactly two Bezier curves",
-                                 int(cs.size())));
+        return Verdict::fail(
+            trf("%d curves returned: the task asks for exactly two Bezier curves", int(cs.size())));
     for (size_t c = 0; c < 2; ++c)
         if (cs[c].size() < 2 || int(cs[c].size()) > kMaxOrder)
             return Verdict::fail(trf("curve %d has %d control points: glMap1f draws 2 to %d "
@@ -254,8 +254,8 @@ Verdict circleCompare(const Values& in, const Values& /*expected*/, const Values
         return Verdict::fail(tr("the two curves do not go around the centre: both cover the "
                                 "same half of the circle (check the sign of y in the second)"));
     if (std::labs(winding) != 1)
-        return Verdict::fail(trf("the curves go %ld times around the centre: once is a circle",
-                                 std::labs(winding)));
+        return Verdict::fail(
+            trf("the curves go %ld times around the centre: once is a circle", std::labs(winding)));
     const RadialError e = curvesRadialError(cs, r, 4096);
     if (!(e.relative() <= kCircleMaxError)) {
         const bool out = e.maxRadius - r > r - e.minRadius;
@@ -287,8 +287,8 @@ Verdict sphereCompare(const Values& /*in*/, const Values& /*expected*/, const Va
                                      kMaxOrder));
         for (const auto& q : p.points)
             if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z))
-                return Verdict::fail(trf("patch %d has a control point that is not a number",
-                                         int(k + 1)));
+                return Verdict::fail(
+                    trf("patch %d has a control point that is not a number", int(k + 1)));
         bp.push_back(BezierPatch{p.orderU, p.orderV, p.points});
     }
     // Coverage: sampled directions against a Fibonacci set of test directions.
@@ -322,11 +322,11 @@ Verdict sphereCompare(const Values& /*in*/, const Values& /*expected*/, const Va
                 const PatchSample s = evalPatch(bp[k], i / 16.0, j / 16.0);
                 if (s.normalKind == 2 || glm::length(s.point) == 0) continue;
                 if (glm::dot(s.normal, s.point) < 0)
-                    return Verdict::fail(trf(
-                        "patch %d: du x dv points into the sphere at u = %.3g, v = %.3g, so "
-                        "GL_AUTO_NORMAL lights it from inside: a mirrored patch needs its rows "
-                        "(or columns) in reverse order",
-                        int(k + 1), i / 16.0, j / 16.0));
+                    return Verdict::fail(
+                        trf("patch %d: du x dv points into the sphere at u = %.3g, v = %.3g, so "
+                            "GL_AUTO_NORMAL lights it from inside: a mirrored patch needs its rows "
+                            "(or columns) in reverse order",
+                            int(k + 1), i / 16.0, j / 16.0));
             }
     const RadialError e = patchesRadialError(bp, 0.0, 128);
     if (!(e.relative() <= kSphereMaxError))
@@ -376,7 +376,8 @@ const ex::LabExercises& exercises() {
             return packCurves(static_cast<const Table*>(table)->circleCurves(in.at(0)));
         };
         circle.compare = circleCompare;
-        circle.needsExpected = false; // judged from the input alone: a recording would be the answer
+        circle.needsExpected =
+            false; // judged from the input alone: a recording would be the answer
         circle.showIn = [](const Values& in) { return "radius " + fmtNum(in.at(0)); };
         circle.showOut = showCurves;
         ex::Task sphere;
@@ -410,4 +411,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab06
 
-const wb::ex::LabExercises& wbExercises_lab06() { return wb::lab06::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab06() {
+    return wb::lab06::exercises();
+}

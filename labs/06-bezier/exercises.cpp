@@ -21,4 +21,5 @@ std::vector<Patch> spherePatches() {
 
 } // namespace wb::lab06
 
-WB_EXERCISE_TABLE(wb::lab06::Table, lab06, {&wb::lab06::bezierPoint, &wb::lab06::circleCurves, &wb::lab06::spherePatches})
+WB_EXERCISE_TABLE(wb::lab06::Table, lab06,
+                  {&wb::lab06::bezierPoint, &wb::lab06::circleCurves, &wb::lab06::spherePatches})

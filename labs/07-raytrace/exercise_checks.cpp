@@ -89,8 +89,8 @@ std::vector<Case> intersectCases() {
                          c0 + glm::dvec3(0.3, 0, 0), {0.2, 1, 0.1}, c0, 1.5));
     cs.push_back(rayCase("sphere behind the origin (both roots < 0)", c0 + glm::dvec3(5, 0, 0),
                          {1, 0.1, 0}, c0, 1.5));
-    cs.push_back(rayCase("ray pointing away, line through the centre", {0, 0, 5}, {0, 0, 1},
-                         {0, 0, 0}, 1));
+    cs.push_back(
+        rayCase("ray pointing away, line through the centre", {0, 0, 5}, {0, 0, 1}, {0, 0, 0}, 1));
     cs.push_back(rayCase("origin 1e6 away from a unit sphere", {1e6, 3e5, -2e5},
                          glm::dvec3(0.2, -0.1, 0.3) - glm::dvec3(1e6, 3e5, -2e5), {0, 0, 0}, 1));
     cs.push_back(rayCase("hit at t = 1e-7 (origin just outside)", {0, 0, 2 + 1e-7}, {0, 0, -1},
@@ -100,19 +100,19 @@ std::vector<Case> intersectCases() {
                          {1, 0, 0}, {0, 0, 0}, 1, kGrazing));
     cs.push_back(rayCase("grazing: the line passes 1e-6·r outside the rim (a miss)",
                          {-10, 1 + 1e-6, 0}, {1, 0, 0}, {0, 0, 0}, 1));
-    cs.push_back(rayCase("tangent ray (either answer is right)", {-10, 1, 0}, {1, 0, 0},
-                         {0, 0, 0}, 1, kTangent));
-    cs.push_back(rayCase("small sphere, r = 1e-3", {0.01, 0.02, 1}, {-0.01, -0.02, -1},
-                         {0, 0, 0}, 1e-3));
-    cs.push_back(rayCase("large sphere, r = 1e3", {5000, 10, 20}, {-1, 0.05, 0.01}, {0, 0, 0},
-                         1e3));
+    cs.push_back(rayCase("tangent ray (either answer is right)", {-10, 1, 0}, {1, 0, 0}, {0, 0, 0},
+                         1, kTangent));
+    cs.push_back(
+        rayCase("small sphere, r = 1e-3", {0.01, 0.02, 1}, {-0.01, -0.02, -1}, {0, 0, 0}, 1e-3));
+    cs.push_back(
+        rayCase("large sphere, r = 1e3", {5000, 10, 20}, {-1, 0.05, 0.01}, {0, 0, 0}, 1e3));
     return cs;
 }
 
 Values intersectRun(const void* table, const Values& in) {
     double t = -1;
-    const bool hit = static_cast<const Table*>(table)->intersectSphere(
-        v3(in, 0), v3(in, 3), v3(in, 6), in.at(9), t);
+    const bool hit = static_cast<const Table*>(table)->intersectSphere(v3(in, 0), v3(in, 3),
+                                                                       v3(in, 6), in.at(9), t);
     return {hit ? 1.0 : 0.0, hit ? t : 0.0};
 }
 
@@ -133,8 +133,8 @@ Verdict intersectCompare(const Values& in, const Values& expected, const Values&
         if (!gHit) return Verdict::pass();
         const double off = std::fabs(glm::length(o + tg * d - c) - r);
         if (tg > 0 && off <= 1e-6 * (f + r)) return Verdict::pass();
-        return Verdict::fail(trf("a tangent ray: your hit t = %.9g is %.3g off the sphere", tg,
-                                 off));
+        return Verdict::fail(
+            trf("a tangent ray: your hit t = %.9g is %.3g off the sphere", tg, off));
     }
     if (eHit && !gHit)
         return Verdict::fail(tr("reported a miss where the ray hits the sphere: check the "
@@ -228,8 +228,8 @@ Values packShade(const ShadeCase& c) {
     put(v, c.s.ambient);
     v.push_back(c.s.distScale);
     for (size_t i = 0; i < c.blockers.size(); ++i)
-        v.insert(v.end(), {c.blockers[i].x, c.blockers[i].y, c.blockers[i].z, c.blockers[i].w,
-                           c.kts[i]});
+        v.insert(v.end(),
+                 {c.blockers[i].x, c.blockers[i].y, c.blockers[i].z, c.blockers[i].w, c.kts[i]});
     return v;
 }
 ShadeCase unpackShade(const Values& v) {
@@ -294,8 +294,8 @@ std::vector<Case> shadeCases() {
     seed.s.view = ray.direction;
     seed.s.material = {kGreen, 0.5, 0.5, 0.5, 3};
     seed.s.lightPos = {0, 0, 60};
-    cs.push_back({"seed 000 part 1: P2 in the shadow of rectangle 1 -> (10,117,10)",
-                  packShade(seed)});
+    cs.push_back(
+        {"seed 000 part 1: P2 in the shadow of rectangle 1 -> (10,117,10)", packShade(seed)});
     seed.kind = kSeedLit;
     cs.push_back({"seed 000 part 1: P2 lit, rectangle 1 removed -> (50,197,50)", packShade(seed)});
     Lcg g{23};
@@ -306,14 +306,20 @@ std::vector<Case> shadeCases() {
         glm::dvec3 v = g.unit();
         if (glm::dot(v, c.s.normal) > 0) v = -v; // the ray comes from the normal's side
         c.s.view = v;
-        c.s.material = {{std::round(g.in(0, 255)), std::round(g.in(0, 255)), std::round(g.in(0, 255))},
-                        g.in(0.1, 0.6), g.in(0.3, 0.9), g.in(0.3, 0.9), std::round(g.in(1, 30))};
+        c.s.material = {
+            {std::round(g.in(0, 255)), std::round(g.in(0, 255)), std::round(g.in(0, 255))},
+            g.in(0.1, 0.6),
+            g.in(0.3, 0.9),
+            g.in(0.3, 0.9),
+            std::round(g.in(1, 30))};
         // The light on the normal's side, 10..40 away (SH = 30/dist around 1).
         glm::dvec3 l = g.unit();
         if (glm::dot(l, c.s.normal) < 0.2) l = glm::normalize(l + c.s.normal);
         c.s.lightPos = c.s.point + l * g.in(10, 40);
-        c.s.lightColour = {std::round(g.in(100, 255)), std::round(g.in(100, 255)), std::round(g.in(100, 255))};
-        c.s.ambient = {std::round(g.in(0, 120)), std::round(g.in(0, 120)), std::round(g.in(0, 120))};
+        c.s.lightColour = {std::round(g.in(100, 255)), std::round(g.in(100, 255)),
+                           std::round(g.in(100, 255))};
+        c.s.ambient = {std::round(g.in(0, 120)), std::round(g.in(0, 120)),
+                       std::round(g.in(0, 120))};
         // Odd seeds: a blocker sphere on the feeler (kt 0 or 0.5); even: one off to the side.
         const glm::dvec3 mid = 0.5 * (c.s.point + c.s.lightPos);
         const glm::dvec3 side = glm::normalize(glm::cross(l, g.unit()));
@@ -385,18 +391,19 @@ Verdict shadeCompare(const Values& in, const Values& expected, const Values& got
     const auto scene = buildScene(c);
     const double kt = coreFeeler(*scene, c.s.point, c.s.lightPos);
     const rt::CourseModel::Trace t = coreTerms(c, kt);
-    const std::string terms = trf(
-        "expected ambient %s + diffuse %s + specular %s (SH = %.3f, L·N = %.3f, n·N = %.3f)",
-        fmtVec(t.ambient).c_str(), fmtVec(t.diffuse).c_str(), fmtVec(t.specular).c_str(), t.sh,
-        t.ln, t.nn);
+    const std::string terms =
+        trf("expected ambient %s + diffuse %s + specular %s (SH = %.3f, L·N = %.3f, n·N = %.3f)",
+            fmtVec(t.ambient).c_str(), fmtVec(t.diffuse).c_str(), fmtVec(t.specular).c_str(), t.sh,
+            t.ln, t.nn);
     if (kt < 1) {
         const rt::CourseModel::Trace lit = coreTerms(c, 1.0);
         const glm::dvec3 litColour =
             rt::CourseModel::add(rt::CourseModel::add(lit.ambient, lit.diffuse), lit.specular);
         if (glm::length(b - litColour) < 1.5)
-            return Verdict::fail(trf("lit as if nothing were in the way: the shadow feeler meets "
-                                     "a blocker (kt = %.2g), multiply SH by what feeler() returns; %s",
-                                     kt, terms.c_str()));
+            return Verdict::fail(
+                trf("lit as if nothing were in the way: the shadow feeler meets "
+                    "a blocker (kt = %.2g), multiply SH by what feeler() returns; %s",
+                    kt, terms.c_str()));
     }
     if (glm::dot(c.s.lightPos - c.s.point, c.s.normal) <= 0)
         return Verdict::fail(trf("the light is behind the surface (L·N <= 0): no diffuse and no "
@@ -520,9 +527,8 @@ const ex::LabExercises& exercises() {
         hit.run = intersectRun;
         hit.compare = intersectCompare;
         hit.showIn = [](const Values& in) {
-            return trf("origin %s, direction %s, centre %s, r = %.6g",
-                       fmtVec(v3(in, 0)).c_str(), fmtVec(v3(in, 3)).c_str(),
-                       fmtVec(v3(in, 6)).c_str(), in.at(9));
+            return trf("origin %s, direction %s, centre %s, r = %.6g", fmtVec(v3(in, 0)).c_str(),
+                       fmtVec(v3(in, 3)).c_str(), fmtVec(v3(in, 6)).c_str(), in.at(9));
         };
         hit.showOut = [](const Values& out) {
             return out.at(0) != 0 ? trf("hit at t = %.12g", out.at(1)) : std::string(tr("miss"));
@@ -535,13 +541,14 @@ const ex::LabExercises& exercises() {
         normal.cases = normalCases;
         normal.run = [](const void* table, const Values& in) {
             Values out;
-            put(out, static_cast<const Table*>(table)->sphereNormal(v3(in, 0), v3(in, 3), in.at(6)));
+            put(out,
+                static_cast<const Table*>(table)->sphereNormal(v3(in, 0), v3(in, 3), in.at(6)));
             return out;
         };
         normal.compare = normalCompare;
         normal.showIn = [](const Values& in) {
-            return trf("P %s, C %s, r = %.6g", fmtVec(v3(in, 0)).c_str(),
-                       fmtVec(v3(in, 3)).c_str(), in.at(6));
+            return trf("P %s, C %s, r = %.6g", fmtVec(v3(in, 0)).c_str(), fmtVec(v3(in, 3)).c_str(),
+                       in.at(6));
         };
         normal.showOut = showVec;
         ex::Task shade;
@@ -593,4 +600,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab07
 
-const wb::ex::LabExercises& wbExercises_lab07() { return wb::lab07::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab07() {
+    return wb::lab07::exercises();
+}

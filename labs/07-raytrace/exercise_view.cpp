@@ -73,7 +73,8 @@ glm::dvec3 trace(const Steps& s, const glm::dvec3& o, const glm::dvec3& d, int d
         const glm::dvec3 r = s.reflect->reflectDirection(d, in.normal);
         const double len = glm::length(r);
         if (len > 0 && std::isfinite(len))
-            c = lab07::add(c, lab07::mulBy(trace(s, in.point + 1e-6 * r / len, r / len, depth + 1), b.kr));
+            c = lab07::add(
+                c, lab07::mulBy(trace(s, in.point + 1e-6 * r / len, r / len, depth + 1), b.kr));
     }
     return c;
 }
@@ -83,7 +84,8 @@ void render(const Steps& s, int w, int h, std::vector<uint8_t>& out) {
     const double half = 45; // world units across half the height, at the screen z = 0
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const glm::dvec3 p((x + 0.5 - w / 2.0) * 2 * half / h, (y + 0.5 - h / 2.0) * 2 * half / h, 0);
+            const glm::dvec3 p((x + 0.5 - w / 2.0) * 2 * half / h,
+                               (y + 0.5 - h / 2.0) * 2 * half / h, 0);
             glm::dvec3 c(0);
             try {
                 c = trace(s, kEye, glm::normalize(p - kEye), 0);
@@ -127,7 +129,8 @@ void drawExerciseTrace(const ExerciseTrace& t, int viewWidth, int viewHeight) {
     glLoadIdentity();
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_LIGHTING);
-    const float zoom = std::fmin(float(viewWidth) / float(t.width), float(viewHeight) / float(t.height));
+    const float zoom =
+        std::fmin(float(viewWidth) / float(t.width), float(viewHeight) / float(t.height));
     const float x0 = 0.5f * (float(viewWidth) - zoom * float(t.width));
     const float y0 = 0.5f * (float(viewHeight) - zoom * float(t.height));
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

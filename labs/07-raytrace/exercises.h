@@ -71,10 +71,10 @@ struct ShadeInput {
     glm::dvec3 normal{0, 0, 1}; // unit normal N at P, on the side the ray came from
     glm::dvec3 view{0, 0, -1};  // unit direction V of the ray that hit P (eye -> P)
     Material material;
-    glm::dvec3 lightPos{0.0};           // the point light
-    glm::dvec3 lightColour{255.0};      // BL, 0..255
-    glm::dvec3 ambient{255.0};          // BA, 0..255
-    double distScale = 30;              // seed 000: SH = distScale / distance to the light
+    glm::dvec3 lightPos{0.0};      // the point light
+    glm::dvec3 lightColour{255.0}; // BL, 0..255
+    glm::dvec3 ambient{255.0};     // BA, 0..255
+    double distScale = 30;         // seed 000: SH = distScale / distance to the light
 };
 // The shadow feeler: the product of kt of every object between `from` and `to`
 // (1 = nothing in between, 0 = an opaque blocker). Given by the lab (it knows the scene).

@@ -64,7 +64,8 @@ Quad rotate(Quad q, const glm::dvec3& axis, double angle, const glm::dvec3& shif
 }
 std::string showQuad(const Quad& q) {
     char b[256];
-    std::snprintf(b, sizeof b, "[(%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g)]",
+    std::snprintf(b, sizeof b,
+                  "[(%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g) (%.4g, %.4g, %.4g)]",
                   q.p[0].x, q.p[0].y, q.p[0].z, q.p[1].x, q.p[1].y, q.p[1].z, q.p[2].x, q.p[2].y,
                   q.p[2].z, q.p[3].x, q.p[3].y, q.p[3].z);
     return b;
@@ -95,13 +96,14 @@ std::vector<Case> ffCases() {
         in.insert(in.end(), {a, c});
         cs.push_back({std::move(n), in});
     };
-    add("opposed unit squares 10 apart (the exact F differs by 0.67 %)",
-        square({0, 0, 0}, 1, true), square({0, 0, 10}, 1, false), 1, 10);
+    add("opposed unit squares 10 apart (the exact F differs by 0.67 %)", square({0, 0, 0}, 1, true),
+        square({0, 0, 10}, 1, false), 1, 10);
     add("opposed squares of side 2, 20 apart", square({1, 1, 0}, 2, true),
         square({1, 1, 20}, 2, false), 2, 20);
     add("different areas: A_j = 4 A_i", square({0, 0, 0}, 1, true), square({3, 0, 8}, 2, false));
     add("perpendicular, sharing an edge (near: (15.20) is rough, but it is the formula)",
-        square({0, 0, 0}, 1, true), rotate(square({0, 0, 0}, 1, true), {1, 0, 0}, kPi / 2, {0, 0.5, 0.5}));
+        square({0, 0, 0}, 1, true),
+        rotate(square({0, 0, 0}, 1, true), {1, 0, 0}, kPi / 2, {0, 0.5, 0.5}));
     add("j behind i (cos φ_i < 0): 0", square({0, 0, 0}, 1, true), square({0, 0, -5}, 1, true));
     add("both turned away (both cosines < 0): 0", square({0, 0, 0}, 1, false),
         square({0, 0, 5}, 1, true));
@@ -111,7 +113,8 @@ std::vector<Case> ffCases() {
     for (int s = 1; s <= 8; ++s) {
         const glm::dvec3 axisI = glm::normalize(glm::dvec3(g.in(-1, 1), g.in(-1, 1), g.in(-1, 1)));
         const glm::dvec3 axisJ = glm::normalize(glm::dvec3(g.in(-1, 1), g.in(-1, 1), g.in(-1, 1)));
-        const Quad i = rotate(square({0, 0, 0}, g.in(0.2, 2), true), axisI, g.in(0, 1.2), {0, 0, 0});
+        const Quad i =
+            rotate(square({0, 0, 0}, g.in(0.2, 2), true), axisI, g.in(0, 1.2), {0, 0, 0});
         const Quad j = rotate(square({0, 0, 0}, g.in(0.2, 2), false), axisJ, g.in(0, 1.2),
                               {g.in(-3, 3), g.in(-3, 3), g.in(2, 8)});
         add("seed " + std::to_string(s), i, j);
@@ -148,8 +151,8 @@ Verdict ffCompare(const Values& in, const Values& expected, const Values& got) {
         // (a/c)² bounds that.
         const double exact = rad::parallelRectangles(a, a, c);
         if (std::fabs(f / exact - 1) > (a / c) * (a / c))
-            return Verdict::fail(trf("F = %.6g is far from the exact %.6g of two opposed squares",
-                                     f, exact));
+            return Verdict::fail(
+                trf("F = %.6g is far from the exact %.6g of two opposed squares", f, exact));
     }
     return Verdict::pass();
 }
@@ -177,7 +180,8 @@ std::vector<Case> jacobiCases() {
         const size_t un = size_t(n);
         std::vector<double> B(un), E(un), R(un), F(un * un, 0.0);
         for (int i = 0; i < n; ++i) {
-            B[size_t(i)] = g.in(0, 2), E[size_t(i)] = i == 0 ? 1.0 : (g.next() < 0.3 ? g.in(0, 1) : 0);
+            B[size_t(i)] = g.in(0, 2),
+            E[size_t(i)] = i == 0 ? 1.0 : (g.next() < 0.3 ? g.in(0, 1) : 0);
             R[size_t(i)] = g.in(0.1, 0.9);
             double row = 0;
             for (int j = 0; j < n; ++j)
@@ -252,7 +256,8 @@ Verdict jacobiCompare(const Values& in, const Values& expected, const Values& go
                 return Verdict::fail(tr("that is a Gauss-Seidel sweep (new B_j used as soon as "
                                         "computed): Jacobi takes every B_j from the old B"));
             if (ex::allNear(Values(noE.begin(), noE.end()), got, 1e-12))
-                return Verdict::fail(tr("the emission E_i is missing: B'_i = E_i + R_i Σ F_ij B_j"));
+                return Verdict::fail(
+                    tr("the emission E_i is missing: B'_i = E_i + R_i Σ F_ij B_j"));
             if (ex::allNear(Values(noR.begin(), noR.end()), got, 1e-12))
                 return Verdict::fail(tr("the reflectivity R_i is missing: only a fraction R_i of "
                                         "the arriving light leaves P_i again"));
@@ -264,8 +269,9 @@ Verdict jacobiCompare(const Values& in, const Values& expected, const Values& go
         // alone remains (1e-12).
         for (size_t i = 0; i < n; ++i)
             if (std::fabs(got[i] - j.exact[i]) > 1e-12 * std::fabs(j.exact[i]))
-                return Verdict::fail(trf("after %d sweeps B_%d = %.12g, the exact solution is %.12g",
-                                         j.sweeps, int(i + 1), got[i], j.exact[i]));
+                return Verdict::fail(
+                    trf("after %d sweeps B_%d = %.12g, the exact solution is %.12g", j.sweeps,
+                        int(i + 1), got[i], j.exact[i]));
     }
     return Verdict::pass();
 }
@@ -291,8 +297,8 @@ RaysIn unpackRays(const Values& in) {
 
 std::vector<Case> raysCases() {
     std::vector<Case> cs;
-    auto add = [&cs](std::string name, const Quad& i, const Quad& j, int k, unsigned seed,
-                     double v, const std::vector<std::array<glm::dvec3, 3>>& blockers) {
+    auto add = [&cs](std::string name, const Quad& i, const Quad& j, int k, unsigned seed, double v,
+                     const std::vector<std::array<glm::dvec3, 3>>& blockers) {
         Values in;
         putQuad(in, i);
         putQuad(in, j);
@@ -371,9 +377,10 @@ Verdict raysCompare(const Values& in, const Values& /*expected*/, const Values& 
     if (std::fabs((1 - v) - r.exactV) <= tol)
         return Verdict::fail(tr("V is the fraction of BLOCKED rays: count those visible() "
                                 "lets through"));
-    return Verdict::fail(trf("V = %.4g but %.4g of the rays get through (allowed ±%.3g): spread the "
-                             "k points evenly over each patch and pair them at random",
-                             v, r.exactV, tol));
+    return Verdict::fail(
+        trf("V = %.4g but %.4g of the rays get through (allowed ±%.3g): spread the "
+            "k points evenly over each patch and pair them at random",
+            v, r.exactV, tol));
 }
 
 } // namespace
@@ -392,7 +399,8 @@ const ex::LabExercises& exercises() {
         ff.section = "§1.15, (15.20)";
         ff.cases = ffCases;
         ff.run = [](const void* table, const Values& in) {
-            return Values{static_cast<const Table*>(table)->formFactor(getQuad(in, 0), getQuad(in, 12))};
+            return Values{
+                static_cast<const Table*>(table)->formFactor(getQuad(in, 0), getQuad(in, 12))};
         };
         ff.compare = ffCompare;
         ff.showIn = [](const Values& in) {
@@ -447,4 +455,6 @@ const ex::LabExercises& exercises() {
 
 } // namespace wb::lab08
 
-const wb::ex::LabExercises& wbExercises_lab08() { return wb::lab08::exercises(); }
+const wb::ex::LabExercises& wbExercises_lab08() {
+    return wb::lab08::exercises();
+}

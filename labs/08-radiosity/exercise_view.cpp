@@ -137,10 +137,11 @@ std::vector<std::string> radiosityExerciseLines(const ex::ExerciseMode& mode) {
     const double b1 = 1 / (1 - refl[0] * refl[1] * exact * exact), b2 = refl[1] * exact * b1;
     std::optional<std::vector<double>> bm;
     if (t) bm = mode.call("08.jacobi", [&] { return sweeps(t); });
-    out.push_back(bm && bm->size() == 2
-                      ? trf("B after 20 Jacobi sweeps: yours (%.6g, %.6g), exact (%.6g, %.6g)",
-                            (*bm)[0], (*bm)[1], b1, b2)
-                      : trf("B after 20 Jacobi sweeps: yours not done, exact (%.6g, %.6g)", b1, b2));
+    out.push_back(
+        bm && bm->size() == 2
+            ? trf("B after 20 Jacobi sweeps: yours (%.6g, %.6g), exact (%.6g, %.6g)", (*bm)[0],
+                  (*bm)[1], b1, b2)
+            : trf("B after 20 Jacobi sweeps: yours not done, exact (%.6g, %.6g)", b1, b2));
     return out;
 }
 

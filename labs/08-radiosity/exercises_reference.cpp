@@ -26,10 +26,11 @@ double formula1520(const Quad& i, const Quad& j, bool mistakes) {
     const double d = glm::length(v);
     if (!(d > 0) || !(areaI > 0) || !(areaJ > 0)) return 0;
     const double cosI = glm::dot(ai / areaI, v) / d, cosJ = -glm::dot(aj / areaJ, v) / d;
-    if ((cosI <= 0 || cosJ <= 0) && !(mistakes && WB_MUTANT(3))) return 0; // 3: back sides not tested
-    const double a = mistakes && WB_MUTANT(2) ? areaI : areaJ;           // 2: A_i for A_j
-    const double dd = mistakes && WB_MUTANT(4) ? d : d * d;               // 4: d for d²
-    const double pi = mistakes && WB_MUTANT(1) ? 1.0 : kPi;               // 1: π forgotten
+    if ((cosI <= 0 || cosJ <= 0) && !(mistakes && WB_MUTANT(3)))
+        return 0;                                              // 3: back sides not tested
+    const double a = mistakes && WB_MUTANT(2) ? areaI : areaJ; // 2: A_i for A_j
+    const double dd = mistakes && WB_MUTANT(4) ? d : d * d;    // 4: d for d²
+    const double pi = mistakes && WB_MUTANT(1) ? 1.0 : kPi;    // 1: π forgotten
     return cosI * cosJ * a / (pi * dd);
 }
 
@@ -48,8 +49,8 @@ std::vector<double> jacobiSweep(const std::vector<double>& B, const std::vector<
         double in = 0;
         for (size_t j = 0; j < n; ++j)
             in += (WB_MUTANT(11) ? F[j * n + i] : F[i * n + j]) * work[j]; // 11: F transposed
-        const double r = WB_MUTANT(14) ? 1.0 : R[i];                        // 14: R forgotten
-        out[i] = (WB_MUTANT(13) ? 0.0 : E[i]) + r * in;                     // 13: E forgotten
+        const double r = WB_MUTANT(14) ? 1.0 : R[i];                       // 14: R forgotten
+        out[i] = (WB_MUTANT(13) ? 0.0 : E[i]) + r * in;                    // 13: E forgotten
         if (WB_MUTANT(12)) work[i] = out[i];
     }
     return out;
@@ -64,8 +65,8 @@ double formFactorRays(const Quad& i, const Quad& j, int k, unsigned seed, const 
         for (int b = 0; b < m; ++b)
             for (int a = 0; a < m; ++a) {
                 const double s = (a + 0.5) / m, t = (b + 0.5) / m;
-                pts.push_back((1 - s) * (1 - t) * q.p[0] + s * (1 - t) * q.p[1] +
-                              s * t * q.p[2] + (1 - s) * t * q.p[3]);
+                pts.push_back((1 - s) * (1 - t) * q.p[0] + s * (1 - t) * q.p[1] + s * t * q.p[2] +
+                              (1 - s) * t * q.p[3]);
             }
         return pts;
     };
@@ -78,7 +79,8 @@ double formFactorRays(const Quad& i, const Quad& j, int k, unsigned seed, const 
     std::shuffle(perm.begin(), perm.end(), rng);
     int seen = 0;
     for (size_t s = 0; s < pi.size(); ++s)
-        if (WB_MUTANT(21) || visible(pi[s], pj[perm[s]]) != WB_MUTANT(22)) ++seen; // 21: ignored, 22: inverted
+        if (WB_MUTANT(21) || visible(pi[s], pj[perm[s]]) != WB_MUTANT(22))
+            ++seen; // 21: ignored, 22: inverted
     const double v = double(seen) / double(WB_MUTANT(23) ? pi.size() + 1 : pi.size()); // 23: k + 1
     return v * g;
 }
