@@ -65,6 +65,7 @@ std::string fmtVec(const glm::dvec3& p) {
     return b;
 }
 std::string showMesh(const Values& out) {
+    if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
     Mesh m;
     if (!unpackMesh(out, m)) return ex::showNumbers(out);
     return trf("%d vertices, %d triangles", int(m.positions.size()), int(m.indices.size() / 3));

@@ -272,6 +272,7 @@ const ex::LabExercises& exercises() {
                        in.at(1), in.at(2), in.at(3), in.at(4), int(in.at(5)));
         };
         ell.showOut = [](const Values& out) {
+            if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
             std::string s = trf("%d points:", int(out.size() / 3));
             for (size_t k = 0; k + 2 < out.size() && k < 12; k += 3)
                 s += trf(" (%.4g, %.4g, %.4g)", out[k], out[k + 1], out[k + 2]);

@@ -110,6 +110,7 @@ bool unpackPatches(const Values& v, std::vector<Patch>& ps) {
 }
 
 std::string showCurves(const Values& out) {
+    if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
     std::vector<Curve> cs;
     if (!unpackCurves(out, cs)) return ex::showNumbers(out);
     std::string s;
@@ -121,6 +122,7 @@ std::string showCurves(const Values& out) {
     return s;
 }
 std::string showPatches(const Values& out) {
+    if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
     std::vector<Patch> ps;
     if (!unpackPatches(out, ps)) return ex::showNumbers(out);
     std::string s;

@@ -435,6 +435,10 @@ const ex::LabExercises& exercises() {
             return trf("P_i %s, P_j %s, k = %d, seed %u, %d blocker(s)", showQuad(r.i).c_str(),
                        showQuad(r.j).c_str(), r.k, r.seed, int(r.blockers.size()));
         };
+        rays.showOut = [](const Values& out) {
+            if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
+            return trf("F = %.9g", out.at(0));
+        };
         l.tasks = {ff, jac, rays};
         l.mutants = {{1, "08.formfactor", N_("π forgotten")},
                      {2, "08.formfactor", N_("A_i instead of A_j")},
