@@ -97,7 +97,7 @@ Verdict frustumCompare(const Values& in, const Values& expected, const Values& g
                                      "top·aspect",
                                      got[1] / got[3]));
         return Verdict::fail(trf("top is %.6g times the right one: top = zNear·tan(fovy/2) with "
-                                 "fovy in degrees turned into radians (·π/180) and halved",
+                                 "fovy in degrees turned into radians (·pi/180) and halved",
                                  ratio));
     }
     // And in OpenGL: the two projection matrices read back (float: 1e-5 relative).

@@ -361,7 +361,7 @@ Verdict mapCompare(const Values& in, const Values& expected, const Values& got) 
         if (glm::length(st - variant(u, true, 1)) <= 1e-9)
             return Verdict::fail(tr("the sign of the reflection: f = u - 2n(n·u)"));
         if (glm::length(st - variant(u, false, 0)) <= 1e-9)
-            return Verdict::fail(tr("m = 2√(fx² + fy² + (fz + 1)²): the +1 is missing"));
+            return Verdict::fail(tr("m = 2sqrt(fx² + fy² + (fz + 1)²): the +1 is missing"));
         return Verdict::fail(tr("not OpenGL's sphere map: s = fx/m + ½, t = fy/m + ½"));
     }
     // Against GL's own texgen: llvmpipe computes it in float; tests/render/

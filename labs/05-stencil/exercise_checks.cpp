@@ -114,8 +114,8 @@ std::vector<Case> shadowCases() {
     add("the stairs' front side z = 1.2", {0, 0, 1, -kStairHalfDepth}, light);
     add("the back wall z = -3", {0, 0, 1, -kWallZ}, light);
     add("a light at infinity (w = 0) over the floor", {0, 1, 0, 0}, {1, 3, 0.5, 0});
-    add("the light ON the plane (π·L = 0): the shadow collapses", {0, 1, 0, -5}, light);
-    add("the light below the plane (π·L < 0)", {0, 1, 0, -6}, light);
+    add("the light ON the plane (pi·L = 0): the shadow collapses", {0, 1, 0, -5}, light);
+    add("the light below the plane (pi·L < 0)", {0, 1, 0, -6}, light);
     add("a light at infinity parallel to the plane", {0, 1, 0, 0}, {1, 0, 0.5, 0});
     Lcg g{55};
     for (int i = 1; i <= 6; ++i)
@@ -130,14 +130,14 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
     if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
     const glm::dmat4 g = unpack(got);
     if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
-        return Verdict::fail(tr("transposed: OpenGL reads m[column][row]; M[c][r] = (π·L)δ_rc - "
-                                "L_r π_c"));
+        return Verdict::fail(tr("transposed: OpenGL reads m[column][row]; M[c][r] = (pi·L)delta_rc - "
+                                "L_r pi_c"));
     bool zero = true;
     for (double v : got)
         zero = zero && v == 0;
     if (zero)
         return Verdict::fail(tr("the zero matrix is no map at all: with the light on the plane "
-                                "M = -L·πᵀ"));
+                                "M = -L·pi^T"));
     const glm::dvec4 pl(in.at(0), in.at(1), in.at(2), in.at(3)),
         l(in.at(4), in.at(5), in.at(6), in.at(7));
     if (std::fabs(glm::dot(pl, l)) > 1e-9 * glm::length(pl) * glm::length(l)) {
@@ -147,10 +147,10 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
         const glm::dvec4 q = g * glm::dvec4(p0, 1);
         if (std::fabs(q.w) > 1e-12 &&
             glm::length(glm::dvec3(q) / q.w - p0) > 1e-6 * (1 + glm::length(p0)))
-            return Verdict::fail(tr("a point of the plane moves under your matrix: the (π·L)·I "
-                                    "term, or D left out of π·L"));
+            return Verdict::fail(tr("a point of the plane moves under your matrix: the (pi·L)·I "
+                                    "term, or D left out of pi·L"));
     }
-    return Verdict::fail(tr("not M = (π·L)·I - L·πᵀ (up to a factor)"));
+    return Verdict::fail(tr("not M = (pi·L)·I - L·pi^T (up to a factor)"));
 }
 
 // ----- ⑤ ellipse: in = cx, cy, a, b, z, n -----
@@ -214,7 +214,7 @@ Verdict ellipseCompare(const Values& in, const Values& /*expected*/, const Value
     if (0.5 * area2 < areaMax * (1 - 1e-9) - 1e-12 * size * size)
         return Verdict::fail(trf("the polygon covers %.9g of the %.9g the evenly spread %d points "
                                  "cover: the points are not evenly spread in the angle, or one is "
-                                 "repeated (the step is 2π/n, not 2π/(n-1); radians, not degrees)",
+                                 "repeated (the step is 2pi/n, not 2pi/(n-1); radians, not degrees)",
                                  0.5 * area2, areaMax, n));
     return Verdict::pass();
 }
@@ -284,11 +284,11 @@ const ex::LabExercises& exercises() {
                      {3, "05.reflection", N_("sign of D")},
                      {4, "05.reflection", N_("factor 1: onto the plane, not across")},
                      {11, "05.shadow", N_("transposed")},
-                     {12, "05.shadow", N_("the (π·L)·I term left out")},
-                     {13, "05.shadow", N_("D left out of π·L")},
+                     {12, "05.shadow", N_("the (pi·L)·I term left out")},
+                     {13, "05.shadow", N_("D left out of pi·L")},
                      {21, "05.ellipse", N_("a and b swapped")},
                      {22, "05.ellipse", N_("clockwise")},
-                     {23, "05.ellipse", N_("step 2π/(n-1): the last point repeats the first")},
+                     {23, "05.ellipse", N_("step 2pi/(n-1): the last point repeats the first")},
                      {24, "05.ellipse", N_("degrees given to sin/cos")}};
         return l;
     }();

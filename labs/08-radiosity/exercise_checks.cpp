@@ -104,7 +104,7 @@ std::vector<Case> ffCases() {
     add("perpendicular, sharing an edge (near: (15.20) is rough, but it is the formula)",
         square({0, 0, 0}, 1, true),
         rotate(square({0, 0, 0}, 1, true), {1, 0, 0}, kPi / 2, {0, 0.5, 0.5}));
-    add("j behind i (cos φ_i < 0): 0", square({0, 0, 0}, 1, true), square({0, 0, -5}, 1, true));
+    add("j behind i (cos phi_i < 0): 0", square({0, 0, 0}, 1, true), square({0, 0, -5}, 1, true));
     add("both turned away (both cosines < 0): 0", square({0, 0, 0}, 1, false),
         square({0, 0, 5}, 1, true));
     add("coincident centres (d = 0): 0", square({0, 0, 0}, 1, true), square({0, 0, 0}, 1, false));
@@ -129,11 +129,11 @@ Verdict ffCompare(const Values& in, const Values& expected, const Values& got) {
     // (15.20) is a closed expression: a few roundings, 1e-12 relative to F.
     if (std::fabs(f - e) > 1e-12 * std::max(std::fabs(e), 1e-300)) {
         if (e == 0)
-            return Verdict::fail(tr("F must be 0 here: a patch that sees the other's back (cos φ "
+            return Verdict::fail(tr("F must be 0 here: a patch that sees the other's back (cos phi "
                                     "<= 0), or d = 0, exchanges no light by (15.20)"));
         const double r = f / e;
         if (std::fabs(r - kPi) < 1e-9 * kPi)
-            return Verdict::fail(tr("F is π times too large: (15.20) divides by π d²"));
+            return Verdict::fail(tr("F is pi times too large: (15.20) divides by pi d²"));
         const Quad i = getQuad(in, 0), j = getQuad(in, 12);
         const glm::dvec3 ci = 0.25 * (i.p[0] + i.p[1] + i.p[2] + i.p[3]);
         const glm::dvec3 cj = 0.25 * (j.p[0] + j.p[1] + j.p[2] + j.p[3]);
@@ -250,19 +250,19 @@ Verdict jacobiCompare(const Values& in, const Values& expected, const Values& go
         }
         if (j.sweeps == 1) {
             if (ex::allNear(Values(tr_.begin(), tr_.end()), got, 1e-12))
-                return Verdict::fail(tr("F transposed: the light arriving at P_i is Σ_j F_ij B_j "
+                return Verdict::fail(tr("F transposed: the light arriving at P_i is sum_j F_ij B_j "
                                         "(row i of F), not F_ji"));
             if (ex::allNear(Values(gs.begin(), gs.end()), got, 1e-12))
                 return Verdict::fail(tr("that is a Gauss-Seidel sweep (new B_j used as soon as "
                                         "computed): Jacobi takes every B_j from the old B"));
             if (ex::allNear(Values(noE.begin(), noE.end()), got, 1e-12))
                 return Verdict::fail(
-                    tr("the emission E_i is missing: B'_i = E_i + R_i Σ F_ij B_j"));
+                    tr("the emission E_i is missing: B'_i = E_i + R_i sum F_ij B_j"));
             if (ex::allNear(Values(noR.begin(), noR.end()), got, 1e-12))
                 return Verdict::fail(tr("the reflectivity R_i is missing: only a fraction R_i of "
                                         "the arriving light leaves P_i again"));
         }
-        return Verdict::fail(tr("B' differs from E_i + R_i Σ_j F_ij B_j"));
+        return Verdict::fail(tr("B' differs from E_i + R_i sum_j F_ij B_j"));
     }
     if (!j.exact.empty()) {
         // 200 sweeps with ρ(RF) <= 0.8·0.25: the error is below 1e-100 of B, so rounding
@@ -440,7 +440,7 @@ const ex::LabExercises& exercises() {
             return trf("F = %.9g", out.at(0));
         };
         l.tasks = {ff, jac, rays};
-        l.mutants = {{1, "08.formfactor", N_("π forgotten")},
+        l.mutants = {{1, "08.formfactor", N_("pi forgotten")},
                      {2, "08.formfactor", N_("A_i instead of A_j")},
                      {3, "08.formfactor", N_("back sides not tested (both cosines negative)")},
                      {4, "08.formfactor", N_("d instead of d²")},
