@@ -3,17 +3,17 @@
 #include "common/exercise_mode.h"
 #include "common/gl.h"
 #include "common/panel.h"
+#include "core/homogeneous.h"
 #include "core/i18n.h"
 #include "exercises.h"
-#include "core/homogeneous.h"
 
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -153,6 +153,8 @@ class AffineLab : public Lab {
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
 
     void draw(const View& view) override {
         ex_.poll(!view.headless);
@@ -239,14 +241,16 @@ class AffineLab : public Lab {
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
             if (kHaveReference) {
                 const glm::dmat3 m = affineMatrix2d(s);
-                ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:", affinePolygon().size());
+                ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:",
+                                   affinePolygon().size());
                 if (s.mode == AffineMode::ShadowPoint)
                     ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
                 matrix(glm::value_ptr(m), 3);
             }
             if (ex_.on()) {
                 const std::optional<glm::dmat3> mine = studentMatrix();
-                ImGui::TextWrapped("%s", mine ? tr("your M:") : tr("your M: none (not done or failing)"));
+                ImGui::TextWrapped("%s",
+                                   mine ? tr("your M:") : tr("your M: none (not done or failing)"));
                 if (mine) matrix(glm::value_ptr(*mine), 3);
             }
             ImGui::TextWrapped("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
@@ -340,7 +344,8 @@ class AffineLab : public Lab {
 
         // Your code (e): your matrix's image, and the reference's as a ghost over it.
         if (ex_.on()) {
-            if (const std::optional<glm::dmat3> mine = studentMatrix()) drawImage(*mine, s, true, true);
+            if (const std::optional<glm::dmat3> mine = studentMatrix())
+                drawImage(*mine, s, true, true);
             if (kHaveReference) {
                 ex::ExerciseMode::ghostBegin();
                 drawImage(affineMatrix2d(s), s, true, true);
@@ -590,7 +595,8 @@ class AffineLab : public Lab {
             m = ex_.call("01.mirror", [&] { return t->mirror(s.k, s.l); });
             break;
         case AffineMode::ShadowDirectional:
-            m = ex_.call("01.shadow-dir", [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); });
+            m = ex_.call("01.shadow-dir",
+                         [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); });
             break;
         case AffineMode::ShadowPoint:
             m = ex_.call("01.shadow-point", [&] { return t->shadowPoint(s.k, s.l, s.light); });

@@ -49,7 +49,8 @@ std::vector<Case> lineCases(unsigned seed, const char* thirdName, bool direction
     cs.push_back({"vertical line (K.x = L.x)", {2, -3, 2, 5, third.x, third.y}});
     cs.push_back({"horizontal line (K.y = L.y)", {-4, 1, 3, 1, third.x, -third.y}});
     cs.push_back({"line through the origin", {-2, -1, 4, 2, third.x, third.y}});
-    cs.push_back({"K, L far from the origin (|K| = 1e4)", {1e4, 1e4, 1e4 + 3, 1e4 - 2, 1e4 + third.x, 1e4 + third.y}});
+    cs.push_back({"K, L far from the origin (|K| = 1e4)",
+                  {1e4, 1e4, 1e4 + 3, 1e4 - 2, 1e4 + third.x, 1e4 + third.y}});
     cs.push_back({"K and L 1e-3 apart", {1, 2, 1.001, 2.0005, third.x, third.y}});
     (void)thirdName;
     return cs;
@@ -76,8 +77,9 @@ bool finite(const Values& v) {
 Verdict compareMatrix(const Values& expected, const Values& got, const char* degenerateHint) {
     if (got.size() != 9) return Verdict::fail(tr("not a 3x3 matrix"));
     if (!finite(got))
-        return Verdict::fail(degenerateHint[0] ? degenerateHint
-                                               : tr("NaN or Inf in the matrix: a division by zero?"));
+        return Verdict::fail(degenerateHint[0]
+                                 ? degenerateHint
+                                 : tr("NaN or Inf in the matrix: a division by zero?"));
     if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
     glm::dmat3 g = glm::make_mat3(got.data());
     if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
@@ -124,7 +126,8 @@ std::vector<ex::Task> tasks() {
     };
     t[0].showIn = [](const Values& in) {
         char buf[120];
-        std::snprintf(buf, sizeof buf, "K = (%.6g, %.6g), L = (%.6g, %.6g)", in[0], in[1], in[2], in[3]);
+        std::snprintf(buf, sizeof buf, "K = (%.6g, %.6g), L = (%.6g, %.6g)", in[0], in[1], in[2],
+                      in[3]);
         return std::string(buf);
     };
     t[0].showOut = showM;
@@ -141,7 +144,8 @@ std::vector<ex::Task> tasks() {
         return cs;
     };
     t[1].run = [](const void* table, const Values& in) {
-        return pack(static_cast<const Table*>(table)->shadowDirectional(at(in, 0), at(in, 2), at(in, 4)));
+        return pack(
+            static_cast<const Table*>(table)->shadowDirectional(at(in, 0), at(in, 2), at(in, 4)));
     };
     t[1].compare = [](const Values& in, const Values& e, const Values& g) {
         (void)in;

@@ -19,7 +19,7 @@ glm::dmat3 mirrorMatrix(glm::dvec2 k, glm::dvec2 l) {
     const glm::dvec3 pi = lineThroughPoints(k, l);
     const glm::dvec3 n(pi.x, pi.y, 0.0);
     double nn = pi.x * pi.x + pi.y * pi.y;
-    if (WB_MUTANT(4)) nn = std::sqrt(nn); // divided by |n|, not (n, n): n not normalised
+    if (WB_MUTANT(4)) nn = std::sqrt(nn);        // divided by |n|, not (n, n): n not normalised
     const double two = WB_MUTANT(2) ? 1.0 : 2.0; // projection onto Λ instead of the mirror
     // P' = P - 2 n (pi·P)/(n·n): M = I - 2 n piᵀ/(n·n).
     glm::dmat3 m = glm::dmat3(1.0) - (two / nn) * glm::outerProduct(n, pi);

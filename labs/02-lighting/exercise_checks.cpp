@@ -58,7 +58,8 @@ std::vector<Case> cubeCases(unsigned seed) {
 
 std::string showCubeIn(const Values& in) {
     char buf[120];
-    std::snprintf(buf, sizeof buf, "centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2], in[3]);
+    std::snprintf(buf, sizeof buf, "centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2],
+                  in[3]);
     return buf;
 }
 
@@ -82,11 +83,17 @@ Verdict compareCube(const Values& in, const Values& got, bool centreNormals) {
     if (got.size() < 2) return Verdict::fail(tr("no vertices"));
     const size_t nv = size_t(got[0]), nn = size_t(got[1]);
     if (nv != nn)
-        return Verdict::fail(trf("%zu vertices but %zu normals: give one glNormal before every glVertex", nv, nn));
+        return Verdict::fail(
+            trf("%zu vertices but %zu normals: give one glNormal before every glVertex", nv, nn));
     if (nv != 24)
-        return Verdict::fail(trf("%zu vertices: a cube of 6 quads has 24 (a face missing or one too many?)", nv));
-    auto vert = [&](size_t i) { return glm::dvec3(got[2 + 3 * i], got[3 + 3 * i], got[4 + 3 * i]); };
-    auto norm = [&](size_t i) { return glm::dvec3(got[74 + 3 * i], got[75 + 3 * i], got[76 + 3 * i]); };
+        return Verdict::fail(
+            trf("%zu vertices: a cube of 6 quads has 24 (a face missing or one too many?)", nv));
+    auto vert = [&](size_t i) {
+        return glm::dvec3(got[2 + 3 * i], got[3 + 3 * i], got[4 + 3 * i]);
+    };
+    auto norm = [&](size_t i) {
+        return glm::dvec3(got[74 + 3 * i], got[75 + 3 * i], got[76 + 3 * i]);
+    };
     const double tol = kPositionTol * std::max(1.0, glm::length(c) + h);
     bool seen[3][2] = {};
     for (size_t f = 0; f < 6; ++f) {
@@ -110,19 +117,26 @@ Verdict compareCube(const Values& in, const Values& got, bool centreNormals) {
             if (sgn[0][a] == sgn[1][a] && sgn[0][a] == sgn[2][a] && sgn[0][a] == sgn[3][a])
                 axis = a, side = sgn[0][a];
         if (axis < 0)
-            return Verdict::fail(trf("face %zu: its 4 vertices do not lie on one face of the cube", f + 1));
+            return Verdict::fail(
+                trf("face %zu: its 4 vertices do not lie on one face of the cube", f + 1));
         if (seen[axis][side > 0])
-            return Verdict::fail(trf("face %zu is the same face as an earlier one, so another face is missing", f + 1));
+            return Verdict::fail(trf(
+                "face %zu is the same face as an earlier one, so another face is missing", f + 1));
         seen[axis][side > 0] = true;
         const glm::dvec3 out = glm::dvec3(axis == 0, axis == 1, axis == 2) * double(side);
-        const glm::dvec3 p0 = vert(4 * f), p1 = vert(4 * f + 1), p2 = vert(4 * f + 2), p3 = vert(4 * f + 3);
-        // Around the face (no bow tie): opposite corners p0, p2 and p1, p3 differ in both in-face coordinates.
+        const glm::dvec3 p0 = vert(4 * f), p1 = vert(4 * f + 1), p2 = vert(4 * f + 2),
+                         p3 = vert(4 * f + 3);
+        // Around the face (no bow tie): opposite corners p0, p2 and p1, p3 differ in both in-face
+        // coordinates.
         if (glm::length(glm::cross(p2 - p0, p3 - p1)) < h * h)
-            return Verdict::fail(trf("face %zu: the corners are not in order around the face (the quad crosses itself)", f + 1));
+            return Verdict::fail(trf(
+                "face %zu: the corners are not in order around the face (the quad crosses itself)",
+                f + 1));
         if (glm::dot(glm::cross(p1 - p0, p2 - p0), out) <= 0)
-            return Verdict::fail(trf("face %zu %s is wound clockwise seen from outside: with "
-                                     "glFrontFace(GL_CCW) it faces inwards (culled or lit from behind)",
-                                     f + 1, vec(out).c_str()));
+            return Verdict::fail(
+                trf("face %zu %s is wound clockwise seen from outside: with "
+                    "glFrontFace(GL_CCW) it faces inwards (culled or lit from behind)",
+                    f + 1, vec(out).c_str()));
         for (size_t k = 0; k < 4; ++k) {
             const glm::dvec3 p = vert(4 * f + k), n = norm(4 * f + k);
             const double len = glm::length(n);
@@ -130,22 +144,33 @@ Verdict compareCube(const Values& in, const Values& got, bool centreNormals) {
             const glm::dvec3 want = centreNormals ? radial : out;
             const std::string where = trf("face %zu, vertex %zu %s: normal %s", f + 1, k + 1,
                                           vec(p).c_str(), vec(n).c_str());
-            if (!std::isfinite(len) || len == 0) return Verdict::fail(where + ": " + tr("zero or NaN"));
+            if (!std::isfinite(len) || len == 0)
+                return Verdict::fail(where + ": " + tr("zero or NaN"));
             const glm::dvec3 u = n / len;
             if (glm::dot(u, want) < 1 - kNormalTol) {
                 if (glm::dot(u, want) < -1 + kNormalTol)
                     return Verdict::fail(where + ": " + tr("points inwards (the sign is wrong)"));
                 if (!centreNormals && glm::dot(u, radial) > 1 - kNormalTol)
-                    return Verdict::fail(where + ": " + tr("that is the centre normal; this cube's normals are perpendicular to the faces"));
+                    return Verdict::fail(where + ": " +
+                                         tr("that is the centre normal; this cube's normals are "
+                                            "perpendicular to the faces"));
                 if (centreNormals && glm::dot(u, out) > 1 - kNormalTol)
-                    return Verdict::fail(where + ": " + tr("that is the face normal; this cube's normals point from the centre through the vertex"));
+                    return Verdict::fail(where + ": " +
+                                         tr("that is the face normal; this cube's normals point "
+                                            "from the centre through the vertex"));
                 if (centreNormals && glm::dot(u, glm::normalize(p)) > 1 - kNormalTol)
-                    return Verdict::fail(where + ": " + tr("points from the origin, not from the cube's centre"));
-                return Verdict::fail(where + ": " + (centreNormals ? tr("not along centre -> vertex")
-                                                                   : tr("not perpendicular to the face (x, y, z mixed up?)")));
+                    return Verdict::fail(where + ": " +
+                                         tr("points from the origin, not from the cube's centre"));
+                return Verdict::fail(
+                    where + ": " +
+                    (centreNormals ? tr("not along centre -> vertex")
+                                   : tr("not perpendicular to the face (x, y, z mixed up?)")));
             }
             if (std::abs(len - 1) > kNormalTol)
-                return Verdict::fail(where + ": " + trf("|n| = %.6g, not 1: normalise it (OpenGL lights with the normal as given)", len));
+                return Verdict::fail(
+                    where + ": " +
+                    trf("|n| = %.6g, not 1: normalise it (OpenGL lights with the normal as given)",
+                        len));
         }
     }
     return Verdict::pass();
@@ -158,7 +183,8 @@ Case gridCase(std::string name, glm::dvec3 centre, double half, const glm::dmat3
     std::array<glm::dvec3, 4> corner;
     const glm::dvec2 uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     for (int k = 0; k < 4; ++k)
-        corner[size_t(k)] = centre + rot * glm::dvec3(half * (2 * uv[k].x - 1), half * (2 * uv[k].y - 1), 0);
+        corner[size_t(k)] =
+            centre + rot * glm::dvec3(half * (2 * uv[k].x - 1), half * (2 * uv[k].y - 1), 0);
     Values in;
     for (const glm::dvec3& p : corner)
         in.insert(in.end(), {p.x, p.y, p.z});
@@ -182,19 +208,24 @@ std::vector<Case> gridCases() {
     cs.push_back(gridCase("centre of the face", {0, 0, 1}, 1, id, centreN, 0.5, 0.5));
     cs.push_back(gridCase("on the edge AB (v = 0, u = 0.25)", {0, 0, 1}, 1, id, centreN, 0.25, 0));
     cs.push_back(gridCase("on the edge AD (u = 0, v = 0.75)", {0, 0, 1}, 1, id, centreN, 0, 0.75));
-    cs.push_back(gridCase("grid point (1/8, 5/8) of an 8x8 grid", {0, 0, 1}, 1, id, centreN, 0.125, 0.625));
+    cs.push_back(
+        gridCase("grid point (1/8, 5/8) of an 8x8 grid", {0, 0, 1}, 1, id, centreN, 0.125, 0.625));
     std::mt19937 gen(505);
-    std::uniform_real_distribution<double> uc(-5, 5), uh(0.1, 3), ua(-3.14159, 3.14159), tilt(-0.6, 0.6);
+    std::uniform_real_distribution<double> uc(-5, 5), uh(0.1, 3), ua(-3.14159, 3.14159),
+        tilt(-0.6, 0.6);
     std::uniform_int_distribution<int> grid(0, 8);
     for (int i = 0; i < 16; ++i) {
-        const glm::dmat3 rot = glm::dmat3(glm::rotate(glm::dmat4(1.0), ua(gen), glm::normalize(glm::dvec3(uc(gen), uc(gen), uc(gen)) + glm::dvec3(0, 0, 1e-3))));
+        const glm::dmat3 rot = glm::dmat3(glm::rotate(
+            glm::dmat4(1.0), ua(gen),
+            glm::normalize(glm::dvec3(uc(gen), uc(gen), uc(gen)) + glm::dvec3(0, 0, 1e-3))));
         std::array<glm::dvec3, 4> n;
         for (glm::dvec3& x : n)
             x = glm::dvec3(tilt(gen), tilt(gen), 1.0); // within ~40 degrees of the face normal
-        cs.push_back(gridCase("seed " + std::to_string(i + 1), {uc(gen), uc(gen), uc(gen)}, uh(gen), rot, n,
-                              grid(gen) / 8.0, grid(gen) / 8.0));
+        cs.push_back(gridCase("seed " + std::to_string(i + 1), {uc(gen), uc(gen), uc(gen)}, uh(gen),
+                              rot, n, grid(gen) / 8.0, grid(gen) / 8.0));
     }
-    cs.push_back(gridCase("tiny face (half 1e-3) at 1e2", {100, 50, -70}, 1e-3, id, centreN, 0.375, 0.875));
+    cs.push_back(
+        gridCase("tiny face (half 1e-3) at 1e2", {100, 50, -70}, 1e-3, id, centreN, 0.375, 0.875));
     return cs;
 }
 
@@ -212,7 +243,9 @@ std::vector<ex::Task> tasks() {
     t[0].run = [](const void* table, const Values& in) {
         return packCube(static_cast<const Table*>(table)->faceNormals(at(in, 0), in[3]));
     };
-    t[0].compare = [](const Values& in, const Values&, const Values& g) { return compareCube(in, g, false); };
+    t[0].compare = [](const Values& in, const Values&, const Values& g) {
+        return compareCube(in, g, false);
+    };
     t[0].showIn = showCubeIn;
     t[0].showOut = showCubeOut;
     t[0].needsExpected = false; // judged against the cube itself
@@ -225,7 +258,9 @@ std::vector<ex::Task> tasks() {
     t[1].run = [](const void* table, const Values& in) {
         return packCube(static_cast<const Table*>(table)->centreNormals(at(in, 0), in[3]));
     };
-    t[1].compare = [](const Values& in, const Values&, const Values& g) { return compareCube(in, g, true); };
+    t[1].compare = [](const Values& in, const Values&, const Values& g) {
+        return compareCube(in, g, true);
+    };
 
     t[2].id = "02.grid-normal";
     t[2].grade = 5;
@@ -248,12 +283,15 @@ std::vector<ex::Task> tasks() {
         if (!std::isfinite(len) || len == 0) return Verdict::fail(tr("zero or NaN normal"));
         if (ex::allNear(e, g, kNormalTol)) return Verdict::pass();
         if (ex::equalUpToPositiveFactor(e, g, kNormalTol))
-            return Verdict::fail(trf("the direction is right but |n| = %.6g: divide by |a nA + b nB + c nC + d nD|", len));
+            return Verdict::fail(
+                trf("the direction is right but |n| = %.6g: divide by |a nA + b nB + c nC + d nD|",
+                    len));
         glm::dvec3 avg(0.0);
         for (size_t k = 0; k < 4; ++k)
             avg += at(in, 12 + 3 * k);
         if (glm::dot(n / len, glm::normalize(avg)) > 1 - kNormalTol)
-            return Verdict::fail(tr("that is the plain average of the four normals: the weights a, b, c, d depend on where P is"));
+            return Verdict::fail(tr("that is the plain average of the four normals: the weights a, "
+                                    "b, c, d depend on where P is"));
         return Verdict::fail(tr("a different blend: check which weight goes with which corner "
                                 "(at P = A the result must be nA, at P = B nB, ...)"));
     };

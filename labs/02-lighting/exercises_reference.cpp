@@ -34,7 +34,7 @@ Cube cube(glm::dvec3 centre, double half, bool centreNormals) {
             if (WB_MUTANT(34) && !centreNormals) n = {u.n.y, u.n.x, u.n.z}; // x, y mixed up
             if (centreNormals) {
                 n = WB_MUTANT(44) ? u.n : glm::normalize(u.c[i]);
-                if (WB_MUTANT(41)) n = half * u.c[i];                      // not normalised
+                if (WB_MUTANT(41)) n = half * u.c[i];                          // not normalised
                 if (WB_MUTANT(42)) n = glm::normalize(centre + half * u.c[i]); // from the origin
             }
             if (WB_MUTANT(31) && !centreNormals) n = -n; // inward
@@ -63,7 +63,7 @@ glm::dvec3 gridNormal(const std::array<glm::dvec3, 4>& corners,
     double v = glm::dot(p - corners[0], e2) / glm::dot(e2, e2);
     if (WB_MUTANT(52)) std::swap(u, v);
     double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
-    if (WB_MUTANT(53)) w[0] = w[1] = w[2] = w[3] = 0.25; // no weights: the plain average
+    if (WB_MUTANT(53)) w[0] = w[1] = w[2] = w[3] = 0.25;        // no weights: the plain average
     if (WB_MUTANT(54)) w[0] = 1 - u, w[1] = u, w[2] = w[3] = 0; // u only, the edge AB
     glm::dvec3 n(0.0);
     for (int k = 0; k < 4; ++k)

@@ -260,6 +260,8 @@ class LightingLab : public Lab {
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     void init() override {
         // init() runs once per context (headless renders make a new one each time).
         program_ = loadProgram("shaders/phong.vert", "shaders/phong.frag", programError_);
@@ -289,12 +291,14 @@ void LightingLab::drawYourCube(bool centreNormals, int n) {
     const char* task = centreNormals ? "02.cube-centre" : "02.cube-face";
     auto make = [&](const lab02::Table* table) -> std::optional<lab02::Cube> {
         if (!table) return std::nullopt;
-        lab02::Cube c = centreNormals ? table->centreNormals({0, 0, 0}, 1) : table->faceNormals({0, 0, 0}, 1);
-        if (c.vertices.size() != c.normals.size() || c.vertices.size() % 4 != 0) return std::nullopt;
+        lab02::Cube c =
+            centreNormals ? table->centreNormals({0, 0, 0}, 1) : table->faceNormals({0, 0, 0}, 1);
+        if (c.vertices.size() != c.normals.size() || c.vertices.size() % 4 != 0)
+            return std::nullopt;
         return c;
     };
-    const std::optional<lab02::Cube> mine = t ? ex_.call(task, [&] { return make(t); }).value_or(std::nullopt)
-                                              : std::nullopt;
+    const std::optional<lab02::Cube> mine =
+        t ? ex_.call(task, [&] { return make(t); }).value_or(std::nullopt) : std::nullopt;
     std::vector<glm::dvec3> hairs; // pairs: point, normal
     if (mine) {
         for (size_t f = 0; f + 3 < mine->vertices.size(); f += 4) {
@@ -313,7 +317,8 @@ void LightingLab::drawYourCube(bool centreNormals, int n) {
                 }
                 if (n > 1) {
                     // Your grid normal (task 5) when it can be called, else the lab's own blend.
-                    const auto g = ex_.call("02.grid-normal", [&] { return t->gridNormal(c, cn, p); });
+                    const auto g =
+                        ex_.call("02.grid-normal", [&] { return t->gridNormal(c, cn, p); });
                     nn = g ? *g : glm::normalize(nn);
                 }
                 glNormal3d(nn.x, nn.y, nn.z);

@@ -44,15 +44,16 @@ struct NotDone {};
 
 } // namespace wb::ex
 
-#define WB_NOT_DONE() throw ::wb::ex::NotDone {}
+#define WB_NOT_DONE()                                                                              \
+    throw ::wb::ex::NotDone {}
 
 #if defined(WB_EXERCISE_MUTANTS)
 // Only in the CI's mutant build of exercises_reference.cpp: the mutant wb-check switched on.
 inline int wbExerciseMutant = 0;
 #define WB_MUTANT(n) (wbExerciseMutant == (n))
-#define WB_EXERCISE_MUTANT_SETTER                                                              \
-    extern "C" __attribute__((visibility("default"))) void wb_exercise_set_mutant(int n) {    \
-        wbExerciseMutant = n;                                                                  \
+#define WB_EXERCISE_MUTANT_SETTER                                                                  \
+    extern "C" __attribute__((visibility("default"))) void wb_exercise_set_mutant(int n) {         \
+        wbExerciseMutant = n;                                                                      \
     }
 #else
 #define WB_MUTANT(n) false
@@ -62,22 +63,22 @@ inline int wbExerciseMutant = 0;
 #if defined(WB_EXERCISE_MODULE)
 // The shared object's two entry points (found with dlsym; the rest is hidden by
 // -fvisibility=hidden, so a reloaded object never binds to the lab's own copies).
-#define WB_EXERCISE_TABLE(Type, lab, ...)                                                      \
-    extern "C" __attribute__((visibility("default"))) const void* wb_exercise_table() {       \
-        static const Type table = __VA_ARGS__;                                                 \
-        return &table;                                                                         \
-    }                                                                                          \
-    extern "C" __attribute__((visibility("default"))) int wb_exercise_abi() {                  \
-        return WB_EXERCISE_ABI;                                                                \
-    }                                                                                          \
+#define WB_EXERCISE_TABLE(Type, lab, ...)                                                          \
+    extern "C" __attribute__((visibility("default"))) const void* wb_exercise_table() {            \
+        static const Type table = __VA_ARGS__;                                                     \
+        return &table;                                                                             \
+    }                                                                                              \
+    extern "C" __attribute__((visibility("default"))) int wb_exercise_abi() {                      \
+        return WB_EXERCISE_ABI;                                                                    \
+    }                                                                                              \
     WB_EXERCISE_MUTANT_SETTER
 #else
 // Linked into the lab and into wb-check: the reference table, reached as
 // wbExerciseReference_labNN() (nullptr in a handout, where the answers are not shipped).
-#define WB_EXERCISE_TABLE(Type, lab, ...)                                                      \
-    const void* wbExerciseReference_##lab();                                                   \
-    const void* wbExerciseReference_##lab() {                                                  \
-        static const Type table = __VA_ARGS__;                                                 \
-        return &table;                                                                         \
+#define WB_EXERCISE_TABLE(Type, lab, ...)                                                          \
+    const void* wbExerciseReference_##lab();                                                       \
+    const void* wbExerciseReference_##lab() {                                                      \
+        static const Type table = __VA_ARGS__;                                                     \
+        return &table;                                                                             \
     }
 #endif

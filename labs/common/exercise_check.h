@@ -46,10 +46,10 @@ struct Verdict {
 };
 
 struct Task {
-    std::string id;            // unique in the course, "01.mirror": --task, mutants, recordings
-    int grade = 3;             // 3, 4 or 5
-    const char* title = "";    // N_("Mirror image in the line KL"); shown through tr()
-    const char* section = "";  // where the course asks it: "§2.1 task 1; (1.10)"
+    std::string id;           // unique in the course, "01.mirror": --task, mutants, recordings
+    int grade = 3;            // 3, 4 or 5
+    const char* title = "";   // N_("Mirror image in the line KL"); shown through tr()
+    const char* section = ""; // where the course asks it: "§2.1 task 1; (1.10)"
     std::function<std::vector<Case>()> cases;
     std::function<Values(const void* table, const Values& in)> run;
     std::function<Verdict(const Values& in, const Values& expected, const Values& got)> compare;
@@ -65,15 +65,15 @@ struct Task {
 // A typical mistake planted in exercises_reference.cpp behind WB_MUTANT(id): CI checks that
 // it makes `task` fail with a message naming a case.
 struct Mutant {
-    int id = 0;              // the n of WB_MUTANT(n), unique in the lab
-    std::string task;        // Task::id it must make fail
-    const char* what = "";   // "transposed matrix"
+    int id = 0;            // the n of WB_MUTANT(n), unique in the lab
+    std::string task;      // Task::id it must make fail
+    const char* what = ""; // "transposed matrix"
 };
 
 struct LabExercises {
-    std::string lab;          // "01"
-    const char* title = "";   // N_("Lab 01 - affine maps")
-    std::string file;         // the student's file, relative to the repository root
+    std::string lab;                 // "01"
+    const char* title = "";          // N_("Lab 01 - affine maps")
+    std::string file;                // the student's file, relative to the repository root
     const void* reference = nullptr; // wbExerciseReference_labNN(); nullptr in a handout
     std::vector<Task> tasks;
     std::vector<Mutant> mutants;
@@ -86,7 +86,8 @@ struct TaskResult {
     std::string id;
     Status status = Status::NotDone;
     // For Fails: the first failing case.
-    std::string caseName, input, expected, got, why; // why: the Verdict's sentence, a signal, "timeout"
+    std::string caseName, input, expected, got,
+        why; // why: the Verdict's sentence, a signal, "timeout"
     int casesRun = 0;
 };
 

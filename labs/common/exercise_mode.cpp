@@ -29,7 +29,7 @@ using Clock = std::chrono::steady_clock;
 
 // Seconds since the epoch of a file's last change with nanoseconds, 0 when missing.
 double modifiedTime(const std::string& path) {
-    struct stat st{};
+    struct stat st {};
     if (::stat(path.c_str(), &st) != 0) return 0;
     return double(st.st_mtim.tv_sec) + 1e-9 * double(st.st_mtim.tv_nsec);
 }
@@ -49,7 +49,8 @@ pid_t spawn(const std::vector<std::string>& argv, int& outFd, const std::string&
         } else {
             dup2(fds[1], 2);
         }
-        setenv("LC_ALL", "C", 1); // plain ASCII quotes in the compiler's messages (the panel's font)
+        setenv("LC_ALL", "C",
+               1); // plain ASCII quotes in the compiler's messages (the panel's font)
         std::vector<char*> args;
         for (const std::string& a : argv)
             args.push_back(const_cast<char*>(a.c_str()));
@@ -86,6 +87,7 @@ struct ExerciseMode::Impl {
     bool on = false;
     bool started = false;
     bool watch = true;
+    bool shellPolls = false; // the window polls on a timer (it asked pollMs()): no redraws to watch
     std::string source, compileScript, checker, liveDir, builtObject;
     double sourceTime = 0; // mtime of the source the current object was built from
     Step step = Step::Idle;
@@ -95,7 +97,7 @@ struct ExerciseMode::Impl {
     Clock::time_point lastPoll{}, changeSeen{}, stepStart{};
     double lastCompileS = 0, lastCheckS = 0, lastTotalS = 0;
     int generation = 0;
-    int reloads = 0; // changes of the file seen while running
+    int reloads = 0;                                     // changes of the file seen while running
     std::vector<std::unique_ptr<StudentObject>> objects; // kept loaded: pointers stay valid
     const StudentObject* current = nullptr;
     std::string compileError, loadError;
@@ -123,7 +125,8 @@ struct ExerciseMode::Impl {
 
     void startCompile() {
         ++generation;
-        object = liveDir + "/lab-" + std::to_string(getpid()) + "-" + std::to_string(generation) + ".so";
+        object =
+            liveDir + "/lab-" + std::to_string(getpid()) + "-" + std::to_string(generation) + ".so";
         errLog = object + ".log";
         fd = -1;
         output.clear();
@@ -194,7 +197,7 @@ void ExerciseMode::setOn(bool value) {
 
 bool ExerciseMode::busy() const {
     // While on: the file is watched (poll() from draw), so the window keeps drawing.
-    return (impl_->on && impl_->watch) || impl_->step != Impl::Step::Idle;
+    return (impl_->on && impl_->watch && !impl_->shellPolls) || impl_->step != Impl::Step::Idle;
 }
 
 bool ExerciseMode::poll(bool watch) {
@@ -251,7 +254,8 @@ bool ExerciseMode::poll(bool watch) {
                 }
             } else if (m.step == Impl::Step::Checking) {
                 m.lastCheckS = took;
-                // From the file's save (its mtime, wall clock) to the results: what the student waits.
+                // From the file's save (its mtime, wall clock) to the results: what the student
+                // waits.
                 const double wall = std::chrono::duration<double>(
                                         std::chrono::system_clock::now().time_since_epoch())
                                         .count();
@@ -285,6 +289,15 @@ bool ExerciseMode::poll(bool watch) {
         }
     }
     return changed;
+}
+
+int ExerciseMode::pollMs() const {
+    impl_->shellPolls = true; // the window asks this before busy(), and then polls
+    return impl_->on ? 500 : 0;
+}
+
+bool ExerciseMode::shellPoll() {
+    return poll(impl_->watch);
 }
 
 const void* ExerciseMode::studentRaw() const {
@@ -324,13 +337,16 @@ void ExerciseMode::gui() {
     Impl& m = *impl_;
     if (!ImGui::CollapsingHeader(tr("Exercises"), ImGuiTreeNodeFlags_DefaultOpen)) return;
     bool onNow = m.on;
-    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow)) setOn(onNow);
+    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow))
+        setOn(onNow);
     ImGui::TextWrapped("%s", trf("your file: %s", lab_.file.c_str()).c_str());
     if (!m.started) {
-        ImGui::TextWrapped("%s", trf("Press %c to draw your answers and check them.", key_).c_str());
+        ImGui::TextWrapped("%s",
+                           trf("Press %c to draw your answers and check them.", key_).c_str());
         return;
     }
-    const ImVec4 red(0.85f, 0.1f, 0.1f, 1), green(0.1f, 0.55f, 0.1f, 1), grey(0.45f, 0.45f, 0.45f, 1);
+    const ImVec4 red(0.85f, 0.1f, 0.1f, 1), green(0.1f, 0.55f, 0.1f, 1),
+        grey(0.45f, 0.45f, 0.45f, 1);
     if (m.step == Impl::Step::Compiling)
         ImGui::TextWrapped("%s", tr("compiling your file..."));
     else if (m.step == Impl::Step::Checking)
@@ -359,10 +375,11 @@ void ExerciseMode::gui() {
         shown.id = t.id;
         if (r) shown = *r;
         all.push_back(shown);
-        const char* state = !r ? tr("not checked") : r->status == Status::Passes ? tr("passes")
-                                                   : r->status == Status::Fails   ? tr("FAILS")
-                                                                                  : tr("not done");
-        ImGui::PushStyleColor(ImGuiCol_Text, !r ? grey
+        const char* state = !r                            ? tr("not checked")
+                            : r->status == Status::Passes ? tr("passes")
+                            : r->status == Status::Fails  ? tr("FAILS")
+                                                          : tr("not done");
+        ImGui::PushStyleColor(ImGuiCol_Text, !r                            ? grey
                                              : r->status == Status::Passes ? green
                                              : r->status == Status::Fails  ? red
                                                                            : grey);

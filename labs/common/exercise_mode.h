@@ -35,15 +35,19 @@ class ExerciseMode {
     ExerciseMode(const ExerciseMode&) = delete;
     ExerciseMode& operator=(const ExerciseMode&) = delete;
 
-    bool key(int key);     // the mode's key: toggle; true when used
+    bool key(int key);       // the mode's key: toggle; true when used
     KeyHelp keyHelp() const; // the line for the lab's keys()
-    bool on() const;       // drawing your code (false: the reference, as the lab always did)
+    bool on() const;         // drawing your code (false: the reference, as the lab always did)
     void setOn(bool on);
     // File watch, compile and check progress; true when something changed. `watch`: keep
     // watching the file (false in headless renders, which must come to an end).
     bool poll(bool watch = true);
-    bool busy() const;     // compiling or checking, or on and watching
-    void gui();            // the panel section
+    bool busy() const; // compiling or checking, or on and watching (see pollMs)
+    // For the lab's Lab::pollMs() / poll(): the window then watches the file every 0.5 s
+    // without redrawing (busy() stops counting the watch once the shell polls).
+    int pollMs() const;
+    bool shellPoll();
+    void gui();        // the panel section
 
     // The student's table (Table of the lab's exercises.h), nullptr when none is loaded.
     template <class Table> const Table* studentTable() const {
@@ -54,8 +58,8 @@ class ExerciseMode {
     }
     // f() calls the student's function for drawing; nullopt when the task's check said not
     // done / crashed / timed out, or f throws (NotDone or anything else).
-    template <class F> auto call(const std::string& taskId, F&& f) const
-        -> std::optional<decltype(f())> {
+    template <class F>
+    auto call(const std::string& taskId, F&& f) const -> std::optional<decltype(f())> {
         if (!callable(taskId)) return std::nullopt;
         try {
             return f();

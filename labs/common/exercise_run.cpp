@@ -122,7 +122,9 @@ TaskResult runCases(const LabExercises& lab, const Task& task, const void* stude
             const auto t = opt.expected->find(task.id);
             const bool found = t != opt.expected->end() && t->second.count(c.name);
             if (!found)
-                return fail(c, {}, "-", "no expected output recorded for this case (the handout is older than the check)");
+                return fail(c, {}, "-",
+                            "no expected output recorded for this case (the handout is older than "
+                            "the check)");
             exp = t->second.at(c.name);
         } else {
             exp = task.run(lab.reference, c.in);
@@ -238,9 +240,10 @@ TaskResult runTask(const LabExercises& lab, const Task& task, const void* studen
     }
     if (timedOut) {
         char buf[120];
-        std::snprintf(buf, sizeof buf,
-                      "no answer within %.0f s: an endless loop (a loop whose condition never changes?)",
-                      task.timeLimitSeconds);
+        std::snprintf(
+            buf, sizeof buf,
+            "no answer within %.0f s: an endless loop (a loop whose condition never changes?)",
+            task.timeLimitSeconds);
         r.why = buf;
     } else if (WIFSIGNALED(status)) {
         const int sig = WTERMSIG(status);
@@ -254,7 +257,9 @@ TaskResult runTask(const LabExercises& lab, const Task& task, const void* studen
 }
 
 std::string encodeResult(const TaskResult& r) {
-    const char* s = r.status == Status::Passes ? "pass" : r.status == Status::Fails ? "fail" : "notdone";
+    const char* s = r.status == Status::Passes  ? "pass"
+                    : r.status == Status::Fails ? "fail"
+                                                : "notdone";
     return escape(r.id) + "\t" + s + "\t" + std::to_string(r.casesRun) + "\t" + escape(r.caseName) +
            "\t" + escape(r.input) + "\t" + escape(r.expected) + "\t" + escape(r.got) + "\t" +
            escape(r.why);

@@ -72,6 +72,10 @@ public:
     // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
     // true and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
+    // While > 0 (e.g. the exercise mode watching its file), the window calls poll() this often
+    // when idle, and redraws only when poll() returns true; 0: never.
+    virtual int pollMs() const { return 0; }
+    virtual bool poll() { return false; }
     // Headless: true when the render must not be written (e.g. NaN pixels drawn black would
     // pass for a fine picture); the lab has said why on stderr. The shell writes no image
     // and exits 1.

@@ -39,6 +39,7 @@ struct WindowState {
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
     bool timerPending = false; // a glutTimerFunc redraw is on its way (busy lab)
+    bool pollPending = false;  // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;     // left button down outside the panel
     bool moved = false;        // the drag moved far enough to be a rotation, not a click
@@ -150,9 +151,21 @@ void busyTimer(int) {
     glutPostRedisplay();
 }
 
+void scheduleNextFrame();
+
+// Lab::pollMs(): the lab looks (e.g. at a file) without a redraw, and asks for one on change.
+void pollTimer(int) {
+    g->pollPending = false;
+    if (g->lab->poll())
+        glutPostRedisplay();
+    else
+        scheduleNextFrame();
+}
+
 // Redraw on change only: input (and the frames ImGui needs after it), a queued event, a
 // lab working in the background, --frames / --smoke runs, or "measure fps".
 void scheduleNextFrame() {
+    const int pollMs = g->lab->pollMs(); // asked first: a lab may stop counting polls as busy
     const bool continuous = g->panel.measureFps || g->opts.frames > 0 || !g->smokeKeys.empty();
     if (continuous || g->input.pending() || g->settleFrames > 0 || ImGui::GetIO().WantTextInput) {
         if (g->settleFrames > 0) --g->settleFrames;
@@ -160,6 +173,9 @@ void scheduleNextFrame() {
     } else if (g->lab->busy() && !g->timerPending) {
         g->timerPending = true;
         glutTimerFunc(kBusyRedrawMs, busyTimer, 0);
+    } else if (pollMs > 0 && !g->lab->busy() && !g->pollPending) {
+        g->pollPending = true;
+        glutTimerFunc(unsigned(pollMs), pollTimer, 0);
     }
 }
 

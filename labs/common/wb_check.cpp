@@ -36,7 +36,8 @@ void printResult(const Task& t, const TaskResult& r) {
     if (r.status == Status::Passes) std::printf("  %s", trf("%d cases", r.casesRun).c_str());
     std::printf("\n");
     if (r.status != Status::Fails) return;
-    if (!r.caseName.empty()) std::printf("      %s\n", trf("case \"%s\"", r.caseName.c_str()).c_str());
+    if (!r.caseName.empty())
+        std::printf("      %s\n", trf("case \"%s\"", r.caseName.c_str()).c_str());
     if (!r.input.empty()) std::printf("        %-9s %s\n", tr("input"), r.input.c_str());
     if (!r.expected.empty()) std::printf("        %-9s %s\n", tr("expected"), r.expected.c_str());
     if (!r.got.empty()) std::printf("        %-9s %s\n", tr("got"), r.got.c_str());
@@ -78,9 +79,10 @@ int main(int argc, char** argv) {
         } else if (a == "--ci") {
             ci = value();
         } else if (a == "-h" || a == "--help") {
-            std::printf("usage: wb-check [labNN ...] [--student NN=FILE.so] [--set student|reference]\n"
-                        "                [--expected FILE] [--record FILE] [--machine]\n"
-                        "                [--ci stubs|reference|mutants]\n");
+            std::printf(
+                "usage: wb-check [labNN ...] [--student NN=FILE.so] [--set student|reference]\n"
+                "                [--expected FILE] [--record FILE] [--machine]\n"
+                "                [--ci stubs|reference|mutants]\n");
             return 0;
         } else if (!a.empty() && a[0] != '-') {
             only.insert(labOf(a));
@@ -109,7 +111,8 @@ int main(int argc, char** argv) {
         Recording rec;
         for (const LabExercises* lab : allLabExercises()) {
             if (!lab->reference) {
-                std::fprintf(stderr, "wb-check: lab %s has no reference to record\n", lab->lab.c_str());
+                std::fprintf(stderr, "wb-check: lab %s has no reference to record\n",
+                             lab->lab.c_str());
                 return 2;
             }
             recordLab(*lab, rec);
@@ -142,7 +145,8 @@ int main(int argc, char** argv) {
             if (machine)
                 std::printf("E\t%s\n", obj.error().c_str());
             else
-                std::printf("  %s\n", trf("cannot load your code: %s", obj.error().c_str()).c_str());
+                std::printf("  %s\n",
+                            trf("cannot load your code: %s", obj.error().c_str()).c_str());
             ++failed;
             ++ciProblems;
             continue;
