@@ -332,6 +332,8 @@ class TransformsLab : public Lab {
   public:
     explicit TransformsLab(TransformsState* s) : s_(s ? s : &own_), ex_(wbExercises_lab03()) {}
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return "Lab 03 - transforms and projections"; }
     std::vector<KeyHelp> keys() const override {
         return {{"1 2 3", "glOrtho / gluPerspective / glFrustum"},
@@ -344,7 +346,7 @@ class TransformsLab : public Lab {
                 {"w", "glFrontFace(GL_CW) for the mirror"},
                 {"l", "mirrored light position"},
                 {"t", "top view onto the wall"},
-                {"e", tr("your code (labs/03-transforms/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
     void init() override { placedSeed_ = s_->seed + 1; } // forces a placement on first draw
     void draw(const View& view) override;

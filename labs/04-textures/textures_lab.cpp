@@ -89,6 +89,8 @@ class TexturesLab : public Lab {
   public:
     explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab04()) {}
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return "Lab 04 - textures"; }
     std::vector<KeyHelp> keys() const override {
         return {{"0", "overview: mirror object, textured sphere and torus"},
@@ -104,7 +106,7 @@ class TexturesLab : public Lab {
                 {"o", "mirror object: sphere / torus"},
                 {"b", "background room on/off"},
                 {"Left/Right/Up/Down", "spin the object"},
-                {"e", tr("your code (labs/04-textures/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
     std::vector<OptionHelp> options() const override {
         return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};

@@ -1,5 +1,5 @@
 #pragma once
-// Lab 05's exercise mode in the window (issue 18): with it on (key x; e is the elliptical
+// Lab 05's exercise mode in the window (issue 18): with it on (key E; e is the elliptical
 // mirror here) the lab reflects, shadows and masks with YOUR matrices and outline
 // (exercises.cpp), and draws the reference's shadow and mirror outlines over the picture
 // as a ghost. Each answer is used once its check lets it be called, else the reference's.

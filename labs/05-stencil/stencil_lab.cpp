@@ -91,8 +91,10 @@ void stencilColour(uint8_t v, uint8_t* rgb) {
 
 class StencilLab : public Lab {
   public:
-    explicit StencilLab(StencilLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab05()) {}
+    explicit StencilLab(StencilLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab05(), 'E') {}
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return "Lab 05 - stencil buffer"; }
     std::vector<KeyHelp> keys() const override {
         return {{"s", "shadow on the stairs on/off"},
@@ -103,7 +105,7 @@ class StencilLab : public Lab {
                 {"Left/Right", "move the object along x"},
                 {"Up/Down", "move the object along z"},
                 {"PageUp/PageDown", "move the object up/down"},
-                {"x", tr("your code (labs/05-stencil/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
 
     void init() override { torus_ = makeTorus(kTorusMajor, kTorusMinor, 40, 20); }
@@ -152,16 +154,13 @@ class StencilLab : public Lab {
             std::copy_n(&rows[size_t(view.height - 1 - y) * size_t(view.width)], view.width,
                         &s_->stencil[size_t(y) * size_t(view.width)]);
         if (s_->showMask) drawMask(view, rows);
-        // Your answers are in the picture (x): the reference's elliptical mirror as a ghost.
+        // Your answers are in the picture (E): the reference's elliptical mirror as a ghost.
         if (ex_.on() && s_->ellipseMirror && !s_->showMask) drawEllipseGhost(referenceEllipse());
     }
 
     bool key(int k) override {
         const double step = 0.1;
-        if (k == 'x') { // the exercise mode's usual `e` is the elliptical mirror in this lab
-            ex_.setOn(!ex_.on());
-            return true;
-        }
+        if (ex_.key(k)) return true; // E: the exercise mode's usual e is the elliptical mirror
         switch (k) {
         case 's':
             s_->shadow = !s_->shadow;
@@ -205,7 +204,6 @@ class StencilLab : public Lab {
 
     void gui() override {
         ex_.gui();
-        if (ex_.on()) ImGui::TextWrapped("%s", tr("x (not e) switches your code here: e is the elliptical mirror"));
         ImGui::Checkbox("shadow (s)", &s_->shadow);
         ImGui::Checkbox("naive shadow, no stencil (n)", &s_->naiveShadow);
         ImGui::Checkbox("rectangular mirror (r)", &s_->rectMirror);
@@ -389,7 +387,7 @@ class StencilLab : public Lab {
                 {r[0], r[3], kMirrorZ}};
     }
 
-    // The elliptical mirror: your outline under the exercise mode (x), else the lab's.
+    // The elliptical mirror: your outline under the exercise mode (E), else the lab's.
     std::vector<glm::dvec3> ellipseOutline() const {
         const double* m = kEllipseMirror;
         return exerciseEllipse(ex_, {m[0], m[1]}, m[2], m[3], kMirrorZ, 72, ellipse());
@@ -639,7 +637,7 @@ class StencilLab : public Lab {
 
     StencilLabState own_;
     StencilLabState* s_;
-    ex::ExerciseMode ex_; // x: your matrices and outline (exercises.cpp), the reference as a ghost
+    ex::ExerciseMode ex_; // E: your matrices and outline (exercises.cpp), the reference as a ghost
     Mesh torus_;
     std::vector<Receiver> receivers_;
     std::vector<Quad> stairBack_;

@@ -48,6 +48,8 @@ class BezierLab : public Lab {
   public:
     explicit BezierLab(BezierLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab06()) {}
     bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return "Lab 06 - Bezier curves and patches"; }
     std::vector<KeyHelp> keys() const override {
         return {{"1", "circle: two Bezier curves"},
@@ -61,7 +63,7 @@ class BezierLab : public Lab {
                 {"n", "normals: GL_AUTO_NORMAL / core"},
                 {"3", "Utah teapot: Newell's 32 patches"},
                 {"z", "zoom on the spot GL leaves unlit"},
-                {"e", tr("your code (labs/06-bezier/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
     void init() override {
         bezierCircleVariants(); // the fits take about a second: do them before the first frame

@@ -75,7 +75,7 @@ class RaytraceLab : public Lab {
                 {"c", "clear the ray inspector"},
                 {"t", "run the timing experiment"},
                 {"click", "inspect the ray tree of a pixel"},
-                {"e", tr("your code (labs/07-raytrace/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -246,6 +246,8 @@ class RaytraceLab : public Lab {
     // Non-finite pixels, or --inspect outside the image: no PNG, exit 1.
     bool headlessFailed() const override { return headlessFailed_; }
 
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     bool busy() const override {
         if (experiment_.active || ex_.busy()) return true;
         // One more frame after the mesh was rebuilt: the panel (drawn before the scene)

@@ -84,7 +84,7 @@ class RadiosityLab : public Lab {
                 {"]", "larger patches"},
                 {"n", "next scene"},
                 {"click", "a patch: its F row and hemicube"},
-                {"e", tr("your code (labs/08-radiosity/exercises.cpp) / the reference")}};
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -259,6 +259,8 @@ class RadiosityLab : public Lab {
     }
 
     bool busy() const override { return running() || ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
 
     void draw(const View& view) override;
     void gui() override;
