@@ -1,5 +1,9 @@
 #include "textures_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "common/gl.h"
 #include "common/gl_util.h"
 #include "common/paths.h"
@@ -16,6 +20,8 @@
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+const wb::ex::LabExercises& wbExercises_lab04();
 
 namespace wb {
 namespace {
@@ -82,7 +88,10 @@ void upload(GLuint tex, const Image& img) {
 
 class TexturesLab : public Lab {
   public:
-    explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_) {}
+    explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab04()) {}
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return "Lab 04 - textures"; }
     std::vector<KeyHelp> keys() const override {
         return {{"0", "overview: mirror object, textured sphere and torus"},
@@ -97,7 +106,8 @@ class TexturesLab : public Lab {
                 {"k", "bump mapping on/off (smooth torus, same shader)"},
                 {"o", "mirror object: sphere / torus"},
                 {"b", "background room on/off"},
-                {"Left/Right/Up/Down", "spin the object"}};
+                {"Left/Right/Up/Down", "spin the object"},
+                ex_.keyHelp()};
     }
     std::vector<OptionHelp> options() const override {
         return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};
@@ -141,6 +151,7 @@ class TexturesLab : public Lab {
     }
 
     void draw(const View& view) override {
+        ex_.poll(!view.headless);
         glViewport(0, 0, view.width, view.height);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -190,6 +201,7 @@ class TexturesLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         switch (k) {
         case '0':
             s_->scene = TextureScene::Overview;
@@ -245,6 +257,7 @@ class TexturesLab : public Lab {
     }
 
     void gui() override {
+        ex_.gui();
         int scene = int(s_->scene);
         ImGui::Text("Scene (0-5)");
         ImGui::RadioButton("all", &scene, 0);
@@ -363,7 +376,11 @@ class TexturesLab : public Lab {
         glBindTexture(GL_TEXTURE_2D, textures_[texture]);
         applyTextureParameters();
         setLight();
-        drawMesh(mesh);
+        // Your sphere / torus (e), the reference's as a ghost wireframe; else the lab's.
+        const bool mine = (&mesh == &sphere_ && drawExerciseMesh(ex_, false, 1.2, 0, 48, 24)) ||
+                          (&mesh == &torus_ && drawExerciseMesh(ex_, true, kBumpTorusMajor,
+                                                                kBumpTorusMinor, 64, 32));
+        if (!mine) drawMesh(mesh);
         glDisable(GL_LIGHTING);
     }
 
@@ -406,7 +423,16 @@ class TexturesLab : public Lab {
         glEnable(GL_TEXTURE_GEN_T);
         glDisable(GL_LIGHTING); // a perfect mirror: all its colour is the reflection
         glColor3f(1, 1, 1);
-        drawMesh(s_->mirrorTorus ? torus_ : sphere_);
+        const GlMesh& mirror = s_->mirrorTorus ? torus_ : sphere_;
+        if (exerciseSphereMapReady(ex_)) { // your (s, t) per vertex instead of GL's texgen (e)
+            glDisable(GL_TEXTURE_GEN_S);
+            glDisable(GL_TEXTURE_GEN_T);
+            drawWithExerciseSphereMap(ex_, mirror.positions.data(), mirror.normals.data(),
+                                      mirror.positions.size() / 3, mirror.indices.data(),
+                                      mirror.indices.size());
+        } else {
+            drawMesh(mirror);
+        }
         glDisable(GL_TEXTURE_GEN_S);
         glDisable(GL_TEXTURE_GEN_T);
     }
@@ -486,6 +512,7 @@ class TexturesLab : public Lab {
 
     TexturesLabState own_;
     TexturesLabState* s_;
+    ex::ExerciseMode ex_; // e: your meshes and sphere map (exercises.cpp), the reference as a ghost
     GLuint textures_[3] = {0, 0, 0};
     GLuint bumpProgram_ = 0;
     GLuint sphereMapTex_ = 0, latLongTex_ = 0;

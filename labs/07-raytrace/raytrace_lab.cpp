@@ -1,5 +1,7 @@
 #include "raytrace_lab.h"
 
+#include "exercise_view.h"
+
 #include "raster_mesh.h"
 #include "trace_job.h"
 
@@ -21,6 +23,8 @@
 #include <thread>
 
 #include <unistd.h>
+
+const wb::ex::LabExercises& wbExercises_lab07();
 
 namespace wb {
 
@@ -70,7 +74,8 @@ class RaytraceLab : public Lab {
                 {"r", "trace resolution 1, 1/2, 1/4"},
                 {"c", "clear the ray inspector"},
                 {"t", "run the timing experiment"},
-                {"click", "inspect the ray tree of a pixel"}};
+                {"click", "inspect the ray tree of a pixel"},
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -154,6 +159,7 @@ class RaytraceLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         switch (k) {
         case 'g':
             s.traced = false;
@@ -240,8 +246,10 @@ class RaytraceLab : public Lab {
     // Non-finite pixels, or --inspect outside the image: no PNG, exit 1.
     bool headlessFailed() const override { return headlessFailed_; }
 
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     bool busy() const override {
-        if (experiment_.active) return true;
+        if (experiment_.active || ex_.busy()) return true;
         // One more frame after the mesh was rebuilt: the panel (drawn before the scene)
         // then shows the new triangle count and budget note, not the old ones.
         if (meshJustBuilt_) return true;
@@ -385,6 +393,8 @@ class RaytraceLab : public Lab {
     int meshW_ = 0, meshH_ = 0;
     float meshZoom_ = 0;
     bool meshJustBuilt_ = false; // the last draw() rebuilt the mesh (see busy())
+    ex::ExerciseMode ex_{wbExercises_lab07()}; // e: seed 000's steps with your functions
+    ExerciseTrace exTrace_;                    // the last picture traced with them
     GLuint program_ = 0;
     std::string programError_;
     double rasterMs_ = 0, rasterMsSmooth_ = 0;
@@ -734,6 +744,15 @@ void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
 
 void RaytraceLab::draw(const View& view) {
     lastView_ = view;
+    ex_.poll(!view.headless);
+    if (ex_.on()) { // your intersection, normal, lighting and reflection (exercise_view.cpp)
+        glViewport(0, 0, view.width, view.height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        exTrace_ = traceExercise(ex_, 240, 180);
+        drawExerciseTrace(exTrace_, view.width, view.height);
+        return;
+    }
     if (experiment_.active) {
         stepExperiment(view);
         if (experiment_.active && view.headless) return;
@@ -1190,6 +1209,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
 } // namespace
 
 void RaytraceLab::gui() {
+    ex_.gui();
+    if (ex_.on())
+        wrapText(exTrace_.usedYours.empty()
+                     ? tr("the picture: the reference's steps (none of yours is done yet)")
+                     : trf("the picture uses your %s; the reference over it as a ghost",
+                           exTrace_.usedYours.c_str()));
     wrapText(scene_.about);
     if (ImGui::BeginCombo("scene", s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())

@@ -1,5 +1,9 @@
 #include "radiosity_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "gl_hemicube.h"
 #include "hemicube_view.h"
 #include "patch_view.h"
@@ -24,6 +28,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+
+const wb::ex::LabExercises& wbExercises_lab08();
 
 namespace wb {
 
@@ -77,7 +83,8 @@ class RadiosityLab : public Lab {
                 {"[", "smaller patches"},
                 {"]", "larger patches"},
                 {"n", "next scene"},
-                {"click", "a patch: its F row and hemicube"}};
+                {"click", "a patch: its F row and hemicube"},
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -190,6 +197,7 @@ class RadiosityLab : public Lab {
     ~RadiosityLab() override { stopRun(); }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
 #if defined(WB_HEADLESS)
         // Headless, keys are a script (--keys "r s"): a run finishes before the next key.
         finishRun();
@@ -250,7 +258,9 @@ class RadiosityLab : public Lab {
         return true;
     }
 
-    bool busy() const override { return running(); }
+    bool busy() const override { return running() || ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
 
     void draw(const View& view) override;
     void gui() override;
@@ -703,6 +713,7 @@ class RadiosityLab : public Lab {
     static constexpr size_t kMaxPatches = 40000; // [ ] and a stop here: the lab stays responsive
 
     std::unique_ptr<Model> model_;
+    ex::ExerciseMode ex_{wbExercises_lab08()}; // e: your form factors (exercises.cpp)
     PatchView view_;
     GlHemicube glHemicube_;
     bool glGeometryOk_ = false;
@@ -784,8 +795,13 @@ int RadiosityLab::pick(const View& view, int x, int y) {
 }
 
 void RadiosityLab::draw(const View& view) {
+    ex_.poll(!view.headless);
     glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (ex_.on()) { // your form factors and rays (exercise_view.cpp)
+        drawRadiosityExercise(ex_, view);
+        return;
+    }
     if (!model_) return;
     // Headless: a run started by the replayed keys is waited for (busy() until done).
     if (view.headless) {
@@ -894,6 +910,10 @@ void RadiosityLab::drawOverlay(const View& view) {
 }
 
 void RadiosityLab::gui() {
+    ex_.gui();
+    if (ex_.on())
+        for (const std::string& line : radiosityExerciseLines(ex_))
+            ImGui::TextWrapped("%s", line.c_str());
     if (!model_) {
         ImGui::TextWrapped("%s", message_.c_str());
         return;
