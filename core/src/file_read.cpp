@@ -1,7 +1,10 @@
 #include "core/file_read.h"
 
+#include "core/i18n.h"
+
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include <fcntl.h>
@@ -41,6 +44,9 @@ struct Fd {
 bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string& out,
                      std::string& error) {
     out.clear();
+    // The path as messages show it: a name from a file or a command line may hold escape
+    // sequences or newlines (issue 20 point 16).
+    const std::string shown = escapeForMessage(path, 4096);
     if (path.find('\0') != std::string::npos) {
         error = escapeForMessage(path, 200) + ": the path contains a NUL byte";
         return false;
@@ -48,30 +54,30 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     // 1. stat first: a FIFO is refused before open() could block on it.
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0) {
-        error = path + ": cannot open the file (" + std::strerror(errno) + ")";
+        error = shown + ": cannot open the file (" + std::strerror(errno) + ")";
         return false;
     }
     if (const char* why = notRegular(st)) {
-        error = path + ": " + why;
+        error = shown + ": " + why;
         return false;
     }
     // 2. O_NONBLOCK: should the path have become a FIFO since, open() returns at once.
     Fd f;
     f.fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (f.fd < 0) {
-        error = path + ": cannot open the file (" + std::strerror(errno) + ")";
+        error = shown + ": cannot open the file (" + std::strerror(errno) + ")";
         return false;
     }
     if (::fstat(f.fd, &st) != 0) {
-        error = path + ": cannot stat the file (" + std::strerror(errno) + ")";
+        error = shown + ": cannot stat the file (" + std::strerror(errno) + ")";
         return false;
     }
     if (const char* why = notRegular(st)) {
-        error = path + ": " + why;
+        error = shown + ": " + why;
         return false;
     }
     if (st.st_size < 0 || std::size_t(st.st_size) > maxBytes) {
-        error = path + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
+        error = shown + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
         return false;
     }
     // 3. Read at most maxBytes + 1: a file that grows while read is still caught. Once
@@ -85,7 +91,7 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
             const ssize_t n = ::read(f.fd, dst, cap);
             if (n >= 0) return n;
             if (errno == EINTR) continue;
-            error = path + ": read error (" + std::strerror(errno) + ")";
+            error = shown + ": read error (" + std::strerror(errno) + ")";
             out.clear();
             return -1;
         }
@@ -109,11 +115,83 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     }
     out.resize(have);
     if (have > maxBytes) {
-        error = path + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
+        error = shown + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
         out.clear();
         return false;
     }
     return true;
+}
+
+bool checkOutputFile(const std::string& path, std::string& target, std::string& error) {
+    const std::string shown = escapeForMessage(path, 4096);
+    auto fail = [&](const std::string& why) {
+        error = shown + ": " + why;
+        return false;
+    };
+    if (path.empty()) return fail(tr("empty file name"));
+    if (path.find('\0') != std::string::npos) return fail(tr("the path contains a NUL byte"));
+    target = path;
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+        // Follow the link to the file it names; realpath fails on a dangling link
+        // (ENOENT), a loop or a chain longer than the kernel's 40 (ELOOP).
+        char* real = ::realpath(path.c_str(), nullptr);
+        if (!real) {
+            if (errno == ENOENT)
+                return fail(tr("is a symbolic link to a file that does not exist (links are "
+                               "followed, not replaced: give the target's path)"));
+            if (errno == ELOOP)
+                return fail(tr("is a symbolic link that loops or passes through more than "
+                               "40 links"));
+            return fail(
+                trf("is a symbolic link that cannot be followed (%s)", std::strerror(errno)));
+        }
+        target = real;
+        std::free(real);
+    }
+    if (::stat(target.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return fail(tr("cannot write (it is a directory)"));
+        if (S_ISFIFO(st.st_mode))
+            return fail(tr("is a FIFO (named pipe), not a regular file: not written"));
+        if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode))
+            return fail(tr("is a device, not a regular file: not written"));
+        if (S_ISSOCK(st.st_mode)) return fail(tr("is a socket, not a regular file: not written"));
+        if (!S_ISREG(st.st_mode)) return fail(tr("is not a regular file: not written"));
+        return true;
+    }
+    if (errno != ENOENT) return fail(trf("cannot write (%s)", std::strerror(errno)));
+    // A new file: its directory must exist (writability is the writer's check: root
+    // writes where access() would say no, and /proc refuses even root).
+    const std::size_t slash = target.rfind('/');
+    const std::string dir = slash == std::string::npos ? "."
+                            : slash == 0               ? "/"
+                                                       : target.substr(0, slash);
+    if (::stat(dir.c_str(), &st) != 0)
+        return fail(trf("cannot write: the folder %s does not exist (%s)",
+                        escapeForMessage(dir, 4096).c_str(), std::strerror(errno)));
+    if (!S_ISDIR(st.st_mode))
+        return fail(trf("cannot write: %s is not a folder", escapeForMessage(dir, 4096).c_str()));
+    return true;
+}
+
+int firstNulLine(std::string_view text) {
+    const void* nul = std::memchr(text.data(), '\0', text.size());
+    if (!nul) return 0;
+    const std::size_t at = std::size_t(static_cast<const char*>(nul) - text.data());
+    int line = 1;
+    for (std::size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+        } else if (text[i] == '\r') {
+            if (i + 1 < at && text[i + 1] == '\n') ++i;
+            ++line;
+        }
+    }
+    return line;
+}
+
+const char* nulByteMessage() {
+    return tr("NUL byte in the line (a binary file?)");
 }
 
 std::string escapeForMessage(const std::string& bytes, std::size_t maxChars) {

@@ -63,34 +63,19 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
         &png, img.width, img.height, img.channels, img.data.data(), img.width * img.channels);
     if (!encoded || png.empty()) return fail("cannot encode PNG");
 
-    // 2. Something that is not a regular file (/dev/stdout, a pipe, /dev/full) is written
-    //    in place: a temporary file beside a device would be wrong (root can create files
-    //    in /dev) and renaming over it worse. Directories are refused.
-    std::string target = path;
+    // 2. One rule for every output (core/file_read.h, issue 20 points 1 and 11): a FIFO,
+    //    device, socket or directory is refused before anything is opened; a symlink is
+    //    followed to the file it names, a dangling or looping one refused.
+    std::string target;
+    {
+        std::string why;
+        if (!checkOutputFile(path, target, why)) {
+            if (error) *error = why;
+            return false;
+        }
+    }
     struct stat st {};
-    if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
-        // A symlink: replace the file it names, not the link.
-        char* real = ::realpath(path.c_str(), nullptr);
-        if (real) {
-            target = real;
-            std::free(real);
-        }
-    }
     const bool exists = ::stat(target.c_str(), &st) == 0;
-    if (exists && S_ISDIR(st.st_mode)) return fail("cannot write (it is a directory)");
-    if (exists && !S_ISREG(st.st_mode)) {
-        const int fd = ::open(target.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-        if (fd < 0) return fail(sysError("cannot open for writing"));
-        const bool ok = writeAll(fd, png);
-        const int savedErrno = errno;
-        const bool closed = ::close(fd) == 0;
-        if (!ok) {
-            errno = savedErrno;
-            return fail(sysError("write failed"));
-        }
-        if (!closed) return fail(sysError("write failed on close"));
-        return true;
-    }
 
     // 3. A regular file (or a new one): write a temporary file in the same directory,
     //    flush it to the disk, then rename it over the real name. A failed or short write

@@ -217,6 +217,7 @@ void fromSceneFile(LabScene& s, rt::SceneFile&& f, const std::string& about) {
     s.camera.target = f.view.at;
     s.camera.up = f.view.up;
     s.camera.fovY = f.view.angle;
+    s.camera.hither = f.view.hither; // as rt_render's SceneFile::camera()
     s.model = ModelKind::Phong;
     s.about = about;
     s.warnings = std::move(f.warnings);

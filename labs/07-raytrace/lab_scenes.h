@@ -22,6 +22,7 @@ struct CameraSpec {
     double screenPixel = 0.0;  // > 0: world size of one pixel on the screen plane through the
                                // target (seed 000: 1 at Dist = 100), so the view grows with
                                // the image instead of keeping its field of view
+    double hither = 0.0;       // NFF's near plane: nearer than this along the view is clipped
     bool pixelCorners = false; // seed 000's pixel mapping xs = xx − W/2 (a pixel's corner);
                                // false: rays through pixel centres, as GL samples them
 };

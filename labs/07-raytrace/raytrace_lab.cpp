@@ -101,9 +101,13 @@ class RaytraceLab : public Lab {
             return false;
         };
         if (name == "scene") {
+            // Read once (issue 20 point 9): the scene checked here is the one init()
+            // shows; reading the file again there could see another file (3 of 20 runs
+            // with the file being rewritten drew the built-in scene and exited 0).
             LabScene probe;
             if (!loadLabScene(value, probe, error)) return false;
             s.sceneName = value;
+            optionScene_ = std::make_unique<LabScene>(std::move(probe));
             return true;
         }
         if (name == "threads") return integer(0, cli::kMaxThreads, s.threads);
@@ -139,9 +143,13 @@ class RaytraceLab : public Lab {
 
     void init() override {
         std::string err;
-        if (!loadScene(s.sceneName, err)) {
+        if (optionScene_ && optionScene_->name == s.sceneName) {
+            installScene(std::move(*optionScene_), s.sceneName);
+            optionScene_.reset();
+        } else if (!loadScene(s.sceneName, err)) {
             std::fprintf(stderr, "lab07: %s\n", err.c_str());
             loadScene("two-spheres", err);
+            headlessFailed_ = true; // headless: the picture is not the one asked for, exit 1
         }
         if (modelOption_ == "course") s.model = ModelKind::Course;
         if (modelOption_ == "phong") s.model = ModelKind::Phong;
@@ -301,6 +309,12 @@ class RaytraceLab : public Lab {
         traceStarted_ = false; // (re)trace whatever is shown next
         LabScene next;
         if (!loadLabScene(name, next, err)) return false;
+        installScene(std::move(next), name);
+        return true;
+    }
+    void installScene(LabScene&& next, const std::string& name) {
+        job_.cancel();
+        traceStarted_ = false;
         scene_ = std::move(next);
         s.sceneName = name;
         const std::vector<std::string> warns = warningLines(scene_); // also in the panel
@@ -312,7 +326,6 @@ class RaytraceLab : public Lab {
         applyAccel();
         tree_.reset();
         traceStarted_ = false;
-        return true;
     }
 
     void applyAccel() {
@@ -385,6 +398,7 @@ class RaytraceLab : public Lab {
     std::string fileError_;
     bool bvhAvailable_ = false;
     std::string modelOption_;
+    std::unique_ptr<LabScene> optionScene_; // --scene, read by setOption, shown by init()
 
     // Raster.
     std::vector<MeshBatch> mesh_;

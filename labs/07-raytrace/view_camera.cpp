@@ -22,6 +22,7 @@ ViewCamera ViewCamera::make(const CameraSpec& spec, double yawDeg, double pitchD
     ViewCamera v;
     v.screen =
         rt::orbitScreenCamera(spec.eye, spec.target, spec.up, yawDeg, pitchDeg, pixel / zoom);
+    v.screen.hither = spec.hither;
     v.target = spec.target;
     v.dist = dist;
     v.width = width;
@@ -44,8 +45,8 @@ void ViewCamera::frustum(double zNear, double& l, double& r, double& b, double& 
 bool ViewCamera::operator==(const ViewCamera& o) const {
     return screen.eye == o.screen.eye && screen.screenCentre == o.screen.screenCentre &&
            screen.screenX == o.screen.screenX && screen.screenY == o.screen.screenY &&
-           screen.pixelSize == o.screen.pixelSize && width == o.width && height == o.height &&
-           pixelOffset == o.pixelOffset;
+           screen.pixelSize == o.screen.pixelSize && screen.hither == o.screen.hither &&
+           width == o.width && height == o.height && pixelOffset == o.pixelOffset;
 }
 
 rt::Ray PixelCamera::primaryRay(int x, int y, int width, int height) const {

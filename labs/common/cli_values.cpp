@@ -1,5 +1,7 @@
 #include "cli_values.h"
 
+#include "core/i18n.h"
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -67,14 +69,31 @@ CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threa
 }
 
 std::vector<std::string> joinValues(int argc, const char* const* argv,
-                                    const std::vector<std::string>& valueFlags) {
+                                    const std::vector<std::string>& valueFlags,
+                                    std::string& error) {
     std::vector<std::string> args;
+    auto isValueFlag = [&](const std::string& f) {
+        return std::find(valueFlags.begin(), valueFlags.end(), f) != valueFlags.end();
+    };
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (i + 1 < argc &&
-            std::find(valueFlags.begin(), valueFlags.end(), a) != valueFlags.end()) {
-            args.push_back(a + "=" + argv[++i]);
-            continue;
+        // An empty value ("--out ''" or "--out=") made CLI11 take the next flag as the
+        // value: `--out "" --size 16x16` wrote a file named "--size=16x16" (issue 20
+        // point 12). Refused here, for every front end, naming the flag.
+        const auto eq = a.find('=');
+        if (eq != std::string::npos && eq + 1 == a.size() && isValueFlag(a.substr(0, eq))) {
+            error = trf("%s: the value is empty", a.substr(0, eq).c_str());
+            return {};
+        }
+        if (isValueFlag(a)) {
+            if (i + 1 < argc && argv[i + 1][0] == '\0') {
+                error = trf("%s: the value is empty", a.c_str());
+                return {};
+            }
+            if (i + 1 < argc) {
+                args.push_back(a + "=" + argv[++i]);
+                continue;
+            }
         }
         args.push_back(a);
     }

@@ -37,8 +37,10 @@ CLI::Option* addThreadsOption(CLI::App& app, const std::string& flag, int& threa
 
 // CLI11 reads a value that starts with '-' (e.g. `--keys -+`) as the next flag; the old
 // hand-written parsers took the next argument whatever it was. Joins "--flag VALUE" into
-// "--flag=VALUE" for every flag in `valueFlags`, so values keep that meaning.
+// "--flag=VALUE" for every flag in `valueFlags`, so values keep that meaning. An empty
+// value (`--out ""`, `--out=`) sets `error` naming the flag and returns nothing: CLI11
+// would take the next flag as the value.
 std::vector<std::string> joinValues(int argc, const char* const* argv,
-                                    const std::vector<std::string>& valueFlags);
+                                    const std::vector<std::string>& valueFlags, std::string& error);
 
 } // namespace wb::cli

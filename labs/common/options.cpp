@@ -91,7 +91,9 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
         return false;
     }
 
-    const std::vector<std::string> args = cli::joinValues(argc, argv, valueFlags);
+    error.clear();
+    const std::vector<std::string> args = cli::joinValues(argc, argv, valueFlags, error);
+    if (!error.empty()) return false;
     try {
         app.parse(
             std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed

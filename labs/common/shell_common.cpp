@@ -1,12 +1,16 @@
 #include "paths.h"
 #include "shell.h"
 
+#include "core/file_read.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace wb {
 
@@ -32,19 +36,21 @@ bool shellKey(int code, View& view, bool& panelVisible) {
 }
 
 bool checkWritable(const std::string& path, std::string& error) {
+    // The rule every output follows (core/file_read.h): nothing that is not a regular
+    // file (a FIFO blocked this check forever in fopen), links followed to their file.
+    std::string target;
+    if (!checkOutputFile(path, target, error)) return false;
     struct stat st {};
-    bool existed = stat(path.c_str(), &st) == 0;
-    if (existed && S_ISDIR(st.st_mode)) {
-        error = path + ": cannot write (it is a directory)";
+    const bool existed = ::stat(target.c_str(), &st) == 0;
+    // A regular file (or a new one): opening it cannot block.
+    const int fd =
+        ::open(target.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NONBLOCK | O_CLOEXEC, 0666);
+    if (fd < 0) {
+        error = escapeForMessage(path, 4096) + ": cannot write (" + std::strerror(errno) + ")";
         return false;
     }
-    std::FILE* f = std::fopen(path.c_str(), "ab");
-    if (!f) {
-        error = path + ": cannot write (" + std::strerror(errno) + ")";
-        return false;
-    }
-    std::fclose(f);
-    if (!existed) std::remove(path.c_str());
+    ::close(fd);
+    if (!existed) ::unlink(target.c_str());
     return true;
 }
 

@@ -9,6 +9,9 @@
 #include "common/shell.h"
 #include "launcher.h"
 
+#include "core/file_read.h"
+#include "core/i18n.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -25,7 +28,28 @@ int main(int argc, char** argv) {
             outDir = argv[++i];
         } else if (!std::strcmp(argv[i], "--size") && i + 1 < argc) {
             size = argv[++i];
+        } else if (headless && !std::strcmp(argv[i], "--ui-scale") && i + 1 < argc) {
+            // Listed in the usage, so taken here too (issue 20 point 15); the thumbnails
+            // are pictures without a panel, so the scale does not change them.
+            char* end = nullptr;
+            const float scale = std::strtof(argv[i + 1], &end);
+            if (!*argv[i + 1] || *end || !(scale >= 0.5f && scale <= 4.0f)) {
+                std::fprintf(stderr, "%s: %s\n", argv[0],
+                             wb::trf("--ui-scale '%s': expected a number from 0.5 to 4",
+                                     wb::escapeForMessage(argv[i + 1]).c_str())
+                                 .c_str());
+                return 2;
+            }
+            ++i;
         } else if (headless || !std::strcmp(argv[i], "--help")) {
+            if (std::strcmp(argv[i], "--help") != 0) // say which flag, then the usage
+                std::fprintf(stderr, "%s: %s\n", argv[0],
+                             (argv[i][0] == '-'
+                                  ? wb::trf("unknown option '%s' (or it needs a value)",
+                                            wb::escapeForMessage(argv[i]).c_str())
+                                  : wb::trf("unexpected argument '%s'",
+                                            wb::escapeForMessage(argv[i]).c_str()))
+                                 .c_str());
             std::printf("usage: %s [--headless] [--out-dir DIR] [--size WxH] [--ui-scale X]\n"
                         "  with a display: opens the launcher window, 800x600 unless --size says otherwise\n"
                         "  (also takes the lab shell's flags, e.g. --ui-scale 2 for a projector)\n"

@@ -12,6 +12,8 @@
 //              the SPD's "depth 5" counting the eye ray as level 1)
 //   --spd      SPD rules: eye rays through the pixel corners ((w+1)(h+1) rays), depth 4
 //   --no-bvh   the plain loop over objects
+#include "core/file_read.h"
+#include "core/i18n.h"
 #include "core/image.h"
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/parallel_render.h"
@@ -26,9 +28,14 @@
 #include <cstdlib>
 #include <string>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
+
 namespace {
+
+constexpr int kMaxDepth = 64; // reflections per eye ray: 2^64 rays is beyond any budget anyway
 
 constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
                                "[--depth D] [--spd] [--no-bvh]\n";
@@ -49,6 +56,32 @@ void printBar(int done, int total, bool inPlace) {
     std::fflush(stderr);
 }
 
+// Empty when a width x height frame fits; otherwise the message with the figures.
+std::string memoryRefusal(int width, int height, const wb::rt::ParallelRenderOptions& opt) {
+    const double frame = double(wb::rt::renderMemoryBytes(width, height, opt)) +
+                         2.0 * 3.0 * double(width) * double(height); // PNG encoder at worst
+    // 4 GB: a plain 16384² frame (2.4 GB with the encoder) fits, the SPD corner grid at
+    // that size (8.8 GB) does not; less on a machine with under 8 GB.
+    double limit = std::min(4e9, 0.5 * double(::sysconf(_SC_PHYS_PAGES)) *
+                                     double(::sysconf(_SC_PAGESIZE)));
+    struct rlimit rl {};
+    if (::getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
+        limit = std::min(limit, 0.9 * double(rl.rlim_cur));
+    if (frame <= limit) return {};
+    const double image = 3.0 * width * double(height), png = 2.0 * image;
+    if (opt.cornerRays)
+        return wb::trf("a %dx%d render with --spd needs about %.1f GB (image %.1f GB, SPD corner "
+                       "colours %.1f GB, PNG encoding %.1f GB); the limit here is %.1f GB (at "
+                       "most 4 GB, half the machine's memory): use a smaller --size",
+                       width, height, frame / 1e9, image / 1e9,
+                       double(width + 1) * double(height + 1) * 24.0 / 1e9, png / 1e9,
+                       limit / 1e9);
+    return wb::trf("a %dx%d render needs about %.1f GB (image %.1f GB, PNG encoding %.1f GB); "
+                   "the limit here is %.1f GB (at most 4 GB, half the machine's memory): use a "
+                   "smaller --size",
+                   width, height, frame / 1e9, image / 1e9, png / 1e9, limit / 1e9);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -60,6 +93,7 @@ int main(int argc, char** argv) {
     // (labs/common/cli_values.h): WxH strictly, threads 0 (all cores) .. 1024.
     CLI::App app{"rt_render"};
     app.set_help_flag();
+    app.allow_extras(); // unknown flags, a second scene, `--`: reported below, in our words
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     std::string valueError;
     app.add_flag("-h,--help", help);
@@ -67,15 +101,42 @@ int main(int argc, char** argv) {
     app.add_option("--out", out);
     wb::cli::addSizeOption(app, "--size", 16384, width, height, valueError, "");
     wb::cli::addThreadsOption(app, "--threads", threads, valueError, "");
-    app.add_option("--depth", depth)->check(CLI::Range(0, 64));
+    // Every refused value names the flag, the value and the range (issue 20 point 15):
+    // `--depth 65` printed only the usage line.
+    app.add_option_function<std::string>("--depth", [&](const std::string& v) {
+        if (wb::cli::parseInt(v, 0, kMaxDepth, depth)) return;
+        valueError = wb::trf("--depth '%s': expected an integer from 0 to %d",
+                             wb::escapeForMessage(v).c_str(), kMaxDepth);
+        throw CLI::ValidationError("--depth", valueError);
+    });
     app.add_flag("--spd", spd);
     app.add_flag("--no-bvh", noBvh);
-    const auto args = wb::cli::joinValues(argc, argv, {"--out", "--size", "--threads", "--depth"});
+    const auto args =
+        wb::cli::joinValues(argc, argv, {"--out", "--size", "--threads", "--depth"}, valueError);
+    auto refuse = [&](const std::string& why) {
+        std::fprintf(stderr, "%s: %s\n", argv[0], why.c_str());
+        return usage(argv[0]);
+    };
+    if (!valueError.empty()) return refuse(valueError);
     try {
         app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
-    } catch (const CLI::ParseError&) {
-        if (!valueError.empty()) std::fprintf(stderr, "%s: %s\n", argv[0], valueError.c_str());
-        return usage(argv[0]);
+    } catch (const CLI::ParseError& e) {
+        if (!valueError.empty()) return refuse(valueError);
+        // The only other failure left: a value flag last on the line, e.g. `--depth`.
+        std::string what = e.what();
+        const auto colon = what.find(':');
+        return refuse(wb::trf("%s needs a value",
+                              (colon != std::string::npos ? what.substr(0, colon) : what).c_str()));
+    }
+    if (!app.remaining().empty()) {
+        const std::string arg = app.remaining().front(); // remaining() returns a copy
+        if (arg == "--")
+            return refuse(wb::tr("'--' is not an option here (one scene file, then flags)"));
+        if (arg.rfind('-', 0) == 0)
+            return refuse(wb::trf("unknown option '%s'", wb::escapeForMessage(arg).c_str()));
+        return refuse(wb::trf("one scene file only: '%s' after '%s'",
+                              wb::escapeForMessage(arg, 200).c_str(),
+                              wb::escapeForMessage(scenePath, 200).c_str()));
     }
     if (help) {
         std::printf(kUsage, argv[0]);
@@ -85,6 +146,19 @@ int main(int argc, char** argv) {
     if (scenePath.empty()) return usage(argv[0]);
     // SPD's "maximum depth 5" counts the eye ray as level 1: 4 reflections.
     if (depth < 0) depth = spd ? 4 : 5;
+    // 16384x16384 --spd ended in a bare std::bad_alloc (issue 20 point 6): the frame's
+    // memory (image, SPD corner colours, and the PNG encoder's two image-sized buffers,
+    // its filtered rows and its output at worst) is estimated from the size alone and
+    // compared with half the machine's memory (and the address-space limit, if any)
+    // before anything is loaded or allocated.
+    if (width > 0) {
+        wb::rt::ParallelRenderOptions probe;
+        probe.cornerRays = spd;
+        if (const std::string why = memoryRefusal(width, height, probe); !why.empty())
+            return refuse(why);
+    }
+    // Paths are printed escaped: a name may hold escape sequences or a newline (point 16).
+    const std::string shownPath = wb::escapeForMessage(scenePath, 4096);
     try {
         const auto t0 = std::chrono::steady_clock::now();
         wb::rt::SceneFile sf = wb::rt::loadSceneFile(scenePath);
@@ -92,7 +166,7 @@ int main(int argc, char** argv) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         // The reader's repairs (faces dropped, a missing .mtl, ...): counted, the first lines.
         if (sf.warningCount > 0) {
-            std::fprintf(stderr, "%s: %zu warning%s:\n", scenePath.c_str(), sf.warningCount,
+            std::fprintf(stderr, "%s: %zu warning%s:\n", shownPath.c_str(), sf.warningCount,
                          sf.warningCount == 1 ? "" : "s");
             for (const std::string& w : sf.warnings)
                 std::fprintf(stderr, "  %s\n", w.c_str());
@@ -105,6 +179,14 @@ int main(int argc, char** argv) {
         if (width == 0) {
             width = sf.view.width;
             height = sf.view.height;
+        }
+        {
+            wb::rt::ParallelRenderOptions probe; // the size may come from the file's `v` block
+            probe.cornerRays = spd;
+            if (const std::string why = memoryRefusal(width, height, probe); !why.empty()) {
+                std::fprintf(stderr, "%s: %s\n", argv[0], why.c_str());
+                return 1;
+            }
         }
         const wb::rt::LookAtCamera cam = sf.camera();
         wb::rt::PhongModel model;
@@ -135,7 +217,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not writing "
                          "the image\n",
-                         argv[0], scenePath.c_str(), st.nonFinitePixels);
+                         argv[0], shownPath.c_str(), st.nonFinitePixels);
             return 1;
         }
         std::string err;
@@ -144,13 +226,14 @@ int main(int argc, char** argv) {
             return 1;
         }
         const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
-        std::printf("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n", scenePath.c_str(),
+        std::printf("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n", shownPath.c_str(),
                     sf.scene->primitives.size(), loadS * 1e3,
                     bvh ? bvh->stats().buildSeconds * 1e3 : 0.0, bvh ? "" : ", plain loop");
         std::printf("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
                     "reflection+refraction %lld rays; %.2f M rays/s -> %s\n",
                     width, height, depth, st.threads, st.seconds * 1e3, st.primaryRays,
-                    st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6, out.c_str());
+                    st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6,
+                    wb::escapeForMessage(out, 4096).c_str());
     } catch (const std::exception& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return 1;

@@ -21,6 +21,7 @@ wb_test(raytrace_scale_test
     raytrace_scale/bvh_test.cpp
     raytrace_scale/bvh_wide_test.cpp
     raytrace_scale/nff_test.cpp
+    raytrace_scale/hostile_scene_test.cpp
     raytrace_scale/obj_file_test.cpp
     raytrace_scale/parallel_test.cpp
     raytrace_scale/scene_file_test.cpp

@@ -91,6 +91,10 @@ Ray ScreenCamera::rayThroughScreen(double xs, double ys, double pixel) const {
     Ray r;
     r.origin = eye;
     r.direction = glm::normalize(p - eye);
+    if (hither > 0) { // start on the hither plane (issue 20 point 14); 0 keeps every bit
+        const glm::dvec3 f = glm::normalize(screenCentre - eye);
+        r.origin = eye + (hither / glm::dot(r.direction, f)) * r.direction;
+    }
     return r;
 }
 

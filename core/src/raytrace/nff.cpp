@@ -1,6 +1,7 @@
 #include "core/raytrace/nff.h"
 
 #include "core/file_read.h"
+#include "core/i18n.h"
 
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/polygon.h"
@@ -8,10 +9,14 @@
 #include "core/raytrace/sphere.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <istream>
@@ -19,6 +24,7 @@
 #include <ostream>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 namespace wb::rt {
 
@@ -198,8 +204,21 @@ void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
         const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
         return m > 0 ? a * std::ldexp(1.0, -std::ilogb(m)) : a;
     };
+    // A vector whose largest component is subnormal (`up 0 1e-320 0`) cannot be scaled
+    // to unit size (2^1063 overflows) and was called "parallel to the view" (point 16).
+    auto tiny = [](const glm::dvec3& a) {
+        return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)}) < DBL_MIN;
+    };
+    if (v.up == glm::dvec3(0.0)) tk.fail(vLine, "bad view: up is the zero vector");
+    if (tiny(v.up))
+        tk.fail(vLine, trf("bad view: up (%s, %s, %s) is too small to give a direction "
+                           "(subnormal: below 2.2e-308)",
+                           Tokens::fmt(v.up.x).c_str(), Tokens::fmt(v.up.y).c_str(),
+                           Tokens::fmt(v.up.z).c_str()));
+    if (tiny(v.at - v.from))
+        tk.fail(vLine, tr("bad view: from and at are too close to give a direction "
+                          "(their difference is subnormal)"));
     const glm::dvec3 f = unitScale(v.at - v.from), u = unitScale(v.up);
-    if (u == glm::dvec3(0.0)) tk.fail(vLine, "bad view: up is the zero vector");
     if (!(glm::length(glm::cross(f, u)) > 1e-12 * glm::length(f) * glm::length(u)))
         tk.fail(vLine, "bad view: up is parallel to the view direction (at - from)");
     try {
@@ -230,9 +249,14 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
         else if (tok == "angle") {
             v.angle = tk.number("angle", line);
             angleLine = line;
-        } else if (tok == "hither")
+        } else if (tok == "hither") {
+            // The distance of the hither (near) plane from the eye: what is nearer is
+            // clipped (eye rays start on that plane, see LookAtCamera::hither).
             v.hither = tk.number("hither", line);
-        else {
+            if (!(v.hither >= 0 && v.hither <= kNffMaxCoordinate))
+                tk.fail(line, trf("hither %s: the near plane's distance must be 0 or more",
+                                  Tokens::fmt(v.hither).c_str()));
+        } else {
             const long long w = tk.integer("resolution width", line);
             const long long h = tk.integer("resolution height", line);
             if (w < 1 || h < 1 || w > 16384 || h > 16384)
@@ -263,7 +287,11 @@ void writeVec(std::ostream& out, const glm::dvec3& v) {
 
 NffDocument readNffText(std::string_view text, const std::string& name) {
     NffDocument doc;
-    Tokens tk(text, name);
+    // The name as messages show it (escape bytes and newlines in a path, point 16).
+    Tokens tk(text, escapeForMessage(name, 4096));
+    // A NUL byte anywhere: refused at once, with its line, by the check the OBJ reader
+    // shares. A 511 MB all-NUL file was one 511 MB token, copied, before any error.
+    if (const int nulLine = firstNulLine(text)) tk.fail(nulLine, nulByteMessage());
     std::string cmd;
     int line;
     std::size_t primitives = 0;
@@ -302,6 +330,14 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             f.shine = tk.number("f Shine", line, 0.0, 1e6, "[0, 1e6]");
             f.t = tk.number("f T", line, 0.0, 1.0, "[0, 1]");
             f.ior = tk.number("f index of refraction", line, -1e6, 1e6, "[-1e6, 1e6]");
+            // A transparent surface refracts by its index: 0 or less has no meaning (it
+            // was replaced by 1 without a word, issue 20 point 14). An opaque one (T = 0)
+            // never uses it, and the SPD generators write 0 there.
+            if (f.t > 0 && !(f.ior > 0))
+                tk.fail(tk.lastLine(),
+                        trf("index of refraction %s with T = %s: a transparent surface needs an "
+                            "index > 0 (1 = air, 1.5 = glass)",
+                            Tokens::fmt(f.ior).c_str(), Tokens::fmt(f.t).c_str()));
             doc.surfaces.push_back(f);
         } else if (cmd == "s") {
             NffObject o;
@@ -359,10 +395,12 @@ NffDocument readNff(std::istream& in, const std::string& name) {
 
 NffDocument readNffFile(const std::string& path) {
     std::string text, error;
-    if (!readRegularFile(path, kNffMaxBytes, text, error))
+    if (!readRegularFile(path, kNffMaxBytes, text, error)) {
+        const std::string shown = escapeForMessage(path, 4096);
         throw SceneFileError(
-            path +
-            ":0: " + (error.rfind(path + ": ", 0) == 0 ? error.substr(path.size() + 2) : error));
+            shown +
+            ":0: " + (error.rfind(shown + ": ", 0) == 0 ? error.substr(shown.size() + 2) : error));
+    }
     return readNffText(text, path);
 }
 
@@ -437,11 +475,95 @@ void writeNff(std::ostream& out, const NffDocument& doc) {
 }
 
 void writeNffFile(const std::string& path, const NffDocument& doc) {
-    std::ofstream out(path);
-    if (!out) throw SceneFileError(path + ":0: cannot open for writing");
+    // The rule every output follows (core/file_read.h): a FIFO blocked here forever and
+    // /dev/full "succeeded" (issue 20 points 1 and 13).
+    std::string target, why;
+    if (!checkOutputFile(path, target, why)) throw SceneFileError(why);
+    const std::string shown = escapeForMessage(path, 4096);
+    std::ofstream out(target, std::ios::binary | std::ios::trunc);
+    if (!out)
+        throw SceneFileError(shown + ": " +
+                             trf("cannot open for writing (%s)", std::strerror(errno)));
     writeNff(out, doc);
-    if (!out) throw SceneFileError(path + ":0: write failed");
+    out.flush();
+    if (!out) throw SceneFileError(shown + ": " + trf("write failed (%s)", std::strerror(errno)));
+    out.close();
+    if (!out)
+        throw SceneFileError(shown + ": " +
+                             trf("write failed on close (%s)", std::strerror(errno)));
 }
+
+namespace {
+
+// Exact duplicates (issue 20 point 2): 100k copies of `s 0 0 0 1` made every ray test
+// all of them (a BVH cannot split identical boxes) and add nothing to the picture (the
+// nearest hit is the same surface). Objects are compared on every parameter that
+// reaches the scene and on their surface; the hash is FNV-1a over those bytes (with
+// -0 read as +0, the same geometry), equal hashes are confirmed by comparing.
+struct ObjectHash {
+    std::uint64_t h = 1469598103934665603ull;
+    void add(const void* p, std::size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        for (std::size_t i = 0; i < n; ++i) {
+            h ^= b[i];
+            h *= 1099511628211ull;
+        }
+    }
+    void add(double v) {
+        v += 0.0; // -0 -> +0
+        add(&v, sizeof v);
+    }
+    void add(const glm::dvec3& v) {
+        add(v.x);
+        add(v.y);
+        add(v.z);
+    }
+};
+
+std::uint64_t hashObject(const NffObject& o) {
+    ObjectHash h;
+    const int kind = int(o.kind);
+    h.add(&kind, sizeof kind);
+    h.add(&o.surface, sizeof o.surface);
+    switch (o.kind) {
+    case NffObject::Kind::Sphere:
+        h.add(o.centre);
+        h.add(o.radius);
+        break;
+    case NffObject::Kind::Cone:
+        h.add(o.base);
+        h.add(o.apex);
+        h.add(std::abs(o.baseRadius));
+        h.add(std::abs(o.apexRadius));
+        break;
+    case NffObject::Kind::Polygon:
+    case NffObject::Kind::PatchPolygon:
+        for (const glm::dvec3& v : o.vertices)
+            h.add(v);
+        for (const glm::dvec3& n : o.normals)
+            h.add(n);
+        break;
+    }
+    return h.h;
+}
+
+bool sameObject(const NffObject& a, const NffObject& b) {
+    if (a.kind != b.kind || a.surface != b.surface) return false;
+    switch (a.kind) {
+    case NffObject::Kind::Sphere:
+        return a.centre == b.centre && a.radius == b.radius;
+    case NffObject::Kind::Cone:
+        return a.base == b.base && a.apex == b.apex &&
+               std::abs(a.baseRadius) == std::abs(b.baseRadius) &&
+               std::abs(a.apexRadius) == std::abs(b.apexRadius);
+    case NffObject::Kind::Polygon:
+    case NffObject::Kind::PatchPolygon:
+        return a.vertices == b.vertices && a.normals == b.normals;
+    }
+    return false;
+}
+
+} // namespace
 
 SceneFile toScene(const NffDocument& doc) {
     SceneFile sf;
@@ -478,7 +600,36 @@ SceneFile toScene(const NffDocument& doc) {
         m.ks = 0;
         return m;
     }());
-    for (const NffObject& o : doc.objects) {
+    std::unordered_multimap<std::uint64_t, std::size_t> seen; // hash -> index in doc.objects
+    seen.reserve(doc.objects.size());
+    std::size_t duplicates = 0;
+    // Ear clipping's work for the whole file (point 3): one budget, so 40 hostile
+    // polygons cost what one does, not 40 times as much.
+    long long earClipBudget = kNffEarClipWork;
+    std::vector<std::array<int, 3>> tris;
+    for (std::size_t oi = 0; oi < doc.objects.size(); ++oi) {
+        const NffObject& o = doc.objects[oi];
+        {
+            const std::uint64_t h = hashObject(o);
+            const auto range = seen.equal_range(h);
+            bool dup = false;
+            for (auto it = range.first; it != range.second && !dup; ++it)
+                dup = sameObject(doc.objects[it->second], o);
+            if (dup) {
+                ++duplicates;
+                continue;
+            }
+            seen.emplace(h, oi);
+        }
+        if (o.kind == NffObject::Kind::Polygon || o.kind == NffObject::Kind::PatchPolygon) {
+            if (!triangulatePolygon(o.vertices, earClipBudget, tris))
+                throw SceneFileError(
+                    "NFF:" + std::to_string(o.line) + ": " +
+                    trf("concave polygon with %zu vertices: the file's concave polygons need "
+                        "more than %lld vertex visits of ear clipping in all (the limit for one "
+                        "file, about 1 s; see nff.h): split it into smaller polygons",
+                        o.vertices.size(), kNffEarClipWork));
+        }
         const int m = (o.surface >= 0 && std::size_t(o.surface) < mat.size())
                           ? mat[size_t(o.surface)]
                           : defaultMat;
@@ -492,13 +643,13 @@ SceneFile toScene(const NffDocument& doc) {
                 break;
             case NffObject::Kind::Polygon:
                 // Concave polygons (SPD gears) are ear-clipped; convex ones stay fans.
-                for (const auto& t : triangulatePolygon(o.vertices))
+                for (const auto& t : tris)
                     s.add(Triangle(o.vertices[size_t(t[0])], o.vertices[size_t(t[1])],
                                    o.vertices[size_t(t[2])]),
                           m);
                 break;
             case NffObject::Kind::PatchPolygon:
-                for (const auto& t : triangulatePolygon(o.vertices)) {
+                for (const auto& t : tris) {
                     const bool hasN = o.normals.size() == o.vertices.size();
                     const glm::dvec3 z(0.0); // a zero normal falls back to the geometric one
                     const auto a = size_t(t[0]), b = size_t(t[1]), c = size_t(t[2]);
@@ -512,6 +663,14 @@ SceneFile toScene(const NffDocument& doc) {
         } catch (const std::invalid_argument& e) {
             throw SceneFileError("NFF:" + std::to_string(o.line) + ": " + e.what());
         }
+    }
+    if (duplicates > 0) {
+        sf.warnings.push_back("NFF:0: " +
+                              trf("exact duplicate objects dropped: %zu (same shape, position "
+                                  "and surface as an earlier one: they add nothing to the "
+                                  "picture)",
+                                  duplicates));
+        sf.warningCount = sf.warnings.size();
     }
     sf.hasView = doc.hasView;
     sf.view = doc.hasView ? doc.view : frameScene(s);

@@ -1,6 +1,7 @@
 #include "core/raytrace/obj_file.h"
 
 #include "core/file_read.h"
+#include "core/i18n.h"
 #include "core/raytrace/smooth_triangle.h"
 
 #include <tiny_obj_loader.h>
@@ -10,6 +11,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
@@ -18,6 +20,8 @@
 #include <sstream>
 #include <streambuf>
 #include <string_view>
+#include <sys/stat.h>
+#include <unordered_map>
 
 namespace wb::rt {
 
@@ -156,7 +160,8 @@ class ObjScanner {
 
     ObjScan run(std::string_view text, bool checkedOnly = false) {
         // A NUL anywhere: every line the checked way, which names the line that holds it
-        // (one memchr over the file; the fast path need not look for NUL bytes).
+        // with the NFF reader's message, in line order with the other problems (one
+        // memchr over the file; the fast path need not look for NUL bytes).
         if (checkedOnly || std::memchr(text.data(), '\0', text.size()) != nullptr) {
             forEachLine(text, [&](int line, std::string_view l) { checkedLine(line, l); });
             return std::move(scan_);
@@ -195,8 +200,7 @@ class ObjScanner {
     void checkedLine(int line, std::string_view l) {
         const FileErrors& err = err_;
         ObjScan& scan = scan_;
-        if (l.find('\0') != std::string_view::npos)
-            err.fail(line, "NUL byte in the line (a binary file?)");
+        if (l.find('\0') != std::string_view::npos) err.fail(line, nulByteMessage());
         const std::vector<std::string_view> w = words(l);
         if (w.empty()) return;
         const std::string_view cmd = w[0];
@@ -235,6 +239,10 @@ class ObjScanner {
             ++nvt_;
         } else if (cmd == "f") {
             const std::size_t n = w.size() - 1;
+            if (n > kObjMaxFaceVertices)
+                err.fail(line, trf("face with %zu vertices: at most %zu per face (the OBJ "
+                                   "library stores the count in one byte); split the face",
+                                   n, kObjMaxFaceVertices));
             (n >= 3 ? scan.faceLines : scan.droppedLines).push_back(line);
             for (std::size_t i = 1; i < w.size(); ++i) {
                 // v, v/vt, v//vn or v/vt/vn: each given index a non-zero int.
@@ -371,6 +379,7 @@ class ObjScanner {
                 if (!fastCorner(q, e)) return false;
                 ++n;
             }
+            if (n > kObjMaxFaceVertices) return false; // refused, with its line, the checked way
             if (n >= 3) {
                 if (scan_.triangles + (n - 2) > kObjMaxTriangles) return false;
                 scan_.triangles += n - 2;
@@ -396,12 +405,17 @@ ObjScan scanObj(std::string_view text, const std::string& path) {
 
 // The .mtl values tinyobjloader would take unchecked (`d nan` hid the object): each within
 // its meaning, named by the .mtl's own line.
-void checkMtl(std::string_view text, const std::string& path) {
+// `materials` counts `newmtl` lines over every .mtl of the scene (kObjMaxMaterials).
+void checkMtl(std::string_view text, const std::string& path, std::size_t& materials) {
     const FileErrors err(path);
+    if (const int nulLine = firstNulLine(text)) err.fail(nulLine, nulByteMessage());
     forEachLine(text, [&](int line, std::string_view l) {
-        if (l.find('\0') != std::string_view::npos)
-            err.fail(line, "NUL byte in the line (a binary file?)");
         const std::vector<std::string_view> w = words(l);
+        if (w.empty()) return;
+        if (w[0] == "newmtl" && ++materials > kObjMaxMaterials)
+            err.fail(line, trf("more than %zu materials in the scene's .mtl files (the limit "
+                               "for one scene, see obj_file.h)",
+                               kObjMaxMaterials));
         if (w.size() < 2) return;
         const std::string cmd(w[0]);
         double lo = 0, hi = 1;
@@ -444,17 +458,24 @@ class SafeMaterialReader : public tinyobj::MaterialReader {
         // control byte of a mtllib name in the "not found" warning).
         const std::string shown = escapeForMessage(path, 200);
         std::string text, why;
-        if (!readRegularFile(path, kMtlMaxBytes, text, why)) {
+        // What is left of the scene's .mtl budget (kMtlMaxBytes for all files together).
+        const std::size_t left = kMtlMaxBytes - std::min(bytes_, kMtlMaxBytes);
+        if (!readRegularFile(path, left, text, why)) {
             if (why.find("No such file") != std::string::npos) {
                 missing_.push_back(shown + ": material file not found; default material used");
             } else if (error_.empty()) {
                 error_ = shown + ":0: " +
-                         (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why);
+                         (why.rfind(shown + ": ", 0) == 0 ? why.substr(shown.size() + 2) : why);
+                if (bytes_ > 0 && why.find("larger than") != std::string::npos)
+                    error_ += trf(" (%zu MB for all the scene's .mtl files together; %zu bytes "
+                                  "were read before this one)",
+                                  kMtlMaxBytes >> 20, bytes_);
             }
             return false;
         }
+        bytes_ += text.size();
         try {
-            checkMtl(skipBom(text), shown);
+            checkMtl(skipBom(text), shown, materials_);
         } catch (const SceneFileError& e) {
             if (error_.empty()) error_ = e.what();
             return false;
@@ -472,6 +493,8 @@ class SafeMaterialReader : public tinyobj::MaterialReader {
     std::string dir_;
     std::string error_;
     std::vector<std::string> missing_;
+    std::size_t bytes_ = 0;     // .mtl bytes read for this scene so far
+    std::size_t materials_ = 0; // newmtl lines so far
 };
 
 void warn(ObjLoadReport& rep, const std::string& w) {
@@ -502,6 +525,8 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     ObjLoadReport local;
     ObjLoadReport& rep = report ? *report : local;
     rep = ObjLoadReport{};
+    // The path as messages show it: escape bytes and newlines (issue 20 point 16).
+    const std::string shown = escapeForMessage(path, 4096);
     // 1. The whole file, if it is a regular file within the cap (tinyobjloader holds it
     //    and its arrays in memory anyway).
     double t0 = threadSeconds();
@@ -513,11 +538,12 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     std::string raw, why;
     if (!readRegularFile(path, kObjMaxBytes, raw, why))
         throw SceneFileError(
-            path + ":0: " + (why.rfind(path + ": ", 0) == 0 ? why.substr(path.size() + 2) : why));
+            shown +
+            ":0: " + (why.rfind(shown + ": ", 0) == 0 ? why.substr(shown.size() + 2) : why));
     const std::string_view text = skipBom(raw);
     lap(rep.times.read);
     // 2. Numbers, indices and the triangle cap, with line numbers.
-    const ObjScan scan = scanObj(text, path);
+    const ObjScan scan = scanObj(text, shown);
     lap(rep.times.scan);
     // 3. tinyobjloader on the checked text; materials through SafeMaterialReader.
     const auto slash = path.find_last_of('/');
@@ -535,7 +561,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     for (const std::string& m : mtl.missing())
         warn(rep, m);
     for (const int line : scan.droppedLines)
-        warn(rep, path + ":" + std::to_string(line) + ": face with fewer than 3 vertices dropped");
+        warn(rep, shown + ":" + std::to_string(line) + ": face with fewer than 3 vertices dropped");
     {
         std::istringstream ws(tinyWarn);
         std::string w;
@@ -544,14 +570,14 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             if (w.empty() || w == "." || w.find("Degenerated face found") != std::string::npos ||
                 (!mtl.missing().empty() && w.rfind("Failed to load material", 0) == 0))
                 continue;
-            warn(rep, path + ": " + escapeForMessage(w, 200));
+            warn(rep, shown + ": " + escapeForMessage(w, 200));
         }
     }
     if (!ok) {
         std::string e = tinyErr;
         while (!e.empty() && (e.back() == '\n' || e.back() == '\r'))
             e.pop_back();
-        throw SceneFileError(path +
+        throw SceneFileError(shown +
                              ":0: " + (e.empty() ? "cannot parse" : escapeForMessage(e, 200)));
     }
     const std::size_t nv = at.vertices.size() / 3, nn = at.normals.size() / 3;
@@ -559,7 +585,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     for (std::size_t i = 0; i < nv; ++i) {
         verts[i] = {at.vertices[3 * i], at.vertices[3 * i + 1], at.vertices[3 * i + 2]};
         if (!finite3(verts[i])) // scanObj checked the text; a float rounding to inf is caught here
-            throw SceneFileError(path + ":0: vertex " + std::to_string(i + 1) +
+            throw SceneFileError(shown + ":0: vertex " + std::to_string(i + 1) +
                                  " is not finite as a 32-bit float");
     }
     for (std::size_t i = 0; i < nn; ++i) {
@@ -568,7 +594,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
     }
     for (std::size_t k = 0; k < scan.badNormals.size(); ++k) {
         if (scan.badNormals[k] < nn) norms[scan.badNormals[k]] = glm::dvec3(0.0);
-        warn(rep, path + ":" + std::to_string(scan.badNormalLines[k]) +
+        warn(rep, shown + ":" + std::to_string(scan.badNormalLines[k]) +
                       ": normal not finite or beyond ±1e38; faces using it get their face normal");
     }
 
@@ -594,6 +620,30 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
         if (!std::isfinite(m.phongExp) || m.phongExp < 0) m.phongExp = 0;
         mats.push_back(s.addMaterial(m));
     }
+    // Textures are not drawn (the tracer has no texture lookup for OBJ materials): said
+    // once, naming the first, rather than ignored without a word (issue 20 point 14).
+    {
+        std::size_t textured = 0;
+        std::string first;
+        for (const tinyobj::material_t& mt : materials)
+            if (!mt.diffuse_texname.empty() && textured++ == 0) first = mt.diffuse_texname;
+        if (textured > 0) {
+            const std::string dir =
+                slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+            struct stat st {};
+            const std::string firstPath = (!first.empty() && first[0] == '/') ? first : dir + first;
+            const bool exists = ::stat(firstPath.c_str(), &st) == 0;
+            warn(rep, shown + ": " +
+                          (exists ? trf("materials naming a map_Kd texture: %zu (the first: "
+                                        "'%s'); textures are not drawn by the tracer: the Kd "
+                                        "colour is used",
+                                        textured, escapeForMessage(first, 200).c_str())
+                                  : trf("materials naming a map_Kd texture: %zu (the first: "
+                                        "'%s', which does not exist); textures are not drawn "
+                                        "by the tracer: the Kd colour is used",
+                                        textured, escapeForMessage(first, 200).c_str())));
+        }
+    }
     Material def;
     def.colour = glm::dvec3(0.8);
     def.ka = 0.1;
@@ -607,17 +657,60 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
         return k < scan.faceLines.size() ? scan.faceLines[k] : 0;
     };
     std::size_t faceNo = 0, dropped = 0;
+    // Exact duplicates (issue 20 point 2): 1M copies of one triangle took over a minute
+    // at 64x64 (a BVH cannot split identical boxes) and add nothing to the picture. A
+    // triangle is the same when its corners (and normals, when smooth) are the same
+    // doubles in the same order and its material is the same; the FNV-1a hash of those
+    // bytes finds candidates, the coordinates confirm. Only the first triangle of each
+    // hash is kept for comparison (a colliding different triangle is simply kept).
+    struct TriKey {
+        int v[3], n[3], m; // vertex and normal indices (n = -1: flat), material
+    };
+    std::vector<TriKey> kept;
+    std::unordered_map<std::uint64_t, std::uint32_t> firstOfHash;
+    std::size_t duplicates = 0;
+    auto cornersOf = [&](const TriKey& t, int k) {
+        return std::pair<glm::dvec3, glm::dvec3>(
+            verts[size_t(t.v[k])], t.n[k] >= 0 ? norms[size_t(t.n[k])] : glm::dvec3(0.0));
+    };
+    auto isDuplicate = [&](const TriKey& t) {
+        std::uint64_t h = 1469598103934665603ull;
+        auto mix = [&h](const void* p, std::size_t bytes) {
+            const auto* b = static_cast<const unsigned char*>(p);
+            for (std::size_t i = 0; i < bytes; ++i) {
+                h ^= b[i];
+                h *= 1099511628211ull;
+            }
+        };
+        for (int k = 0; k < 3; ++k) {
+            const auto [pv, nv_] = cornersOf(t, k);
+            const double c[6] = {pv.x + 0.0,  pv.y + 0.0,  pv.z + 0.0,
+                                 nv_.x + 0.0, nv_.y + 0.0, nv_.z + 0.0}; // -0 as +0
+            mix(c, sizeof c);
+        }
+        mix(&t.m, sizeof t.m);
+        const auto [it, inserted] = firstOfHash.emplace(h, std::uint32_t(kept.size()));
+        if (!inserted) {
+            const TriKey& o = kept[it->second];
+            bool same = o.m == t.m;
+            for (int k = 0; k < 3 && same; ++k)
+                same = cornersOf(o, k) == cornersOf(t, k) && (o.n[k] >= 0) == (t.n[k] >= 0);
+            if (same) return true;
+        }
+        kept.push_back(t);
+        return false;
+    };
     for (const tinyobj::shape_t& shape : shapes) {
         const auto& mesh = shape.mesh;
         std::size_t base = 0;
         for (std::size_t f = 0; f < mesh.num_face_vertices.size(); ++f, ++faceNo) {
             const std::size_t n = mesh.num_face_vertices[f];
             if (base + n > mesh.indices.size())
-                throw SceneFileError(path + ":" + std::to_string(faceLine(faceNo)) +
+                throw SceneFileError(shown + ":" + std::to_string(faceLine(faceNo)) +
                                      ": face index list truncated");
             if (n < 3) {
                 ++dropped;
-                warn(rep, path + ":" + std::to_string(faceLine(faceNo)) +
+                warn(rep, shown + ":" + std::to_string(faceLine(faceNo)) +
                               ": face with fewer than 3 vertices dropped");
                 base += n;
                 continue;
@@ -629,7 +722,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             for (std::size_t k = 0; k < n; ++k) {
                 const tinyobj::index_t& ix = mesh.indices[base + k];
                 if (ix.vertex_index < 0 || std::size_t(ix.vertex_index) >= nv)
-                    throw SceneFileError(path + ":" + std::to_string(faceLine(faceNo)) +
+                    throw SceneFileError(shown + ":" + std::to_string(faceLine(faceNo)) +
                                          ": vertex index out of range (the file has " +
                                          std::to_string(nv) + " vertices)");
                 if (ix.normal_index < 0 || std::size_t(ix.normal_index) >= nn) smooth = false;
@@ -641,6 +734,17 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
                 return norms[size_t(mesh.indices[base + k].normal_index)];
             };
             for (std::size_t k = 1; k + 1 < n; ++k) {
+                const std::size_t c3[3] = {0, k, k + 1};
+                TriKey key{};
+                key.m = m;
+                for (int j = 0; j < 3; ++j) {
+                    key.v[j] = mesh.indices[base + c3[j]].vertex_index;
+                    key.n[j] = smooth ? mesh.indices[base + c3[j]].normal_index : -1;
+                }
+                if (isDuplicate(key)) {
+                    ++duplicates;
+                    continue;
+                }
                 if (smooth)
                     s.add(SmoothTriangle(V(0), V(k), V(k + 1), N(0), N(k), N(k + 1)), m);
                 else
@@ -650,6 +754,11 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             base += n;
         }
     }
+    if (duplicates > 0)
+        warn(rep, shown + ": " +
+                      trf("exact duplicate triangles dropped: %zu (same corners and material "
+                          "as an earlier one: they add nothing to the picture)",
+                          duplicates));
     // 4. Nothing to draw is an error, not an empty picture (issue 12 point 7).
     if (rep.triangles == 0) {
         std::string what = "nothing to draw: no faces with 3 or more vertices";
@@ -658,7 +767,7 @@ SceneFile loadObjFile(const std::string& path, ObjLoadReport* report) {
             what += " (" + std::to_string(dropped) + " smaller faces dropped)";
         else if (scan.faceLines.empty())
             what += " (no `f` lines: is this an OBJ file?)";
-        throw SceneFileError(path + ":0: " + what);
+        throw SceneFileError(shown + ":0: " + what);
     }
     sf.hasView = false;
     sf.view = frameScene(s);

@@ -67,6 +67,13 @@ template <class Body> void forEachIndex(int threads, int count, const Body& body
 
 } // namespace
 
+std::size_t renderMemoryBytes(int width, int height, const ParallelRenderOptions& opt) {
+    const std::size_t w = std::size_t(std::max(width, 0)), h = std::size_t(std::max(height, 0));
+    std::size_t bytes = w * h * 3; // Image(width, height, 3)
+    if (opt.cornerRays) bytes += (w + 1) * (h + 1) * sizeof(Color);
+    return bytes;
+}
+
 Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model, int width,
                      int height, const ParallelRenderOptions& opt, ParallelRenderStats* stats) {
     if (width < 1 || height < 1 || width > 65536 || height > 65536)

@@ -1,5 +1,6 @@
 #include "core/raytrace/polygon.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -26,11 +27,30 @@ std::vector<std::array<int, 3>> fan(int n) {
     return out;
 }
 
+bool triangulateWithin(const std::vector<glm::dvec3>& v, long long& budget,
+                       std::vector<std::array<int, 3>>& out, bool fanWhenOver);
+
 } // namespace
 
 std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>& v) {
+    long long budget = 200'000'000; // past this many vertex visits (~1 s) the rest is fanned
+    std::vector<std::array<int, 3>> out;
+    triangulateWithin(v, budget, out, true);
+    return out;
+}
+
+bool triangulatePolygon(const std::vector<glm::dvec3>& v, long long& budget,
+                        std::vector<std::array<int, 3>>& out) {
+    return triangulateWithin(v, budget, out, false);
+}
+
+namespace {
+
+bool triangulateWithin(const std::vector<glm::dvec3>& v, long long& budget,
+                       std::vector<std::array<int, 3>>& out, bool fanWhenOver) {
+    out.clear();
     const int n = int(v.size());
-    if (n < 3) return {};
+    if (n < 3) return true;
     // 1. Project onto the coordinate plane most parallel to the polygon (the largest
     //    component of Newell's normal), keeping the winding.
     glm::dvec3 normal(0.0);
@@ -42,7 +62,10 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
     }
     const glm::dvec3 an = glm::abs(normal);
     const int axis = an.x > an.y ? (an.x > an.z ? 0 : 2) : (an.y > an.z ? 1 : 2);
-    if (!(an[axis] > 0) || !std::isfinite(an[axis])) return fan(n); // degenerate: no area
+    if (!(an[axis] > 0) || !std::isfinite(an[axis])) { // degenerate: no area
+        out = fan(n);
+        return true;
+    }
     const int ax = (axis + 1) % 3, ay = (axis + 2) % 3;
     std::vector<P2> p(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i)
@@ -53,7 +76,10 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
     bool convex = true;
     for (int i = 0; i < n && convex; ++i)
         convex = s * orient(p[size_t((i + n - 1) % n)], p[size_t(i)], p[size_t((i + 1) % n)]) >= 0;
-    if (convex) return fan(n);
+    if (convex) {
+        out = fan(n);
+        return true;
+    }
 
     // 3. Ear clipping on a doubly linked ring. A corner b (a before, c after) is an ear
     //    when it turns the polygon's way and no reflex vertex lies in or on (a, b, c)
@@ -71,8 +97,8 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
     for (int i = 0; i < n; ++i)
         reflex[size_t(i)] = turn(i) < 0;
     // Hostile input (a 10^5-gon with half its corners reflex) must not take minutes:
-    // past kWork vertex visits (~0.3 s) the rest is fanned.
-    constexpr long long kWork = 200'000'000;
+    // past the budget's vertex visits the rest is fanned, or the polygon refused.
+    const long long kWork = budget;
     long long work = 0;
     const auto isEar = [&](int b) {
         if (!(turn(b) > 0)) return false;
@@ -87,11 +113,10 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
         return true;
     };
 
-    std::vector<std::array<int, 3>> out;
     out.reserve(size_t(n - 2));
     int left = n, cur = 0, sinceEar = 0;
     while (left > 3) {
-        ++work;
+        if (++work > kWork) break; // over the budget, ears or not: fan the rest or refuse
         const int a = prev[size_t(cur)], c = next[size_t(cur)];
         if (turn(cur) == 0 &&
             glm::dot(p[size_t(a)] - p[size_t(cur)], p[size_t(c)] - p[size_t(cur)]) <= 0) {
@@ -111,11 +136,18 @@ std::vector<std::array<int, 3>> triangulatePolygon(const std::vector<glm::dvec3>
         cur = a;
         sinceEar = 0;
     }
+    budget -= std::min(work, budget);
+    if (work > kWork && !fanWhenOver) {
+        out.clear();
+        return false;
+    }
     // The last triangle, or (no ear found) a fan over what is left.
     const int start = cur;
     for (int b = next[size_t(start)]; next[size_t(b)] != start; b = next[size_t(b)])
         out.push_back({start, b, next[size_t(b)]});
-    return out;
+    return true;
 }
+
+} // namespace
 
 } // namespace wb::rt

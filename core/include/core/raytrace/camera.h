@@ -34,6 +34,9 @@ class ScreenCamera : public Camera {
 
     glm::dvec3 eye, screenCentre, screenX, screenY;
     double pixelSize;
+    // NFF's hither plane: rays start where they cross the plane at this distance from the
+    // eye along the view direction, so what is nearer is clipped (0: rays start at the eye).
+    double hither = 0.0;
 };
 
 // The one look-at frame of the project (issue 12: rt_render and lab 07 rendered the
@@ -61,6 +64,9 @@ class LookAtCamera : public Camera {
     Ray primaryRay(int x, int y, int width, int height) const override;
     // The ray through continuous image coordinates (px, py) in [0, w] × [0, h].
     Ray rayAt(double px, double py, int width, int height) const;
+
+    // The hither (near) plane's distance from the eye (ScreenCamera::hither).
+    void setHither(double distance) { screen_.hither = distance; }
 
     glm::dvec3 eye, forward, right, up; // orthonormal frame (eye as orbitScreenCamera puts it)
     double tanHalfFov;                  // tan(fov/2)

@@ -8,7 +8,8 @@
 //
 // Mapping (how SPD authors meant it): colour = rgb, kd = Kd, ks = Ks, Phong
 // exponent = Shine, kr = Ks (Ks is also the mirror reflectance), kt = T, refraction
-// index inside = ior (1 when ior <= 0), ka = 0 (NFF has no ambient term) and the
+// index inside = ior (> 0 required when T > 0; an opaque surface never uses it and the
+// SPD generators write 0), ka = 0 (NFF has no ambient term) and the
 // scene's global ambient 0; `l` without a colour has intensity 1/sqrt(number of
 // lights), so the sum of all lights stays near 1; polygons become fans of
 // triangles (`pp`: with interpolated vertex normals); `c` becomes a capped Cone
@@ -39,6 +40,11 @@ constexpr std::size_t kNffMaxPrimitives = 4000000;
 // lights × hits (200,000 lights took 50 s at 160×120). The SPD databases use at most
 // a handful; 1000 keeps the worst case near 0.3 s at 160×120 and a few seconds at 512².
 constexpr std::size_t kNffMaxLights = 1000;
+// Ear clipping of concave polygons, per file (issue 20 point 3): vertex visits in all
+// (ear clipping is O(n·r) per polygon). 10^8 visits take about 1 s here; a random
+// 10^5-gon needs more and the file is refused naming its line (it took 8.4 s, and 40 of
+// them over a minute). SPD gears need about 10^4 visits per face.
+constexpr long long kNffEarClipWork = 100'000'000;
 // Largest file: the text is read whole; 4 million primitives written as `p 3` polygons
 // take about 400 MB, so 512 MB holds any file within the primitive cap with comments.
 constexpr std::size_t kNffMaxBytes = std::size_t(512) << 20;

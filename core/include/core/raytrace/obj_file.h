@@ -21,7 +21,17 @@ namespace wb::rt {
 constexpr std::size_t kObjMaxBytes = std::size_t(256) << 20;
 // Largest .mtl: a material is a few lines, so 16 MB is thousands of materials; /dev/zero
 // or /dev/urandom as a .mtl used to be read until memory ran out.
+// The cap is per scene, not per file (issue 20 point 5: eight mtllib lines naming eight
+// 12 MB files reached 3.9 GB and a bare std::bad_alloc): all .mtl files of one OBJ
+// together.
 constexpr std::size_t kMtlMaxBytes = std::size_t(16) << 20;
+// Materials per scene: tinyobjloader's material_t takes 1,864 bytes (textures, options,
+// strings) before it is turned into a Material, so 500,000 materials took 1.0 GB; 10,000
+// (far more than a scene has) take 19 MB.
+constexpr std::size_t kObjMaxMaterials = 10000;
+// Vertices per face: tinyobjloader stores a face's count in one byte, so a 259-gon
+// became 3 primitives and corrupted the faces after it (issue 20 point 8): refused.
+constexpr std::size_t kObjMaxFaceVertices = 255;
 // Triangles per file, the NFF cap (kNffMaxPrimitives): about 1.5 GB at peak with the BVH.
 // A 256 MB file of small triangles holds about 7 million.
 constexpr std::size_t kObjMaxTriangles = 4000000;

@@ -48,6 +48,12 @@ struct ParallelRenderStats {
     bool cancelled = false;        // the frame stopped early; unfinished tiles are black
 };
 
+// The memory renderParallel allocates for a frame: the 8-bit RGB image and, with
+// cornerRays, the (w+1)·(h+1) corner colours (24 bytes each: 16384² with --spd needs
+// 6.4 GB for them alone). Front ends compare it with what the machine has before
+// rendering (issue 20 point 6) instead of ending in a bare std::bad_alloc.
+std::size_t renderMemoryBytes(int width, int height, const ParallelRenderOptions& options);
+
 Image renderParallel(const Scene& scene, const Camera& camera, const ShadingModel& model, int width,
                      int height, const ParallelRenderOptions& options = {},
                      ParallelRenderStats* stats = nullptr);
