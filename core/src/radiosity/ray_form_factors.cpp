@@ -69,7 +69,40 @@ double diameter(const std::vector<glm::dvec3>& c) {
 struct Workspace {
     std::vector<glm::dvec3> xi, xj;
     std::vector<int> perm;
+    std::vector<glm::dvec3> front; // P_j clipped to P_i's front half-space
+    std::vector<double> fanArea;   // cumulative areas of its fan triangles
 };
+
+// P_j's part in front of P_i's plane (Sutherland–Hodgman, one plane) and the cumulative
+// areas of its fan from the first vertex, for uniform sampling of that part.
+void clipFront(const std::vector<glm::dvec3>& cj, const glm::dvec3& origin, const glm::dvec3& normal,
+               Workspace& ws) {
+    ws.front.clear();
+    ws.fanArea.clear();
+    const std::size_t m = cj.size();
+    for (std::size_t k = 0; k < m; ++k) {
+        const glm::dvec3& a = cj[k];
+        const glm::dvec3& b = cj[(k + 1) % m];
+        const double da = glm::dot(a - origin, normal), db = glm::dot(b - origin, normal);
+        if (da > 0.0) ws.front.push_back(a);
+        if ((da > 0.0) != (db > 0.0) && da != db) ws.front.push_back(a + da / (da - db) * (b - a));
+    }
+    double sum = 0.0;
+    for (std::size_t k = 1; k + 1 < ws.front.size(); ++k) {
+        sum += 0.5 * glm::length(glm::cross(ws.front[k] - ws.front[0], ws.front[k + 1] - ws.front[0]));
+        ws.fanArea.push_back(sum);
+    }
+}
+
+// A uniform point of the clipped part (ws.front), from two uniforms and a third for the triangle.
+glm::dvec3 sampleFront(const Workspace& ws, SplitMix& rng) {
+    const double pick = rng.uniform() * ws.fanArea.back();
+    std::size_t t = 0;
+    while (t + 1 < ws.fanArea.size() && ws.fanArea[t] < pick) ++t;
+    const double su = std::sqrt(rng.uniform()), v = rng.uniform();
+    const glm::dvec3& c0 = ws.front[0];
+    return c0 + su * (1 - v) * (ws.front[t + 1] - c0) + su * v * (ws.front[t + 2] - c0);
+}
 
 double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayFormFactorConfig& cfg,
             const std::vector<glm::dvec3>& ci, Workspace& ws) {
@@ -105,11 +138,28 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
     // roles for i > j, so the segment set is the same either way.
     auto pointI = [&](int s) { return i < j ? ws.xi[static_cast<std::size_t>(s)] : ws.xi[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])]; };
     auto pointJ = [&](int s) { return i < j ? ws.xj[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])] : ws.xj[static_cast<std::size_t>(s)]; };
+    // PointToPolygon integrates over P_j clipped to P_i's front half-space, so its visibility
+    // rays must aim at that part: a ray whose end lies behind P_i's plane would count the
+    // clipped-away fraction a second time (issue 19 item 11: F(wall -> floor reaching behind
+    // it) came out 0.12 instead of 0.264). Such an end is redrawn uniformly on the front part;
+    // the ends already in front are uniform on it, so every end is. Pairs wholly in front keep
+    // their rays (and their values) unchanged.
+    bool straddles = false;
+    if (kernel == RayKernel::PointToPolygon) {
+        for (const auto& q : cj) straddles |= glm::dot(q - Pi.centre, Pi.normal) <= 0.0;
+        if (straddles) {
+            clipFront(cj, Pi.centre, Pi.normal, ws);
+            straddles = !ws.fanArea.empty() && ws.fanArea.back() > 0.0;
+        }
+    }
+    SplitMix redraw{mix(cfg.seed ^ 0xc11bULL, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))};
     const double invPi = 1.0 / glm::pi<double>();
     double sum = 0.0;
     int unblocked = 0;
     for (int s = 0; s < k; ++s) {
-        const glm::dvec3 a = pointI(s), b = pointJ(s);
+        const glm::dvec3 a = pointI(s);
+        glm::dvec3 b = pointJ(s);
+        if (straddles && glm::dot(b - Pi.centre, Pi.normal) <= 0.0) b = sampleFront(ws, redraw);
         const glm::dvec3 r = b - a;
         const double r2 = glm::dot(r, r);
         const double ca = glm::dot(Pi.normal, r), cb = -glm::dot(Pj.normal, r);
@@ -118,7 +168,9 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
             if (!bvh.visible(a, b)) continue;
             sum += ca * cb / (r2 * r2) * invPi;
         } else if (kernel == RayKernel::PointToPolygon) {
-            if (ca <= 0.0 || cb <= 0.0) continue; // ray leaves behind a patch: blocked
+            // cb <= 0: the point a lies behind P_j's plane and sees only its back. ca <= 0 only
+            // for an end on P_i's plane itself (a redrawn end is strictly in front).
+            if (ca <= 0.0 || cb <= 0.0) continue;
             if (!bvh.visible(a, b)) continue;
             sum += pointToPolygon(a, Pi.normal, cj);
         } else {
