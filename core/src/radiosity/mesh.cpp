@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,11 @@ struct PatchDesc {
     std::array<glm::dvec2, 4> lat;
     int group = -1; // shooting group, −1 without grouping
 };
+
+// Grid cells of a quad surface are at most this many times longer than wide (along the
+// surface's two edge directions); with the scenes' near-rectangular quads, patchAspect stays
+// below kMaxAspect (mesh.h).
+constexpr double kMaxGridAspect = 1.5;
 
 // Hard cap so a tiny maxEdge gives a clear error, not an out-of-memory (~1 KB per patch with F
 // rows on demand; 4 million patches is far beyond what the solvers can use anyway).
@@ -157,6 +163,15 @@ double PatchMesh::totalArea() const {
     return a;
 }
 
+double patchAspect(const PatchMesh& mesh, int patch) {
+    const Patch& p = mesh.patches.at(static_cast<std::size_t>(patch));
+    const auto c = mesh.cornersOf(patch);
+    double longest = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k) longest = std::max(longest, glm::length(c[(k + 1) % c.size()] - c[k]));
+    if (!(p.area > 0.0)) return std::numeric_limits<double>::infinity();
+    return longest * longest / ((p.cornerCount == 3 ? 2.0 : 1.0) * p.area);
+}
+
 PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
     if (!(config.maxEdge > 0.0) || !std::isfinite(config.maxEdge))
         throw std::invalid_argument("radiosity meshing: maxEdge " + std::to_string(config.maxEdge) +
@@ -179,11 +194,11 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
         // different group sizes, have the same patches); a shooting group is a block of `per`
         // fine cells along each direction, `per` = how many fine cells fit in shooterEdge.
         auto counts = [&](double len, int& fine, int& coarse, int& per) {
-            fine = static_cast<int>(cells(len, config.maxEdge));
+            if (fine < 1) fine = static_cast<int>(cells(len, config.maxEdge));
             per = grouped ? std::max(1, static_cast<int>(std::floor(config.shooterEdge / (len / fine) + 1e-9))) : 1;
             coarse = (fine + per - 1) / per;
         };
-        int fu = 1, cu = 1, mu = 1, fv = 1, cv = 1, mv = 1;
+        int fu = 0, cu = 1, mu = 1, fv = 0, cv = 1, mv = 1;
         if (c.size() == 3) {
             const double longest = std::max({glm::length(c[1] - c[0]), glm::length(c[2] - c[1]),
                                              glm::length(c[0] - c[2])});
@@ -192,8 +207,18 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
             cv = cu;
             mv = mu;
         } else {
-            counts(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])), fu, cu, mu);
-            counts(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])), fv, cv, mv);
+            const double U = std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3]));
+            const double V = std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1]));
+            // Bounded aspect: a long thin surface (a table top's 3 cm edge strip, a lamp
+            // shade's rim) is cut across its length too, so no cell is more than
+            // kMaxGridAspect times longer than wide (a 1.2 m × 3 cm strip at maxEdge 0.4 m
+            // was 3 cells of aspect 13).
+            fu = static_cast<int>(cells(U, config.maxEdge));
+            fv = static_cast<int>(cells(V, config.maxEdge));
+            fu = std::max(fu, static_cast<int>(std::ceil(U * fv / (kMaxGridAspect * V) - 1e-9)));
+            fv = std::max(fv, static_cast<int>(std::ceil(V * fu / (kMaxGridAspect * U) - 1e-9)));
+            counts(U, fu, cu, mu);
+            counts(V, fv, cv, mv);
         }
         const double nu = fu, nv = fv;
         total += nu * nv;

@@ -79,6 +79,15 @@ struct MeshConfig {
     double shooterEdge = 0.0;
 };
 
+// Aspect ratio of a patch: its longest edge L over its width across that edge, L²/A for a
+// quad (a×b rectangle: a/b; square 1) and L²/(2A) for a triangle (right isosceles: 2;
+// equilateral: 1.15). meshScene keeps it at most kMaxAspect on the lab's scenes (a quad
+// surface's grid cells are at most 1.5 times longer than wide, 2.15 for the end cells of the
+// lamp shade's rim, a 1 cm wide trapezoid with 45° ends; a triangle surface's patches are
+// similar to it, so a sliver surface would give sliver patches: the scenes have none).
+double patchAspect(const PatchMesh& mesh, int patch);
+constexpr double kMaxAspect = 2.5;
+
 // Grid-meshes every surface. Validates the scene first (throws std::invalid_argument).
 PatchMesh meshScene(const Scene& scene, const MeshConfig& config);
 
