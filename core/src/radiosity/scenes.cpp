@@ -66,13 +66,19 @@ void addTable(Scene& s, double x, double z, double w, double d, double h, const 
               const std::string& name) {
     const double t = 0.03; // top thickness (m)
     addBox(s, V(x, h - t, z), V(x + w, h, z + d), refl, name + " top", true);
+    // Side panels 2 cm thick, from the floor to the top's underside (their four sides only: a
+    // top or bottom face would lie on the table top or the floor, face to face). Two coincident
+    // faces back to back, as before, tie in depth at the edges (issue 19 item 10).
+    const double pt = 0.01;
     for (int side = 0; side < 2; ++side) {
         const double px = side == 0 ? x + 0.05 : x + w - 0.05;
-        const std::vector<V> panel = {{px, 0.0, z + 0.05}, {px, h - t, z + 0.05},
-                                      {px, h - t, z + d - 0.05}, {px, 0.0, z + d - 0.05}};
+        const double z0 = z + 0.05, z1 = z + d - 0.05, y1 = h - t;
+        const V c(px, 0.5 * y1, 0.5 * (z0 + z1));
         const std::string n = name + (side == 0 ? " left panel" : " right panel");
-        s.surfaces.push_back(face(panel, refl, V(0.0), n + " (-x)", V(px - 1, 0.5, z)));
-        s.surfaces.push_back(face(panel, refl, V(0.0), n + " (+x)", V(px + 1, 0.5, z)));
+        s.surfaces.push_back(outward({{px - pt, 0.0, z0}, {px - pt, y1, z0}, {px - pt, y1, z1}, {px - pt, 0.0, z1}}, refl, n + " (-x)", c));
+        s.surfaces.push_back(outward({{px + pt, 0.0, z0}, {px + pt, y1, z0}, {px + pt, y1, z1}, {px + pt, 0.0, z1}}, refl, n + " (+x)", c));
+        s.surfaces.push_back(outward({{px - pt, 0.0, z0}, {px + pt, 0.0, z0}, {px + pt, y1, z0}, {px - pt, y1, z0}}, refl, n + " (-z)", c));
+        s.surfaces.push_back(outward({{px - pt, 0.0, z1}, {px + pt, 0.0, z1}, {px + pt, y1, z1}, {px - pt, y1, z1}}, refl, n + " (+z)", c));
     }
 }
 

@@ -13,6 +13,14 @@
 // patch's corners AND every vertex lying on its edges, in order, and displayTriangles fans
 // such a patch from an extra centre vertex through all of them, so the display mesh is
 // conforming: Gouraud interpolation is continuous and no crack shows.
+//
+// Where a body stands on a surface (the Cornell box's blocks on its floor, the classroom's red
+// box), meshing fits the patches to it: a patch wholly inside the body (the first surface along
+// its normal is met from behind) is dropped, and a patch partly inside keeps its polygon for
+// drawing (the body hides the rest) but its `area` is the exposed area and its `centre` the
+// centroid of the exposed part (8×8 samples), so its hemicube sees what a viewer sees. Before
+// (issue 19 item 10) such a patch whose centre lay under a block was solved as black and drawn
+// black where it showed. The patches' lattice grid itself does not follow the bodies' outlines.
 #include "core/radiosity/scene.h"
 
 #include <array>
@@ -31,8 +39,8 @@ struct Patch {
     int surface = 0;          // index into Scene::surfaces
     int group = -1;           // shooting group (PatchMesh::groups), −1 when not grouped
     int level = 0;            // 0 = from the initial grid, +1 per adaptive split
-    double area = 0.0;        // m²
-    glm::dvec3 centre{0.0};   // centroid (area-weighted), on the patch
+    double area = 0.0;        // m², of the exposed part (see above; the polygon's otherwise)
+    glm::dvec3 centre{0.0};   // centroid (area-weighted) of the exposed part, on the patch
     glm::dvec3 normal{0.0};   // unit, the emitting/receiving side
     glm::dvec3 reflectivity{0.0}; // copied from the surface
     glm::dvec3 emission{0.0};     // copied from the surface
