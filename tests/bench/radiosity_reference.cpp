@@ -5,10 +5,11 @@
 // block, e.g. the floor under it, are seen by nobody and left out, as the reference's camera
 // cannot see them either).
 //
-//   radiosity_reference --out ours.json [--setting NAME:PATCH_M:METHOD:RES_OR_K ...]
-//   METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel)
-// Default settings: "default" 0.05 m, hemicube 128 (the lab's defaults before issue 19 item 7)
-// and "fine" 0.025 m, hemicube 256.
+//   radiosity_reference --out ours.json [--setting NAME:PATCH_M:METHOD:RES_OR_K[:SHOOTER_M[:TOL]] ...]
+//   METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
+//   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
+//   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
+// Default settings: see `settings.empty()` below (lab 08's old and new defaults, and finer).
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
 
@@ -30,6 +31,8 @@ struct Setting {
     double patch = 0.05;
     std::string method = "hemicube";
     int resOrK = 128;
+    double shooter = 0.0;    // MeshConfig::shooterEdge (0: every patch shoots itself)
+    double tolerance = 1e-5; // unshot power / emitted at the stop
 };
 
 Setting parse(const std::string& s) {
@@ -38,7 +41,10 @@ Setting parse(const std::string& s) {
     std::string part;
     std::vector<std::string> parts;
     while (std::getline(ss, part, ':')) parts.push_back(part);
-    if (parts.size() != 4) throw std::invalid_argument("--setting NAME:PATCH:METHOD:RES_OR_K, got " + s);
+    if (parts.size() < 4 || parts.size() > 6)
+        throw std::invalid_argument("--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
+    if (parts.size() > 4) out.shooter = std::stod(parts[4]);
+    if (parts.size() > 5) out.tolerance = std::stod(parts[5]);
     out.name = parts[0];
     out.patch = std::stod(parts[1]);
     out.method = parts[2];
@@ -98,20 +104,28 @@ std::string vec(const glm::dvec3& v) {
 int main(int argc, char** argv) {
     std::string outPath = "radiosity_reference_ours.json";
     std::vector<Setting> settings;
-    double tolerance = 1e-5;
     try {
         for (int a = 1; a < argc; ++a) {
             const std::string arg = argv[a];
             if (arg == "--out" && a + 1 < argc) outPath = argv[++a];
             else if (arg == "--setting" && a + 1 < argc) settings.push_back(parse(argv[++a]));
-            else if (arg == "--tolerance" && a + 1 < argc) tolerance = std::stod(argv[++a]);
             else throw std::invalid_argument("unknown argument " + arg);
         }
     } catch (const std::exception& e) {
         std::cerr << "radiosity_reference: " << e.what() << "\n";
         return 2;
     }
-    if (settings.empty()) settings = {parse("default:0.05:hemicube:128"), parse("fine:0.025:hemicube:256")};
+    if (settings.empty())
+        settings = {// Lab 08's defaults before issue 19 (0.05 m, 128², no groups, stop at 1e-3).
+                    parse("old-default:0.05:hemicube:128:0:1e-3"),
+                    // Lab 08's defaults of issue 19 item 7 (/work/wt/brief/lab08-defaults.md):
+                    // 0.0283 m, shooting groups 0.311 m, stop at 1e-3; GL hemicube 512² (core's
+                    // CPU hemicube at 512² stands in: the two differ at edge pixels only) and the
+                    // CPU hemicube's 128².
+                    parse("default-gl512:0.0283:hemicube:512:0.311:1e-3"),
+                    parse("default-cpu128:0.0283:hemicube:128:0.311:1e-3"),
+                    // Finer: 0.02 m, groups 0.1 m, 512², stop at 1e-5.
+                    parse("fine:0.02:hemicube:512:0.1:1e-5")};
     const Scene scene = cornellBox();
     std::ostringstream js;
     js << "{\n  \"scene\": \"" << scene.name << "\",\n  \"surfaces\": [\n";
@@ -126,7 +140,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < settings.size(); ++k) {
         const Setting& st = settings[k];
         const auto t0 = std::chrono::steady_clock::now();
-        const PatchMesh mesh = meshScene(scene, {st.patch});
+        const PatchMesh mesh = meshScene(scene, {st.patch, st.shooter});
         FormFactorConfig fc;
         if (st.method == "rays") {
             fc.method = FormFactorMethod::Rays;
@@ -138,18 +152,20 @@ int main(int argc, char** argv) {
         FormFactors ff(mesh, fc);
         SolverConfig sc;
         sc.kind = SolverKind::Progressive;
-        sc.ambient = false;
-        sc.tolerance = tolerance;
+        sc.ambient = true;
+        sc.tolerance = st.tolerance;
         Solver solver(mesh, ff, sc);
         solver.run();
         const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         PatchBvh bvh(mesh);
         std::vector<double> area;
-        const auto means = surfaceMeans(mesh, bvh, solver.radiosity(), area);
-        std::cerr << st.name << ": " << mesh.patches.size() << " patches, " << solver.steps() << " shots, residual "
+        const auto means = surfaceMeans(mesh, bvh, solver.displayRadiosity(), area);
+        std::cerr << st.name << ": " << mesh.patches.size() << " patches, " << mesh.groups.size() << " groups, " << solver.steps() << " shots, residual "
                   << solver.residual() << ", " << secs << " s\n";
         js << "    {\"name\": \"" << st.name << "\", \"patch\": " << st.patch << ", \"method\": \"" << st.method
-           << "\", \"res_or_k\": " << st.resOrK << ", \"patches\": " << mesh.patches.size()
+           << "\", \"res_or_k\": " << st.resOrK << ", \"shooter\": " << st.shooter
+           << ", \"groups\": " << mesh.groups.size() << ", \"tolerance\": " << st.tolerance
+           << ", \"patches\": " << mesh.patches.size()
            << ", \"residual\": " << solver.residual() << ", \"seconds\": " << secs << ", \"means\": [";
         for (std::size_t s = 0; s < means.size(); ++s) js << (s ? ", " : "") << vec(means[s]);
         js << "], \"exposed_area\": [";
