@@ -227,11 +227,35 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
         if (parents) *parents = std::move(keptParents);
         build(mesh, descs);
     }
+    bool any = false;
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
         if (fit[i].first == 1.0) continue;
         Patch& p = mesh.patches[i];
         p.area *= fit[i].first;
         p.centre = fit[i].second;
+        any = true;
+    }
+    if (!any || mesh.groups.empty()) return;
+    // Shooting groups: area and centroid of what is exposed; a group's hemicube eye (its
+    // centroid) under a body would shoot the group's power into the body's inside, so such a
+    // centroid moves to the nearest member's (exposed) centre.
+    const PatchBvh bvh(mesh);
+    for (ShooterGroup& g : mesh.groups) {
+        g.area = 0.0;
+        g.centre = glm::dvec3(0.0);
+        for (int m : g.members) {
+            const Patch& p = mesh.patches[static_cast<std::size_t>(m)];
+            g.area += p.area;
+            g.centre += p.area * p.centre;
+        }
+        if (g.area > 0.0) g.centre /= g.area;
+        if (g.members.empty() || !covered(bvh, g.centre, g.normal)) continue;
+        glm::dvec3 best = mesh.patches[static_cast<std::size_t>(g.members.front())].centre;
+        for (int m : g.members) {
+            const glm::dvec3& c = mesh.patches[static_cast<std::size_t>(m)].centre;
+            if (glm::length(c - g.centre) < glm::length(best - g.centre)) best = c;
+        }
+        g.centre = best;
     }
 }
 
