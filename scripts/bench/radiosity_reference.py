@@ -30,10 +30,13 @@ if len(argv) < 2:
 src, dst = argv[0], argv[1]
 opts = {"--samples": 256, "--seeds": 4, "--pixels": 96}
 only = None
+mode = "bake"
 k = 2
 while k < len(argv):
     if argv[k] == "--only":
         only = argv[k + 1]
+    elif argv[k] == "--mode":
+        mode = argv[k + 1]
     else:
         opts[argv[k]] = int(argv[k + 1])
     k += 2
@@ -199,13 +202,82 @@ def render_surface(si, seeds, samples, pixels):
             "resolution": [rx, ry], "pixel_m": h}
 
 
+def bake_surface(si, seeds, samples, pixels):
+    # Cycles bakes the exitant radiance (COMBINED: emission + every bounce) at the centres of an
+    # N × N texture mapped bilinearly onto the face: the whole face is sampled, its rim included
+    # (the camera mode must drop the rim pixels, which biases the mean by ~1/N). Each texel is
+    # weighted by the bilinear map's area element at its centre; texels inside a body (the floor
+    # under a block) are left out, as radiosity_reference leaves them out of our means.
+    s = data["surfaces"][si]
+    vs = [Vector(v) for v in s["vertices"]]
+    if len(vs) != 4:
+        raise SystemExit("bake mode handles quads only: " + s["name"])
+    n = newell(vs)
+    ob = objects[si]
+    me = ob.data
+    if not me.uv_layers:
+        uv = me.uv_layers.new(name="UV")
+        for li, loop in enumerate(me.loops):
+            uv.data[li].uv = [(0, 0), (1, 0), (1, 1), (0, 1)][loop.vertex_index]
+    img = bpy.data.images.new("bake_%d" % si, pixels, pixels, float_buffer=True, alpha=False)
+    nt = ob.active_material.node_tree
+    tex = nt.nodes.new("ShaderNodeTexImage")
+    tex.image = img
+    for nd in nt.nodes:
+        nd.select = False
+    tex.select = True
+    nt.nodes.active = tex
+    for o in bpy.context.view_layer.objects:
+        o.select_set(False)
+    ob.select_set(True)
+    bpy.context.view_layer.objects.active = ob
+    scene.render.bake.margin = 0
+    scene.render.bake.use_clear = True
+    dg = bpy.context.evaluated_depsgraph_get()
+    weights = []
+    for y in range(pixels):
+        for x in range(pixels):
+            u, v = (x + 0.5) / pixels, (y + 0.5) / pixels
+            P = (1 - u) * (1 - v) * vs[0] + u * (1 - v) * vs[1] + u * v * vs[2] + (1 - u) * v * vs[3]
+            dPu = (1 - v) * (vs[1] - vs[0]) + v * (vs[2] - vs[3])
+            dPv = (1 - u) * (vs[3] - vs[0]) + u * (vs[2] - vs[1])
+            hit, loc, nor, idx, hob, mat = scene.ray_cast(dg, P + 1e-6 * n, n, distance=10.0)
+            inside = hit and nor.dot(n) > 0
+            weights.append(0.0 if inside else dPu.cross(dPv).length)
+    wsum = sum(weights)
+    means = []
+    for seed in range(seeds):
+        cy.seed = 1000 + seed
+        cy.samples = samples
+        bpy.ops.object.bake(type="COMBINED")
+        px = list(img.pixels)
+        acc = [0.0, 0.0, 0.0]
+        for i, w in enumerate(weights):
+            if w > 0.0:
+                for c3 in range(3):
+                    acc[c3] += w * px[i * 4 + c3]
+        means.append([math.pi * a / wsum for a in acc])
+    nt.nodes.remove(tex)
+    bpy.data.images.remove(img)
+    mean = [sum(m[c3] for m in means) / seeds for c3 in range(3)]
+    if seeds > 1:
+        se = [math.sqrt(sum((m[c3] - mean[c3]) ** 2 for m in means) / (seeds - 1) / seeds) for c3 in range(3)]
+    else:
+        se = [float("nan")] * 3
+    return {"name": s["name"], "B": mean, "stderr": se, "per_seed": means,
+            "pixels": sum(1 for w in weights if w > 0), "resolution": [pixels, pixels], "pixel_m": None}
+
+
 results = []
 for si in range(len(objects)):
     if only and only not in data["surfaces"][si]["name"]:
         continue
-    r = render_surface(si, opts["--seeds"], opts["--samples"], opts["--pixels"])
+    if mode == "bake":
+        r = bake_surface(si, opts["--seeds"], opts["--samples"], opts["--pixels"])
+    else:
+        r = render_surface(si, opts["--seeds"], opts["--samples"], opts["--pixels"])
     print("REF", r["name"], ["%.4f" % b for b in r["B"]], "±", ["%.4f" % e for e in r["stderr"]], r["pixels"], "px", flush=True)
     results.append(r)
-json.dump({"renderer": "Blender %s Cycles" % bpy.app.version_string, "samples": opts["--samples"],
+json.dump({"renderer": "Blender %s Cycles" % bpy.app.version_string, "mode": mode, "samples": opts["--samples"],
            "seeds": opts["--seeds"], "pixels": opts["--pixels"], "surfaces": results}, open(dst, "w"), indent=1)
 print("wrote", dst)

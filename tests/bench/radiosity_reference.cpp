@@ -5,8 +5,8 @@
 // block, e.g. the floor under it, are seen by nobody and left out, as the reference's camera
 // cannot see them either).
 //
-//   radiosity_reference --out ours.json [--setting NAME:PATCH_M:METHOD:RES_OR_K[:SHOOTER_M[:TOL]] ...]
-//   METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
+//   radiosity_reference --out ours.json [--setting NAME:PATCH_M:METHOD:RES_OR_K[:SHOOTER_M[:TOL]]
+//   ...] METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
 //   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
 // Default settings: see `settings.empty()` below (lab 08's old and new defaults, and finer).
@@ -40,16 +40,19 @@ Setting parse(const std::string& s) {
     std::stringstream ss(s);
     std::string part;
     std::vector<std::string> parts;
-    while (std::getline(ss, part, ':')) parts.push_back(part);
+    while (std::getline(ss, part, ':'))
+        parts.push_back(part);
     if (parts.size() < 4 || parts.size() > 6)
-        throw std::invalid_argument("--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
+        throw std::invalid_argument(
+            "--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
     if (parts.size() > 4) out.shooter = std::stod(parts[4]);
     if (parts.size() > 5) out.tolerance = std::stod(parts[5]);
     out.name = parts[0];
     out.patch = std::stod(parts[1]);
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
-    if (out.method != "hemicube" && out.method != "rays") throw std::invalid_argument("method " + out.method);
+    if (out.method != "hemicube" && out.method != "rays")
+        throw std::invalid_argument("method " + out.method);
     return out;
 }
 
@@ -62,7 +65,8 @@ bool exposed(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
 }
 
 // Per surface: Σ B·A_exposed / Σ A_exposed, with each patch's exposed fraction from an 8×8 grid.
-std::vector<glm::dvec3> surfaceMeans(const PatchMesh& m, const PatchBvh& bvh, const std::vector<glm::dvec3>& B,
+std::vector<glm::dvec3> surfaceMeans(const PatchMesh& m, const PatchBvh& bvh,
+                                     const std::vector<glm::dvec3>& B,
                                      std::vector<double>& exposedArea) {
     const std::size_t ns = m.surfaces.size();
     std::vector<glm::dvec3> sum(ns, glm::dvec3(0.0));
@@ -80,7 +84,8 @@ std::vector<glm::dvec3> surfaceMeans(const PatchMesh& m, const PatchBvh& bvh, co
                     const double su = std::sqrt(u);
                     q = c[0] + su * (1 - v) * (c[1] - c[0]) + su * v * (c[2] - c[0]);
                 } else {
-                    q = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+                    q = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] +
+                        (1 - u) * v * c[3];
                 }
                 hits += exposed(bvh, q, p.normal) ? 1 : 0;
             }
@@ -107,9 +112,12 @@ int main(int argc, char** argv) {
     try {
         for (int a = 1; a < argc; ++a) {
             const std::string arg = argv[a];
-            if (arg == "--out" && a + 1 < argc) outPath = argv[++a];
-            else if (arg == "--setting" && a + 1 < argc) settings.push_back(parse(argv[++a]));
-            else throw std::invalid_argument("unknown argument " + arg);
+            if (arg == "--out" && a + 1 < argc)
+                outPath = argv[++a];
+            else if (arg == "--setting" && a + 1 < argc)
+                settings.push_back(parse(argv[++a]));
+            else
+                throw std::invalid_argument("unknown argument " + arg);
         }
     } catch (const std::exception& e) {
         std::cerr << "radiosity_reference: " << e.what() << "\n";
@@ -132,8 +140,10 @@ int main(int argc, char** argv) {
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const Surface& f = scene.surfaces[s];
         js << "    {\"name\": \"" << f.name << "\", \"vertices\": [";
-        for (std::size_t k = 0; k < f.vertices.size(); ++k) js << (k ? ", " : "") << vec(f.vertices[k]);
-        js << "], \"reflectivity\": " << vec(f.reflectivity) << ", \"emission\": " << vec(f.emission) << "}"
+        for (std::size_t k = 0; k < f.vertices.size(); ++k)
+            js << (k ? ", " : "") << vec(f.vertices[k]);
+        js << "], \"reflectivity\": " << vec(f.reflectivity)
+           << ", \"emission\": " << vec(f.emission) << "}"
            << (s + 1 < scene.surfaces.size() ? "," : "") << "\n";
     }
     js << "  ],\n  \"settings\": [\n";
@@ -156,20 +166,24 @@ int main(int argc, char** argv) {
         sc.tolerance = st.tolerance;
         Solver solver(mesh, ff, sc);
         solver.run();
-        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         PatchBvh bvh(mesh);
         std::vector<double> area;
         const auto means = surfaceMeans(mesh, bvh, solver.displayRadiosity(), area);
-        std::cerr << st.name << ": " << mesh.patches.size() << " patches, " << mesh.groups.size() << " groups, " << solver.steps() << " shots, residual "
-                  << solver.residual() << ", " << secs << " s\n";
-        js << "    {\"name\": \"" << st.name << "\", \"patch\": " << st.patch << ", \"method\": \"" << st.method
-           << "\", \"res_or_k\": " << st.resOrK << ", \"shooter\": " << st.shooter
+        std::cerr << st.name << ": " << mesh.patches.size() << " patches, " << mesh.groups.size()
+                  << " groups, " << solver.steps() << " shots, residual " << solver.residual()
+                  << ", " << secs << " s\n";
+        js << "    {\"name\": \"" << st.name << "\", \"patch\": " << st.patch << ", \"method\": \""
+           << st.method << "\", \"res_or_k\": " << st.resOrK << ", \"shooter\": " << st.shooter
            << ", \"groups\": " << mesh.groups.size() << ", \"tolerance\": " << st.tolerance
-           << ", \"patches\": " << mesh.patches.size()
-           << ", \"residual\": " << solver.residual() << ", \"seconds\": " << secs << ", \"means\": [";
-        for (std::size_t s = 0; s < means.size(); ++s) js << (s ? ", " : "") << vec(means[s]);
+           << ", \"patches\": " << mesh.patches.size() << ", \"residual\": " << solver.residual()
+           << ", \"seconds\": " << secs << ", \"means\": [";
+        for (std::size_t s = 0; s < means.size(); ++s)
+            js << (s ? ", " : "") << vec(means[s]);
         js << "], \"exposed_area\": [";
-        for (std::size_t s = 0; s < area.size(); ++s) js << (s ? ", " : "") << area[s];
+        for (std::size_t s = 0; s < area.size(); ++s)
+            js << (s ? ", " : "") << area[s];
         js << "]}" << (k + 1 < settings.size() ? "," : "") << "\n";
     }
     js << "  ]\n}\n";
