@@ -66,7 +66,21 @@ double diameter(const std::vector<glm::dvec3>& c) {
     return d;
 }
 
+// A point inside a body (the floor under a block): the first surface along the normal is met
+// from behind (as meshScene decides it, mesh.cpp). Meshing gives a patch partly inside a body
+// its exposed area (Patch::area < its polygon's area); the sampled points there see nothing.
+bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
+    const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
+    if (bvh.nearestPatch(o, n, 0.0, 1e4) >= 0) return false;
+    return !bvh.visible(o, o + 1e4 * n);
+}
+
+bool fitted(const Patch& P, const std::vector<glm::dvec3>& c) {
+    return P.area < polygonArea(c) * (1.0 - 1e-9);
+}
+
 struct Workspace {
+    std::vector<char> openI, openJ; // per sample: not inside a body (fitted patches only)
     std::vector<glm::dvec3> xi, xj;
     std::vector<int> perm;
     std::vector<glm::dvec3> front; // P_j clipped to P_i's front half-space
@@ -153,12 +167,31 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
         }
     }
     SplitMix redraw{mix(cfg.seed ^ 0xc11bULL, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))};
+    // A patch partly inside a body (meshScene fitted its area to the exposed part): its samples
+    // inside the body see nothing. They are left out of the averages rather than counted as
+    // blocked, since the patch's area already leaves that part out (counted both ways, F from
+    // or to the floor at the blocks' feet came out too low by the covered fraction).
+    const bool fitI = fitted(Pi, ci), fitJ = fitted(Pj, cj);
+    ws.openI.assign(static_cast<std::size_t>(k), 1);
+    ws.openJ.assign(static_cast<std::size_t>(k), 1);
+    if (fitI)
+        for (int s = 0; s < k; ++s) ws.openI[static_cast<std::size_t>(s)] = !covered(bvh, ws.xi[static_cast<std::size_t>(s)], Pi.normal);
+    if (fitJ)
+        for (int s = 0; s < k; ++s) ws.openJ[static_cast<std::size_t>(s)] = !covered(bvh, ws.xj[static_cast<std::size_t>(s)], Pj.normal);
+    auto openI = [&](int s) { return ws.openI[static_cast<std::size_t>(i < j ? s : ws.perm[static_cast<std::size_t>(s)])] != 0; };
+    auto openJ = [&](int s) { return ws.openJ[static_cast<std::size_t>(i < j ? ws.perm[static_cast<std::size_t>(s)] : s)] != 0; };
     const double invPi = 1.0 / glm::pi<double>();
     double sum = 0.0;
-    int unblocked = 0;
+    int unblocked = 0, counted = 0;
     for (int s = 0; s < k; ++s) {
+        if (!openI(s)) continue; // a inside a body: not part of P_i's exposed area
         const glm::dvec3 a = pointI(s);
         glm::dvec3 b = pointJ(s);
+        // b inside a body: PointToPolygon and PointPairs integrate over P_j's whole polygon, and
+        // a covered b is invisible, rightly; Centres uses P_j's exposed area, so such a ray is
+        // not counted.
+        if (kernel == RayKernel::Centres && !openJ(s)) continue;
+        ++counted;
         if (straddles && glm::dot(b - Pi.centre, Pi.normal) <= 0.0) b = sampleFront(ws, redraw);
         const glm::dvec3 r = b - a;
         const double r2 = glm::dot(r, r);
@@ -177,16 +210,17 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
             if (ca > 0.0 && cb > 0.0 && bvh.visible(a, b)) ++unblocked;
         }
     }
+    if (counted == 0) return 0.0;
     switch (kernel) {
     case RayKernel::PointPairs:
-        return Pj.area * sum / k;
+        return polygonArea(cj) * sum / counted; // over P_j's polygon: covered b are invisible
     case RayKernel::PointToPolygon:
-        return sum / k;
+        return sum / counted;
     default: {
-        // (15.20) at the centres, times the visible fraction of the k rays.
+        // (15.20) at the centres, times the visible fraction of the counted rays.
         const double cosI = glm::dot(Pi.normal, dc) / d, cosJ = -glm::dot(Pj.normal, dc) / d;
         if (cosI <= 0.0 || cosJ <= 0.0) return 0.0;
-        const double V = static_cast<double>(unblocked) / k;
+        const double V = static_cast<double>(unblocked) / counted;
         return V * cosI * cosJ * Pj.area * invPi / (d * d);
     }
     }
