@@ -12,9 +12,9 @@ mkdir -p "$out"
 cmake --build "$build" --target radiosity_reference >/dev/null
 "$build/bin/radiosity_reference" --out "$out/ours.json"
 py="$root/scripts/bench/radiosity_reference.py"
-# Two independent reference runs: 4 seeds x 128 samples at 64 px, 2 seeds x 512 samples at
-# 48 px. The first gives the noise (std. error over seeds), the second checks that neither the
-# sample count nor the pixel size moves the answer beyond that noise.
-blender -b --factory-startup --python "$py" -- "$out/ours.json" "$out/ref_a.json" --samples 128 --seeds 4 --pixels 64 | grep -E '^REF|^wrote'
-blender -b --factory-startup --python "$py" -- "$out/ours.json" "$out/ref_b.json" --samples 512 --seeds 2 --pixels 48 | grep -E '^REF|^wrote'
+# Two independent reference runs (Cycles bakes each face): 32² texels × 128 samples × 4 seeds
+# (the reference and its noise: std. error over the seeds) and 24² × 256 × 2 (checks that
+# neither the sample count nor the texel size moves the answer beyond that noise).
+blender -b --factory-startup --python "$py" -- "$out/ours.json" "$out/ref_a.json" --samples 128 --seeds 4 --pixels 32 | grep -E '^REF|^wrote'
+blender -b --factory-startup --python "$py" -- "$out/ours.json" "$out/ref_b.json" --samples 256 --seeds 2 --pixels 24 | grep -E '^REF|^wrote'
 python3 "$root/scripts/bench/radiosity_reference_table.py" "$out/ours.json" "$out/ref_a.json" "$out/ref_b.json"
