@@ -11,7 +11,8 @@ pkgs=(
   xvfb xauth imagemagick dpkg-dev
 )
 # Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers; the bench
-# plots' scripts/plot/plot.sh asks for gnuplot-nox - the tests do not need it).
+# plots' scripts/plot/plot.sh asks for gnuplot-nox, scripts/bench/radiosity_reference.sh for
+# blender - the tests need neither).
 pkgs+=("$@")
 
 missing=()
