@@ -8,11 +8,12 @@ pkgs=(
   freeglut3-dev libglew-dev libglm-dev libimgui-dev catch2
   libosmesa6-dev libglu1-mesa-dev libstb-dev libtinyobjloader-dev libtbb-dev
   libcli11-dev fonts-dejavu-core libeigen3-dev
-  xvfb xauth
+  xvfb xauth imagemagick dpkg-dev
   gettext libx11-dev libxkbcommon-dev x11-xkb-utils xdotool
 )
 # Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers; the bench
-# plots' scripts/plot/plot.sh asks for gnuplot-nox - the tests do not need it).
+# plots' scripts/plot/plot.sh asks for gnuplot-nox, scripts/bench/radiosity_reference.sh for
+# blender - the tests need neither).
 pkgs+=("$@")
 
 missing=()

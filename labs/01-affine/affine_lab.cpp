@@ -1,8 +1,11 @@
 #include "affine_lab.h"
 
+#include "common/exercise_mode.h"
 #include "common/gl.h"
 #include "common/panel.h"
 #include "core/homogeneous.h"
+#include "core/i18n.h"
+#include "exercises.h"
 
 #include "core/i18n.h"
 
@@ -12,13 +15,23 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
+
+const wb::ex::LabExercises& wbExercises_lab01();
 
 namespace wb {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// A student handout (./wb handout) has no reference answers: core's 2D mirror and shadow
+// matrices are stripped from it, so the lab draws and shows only the student's.
+#ifdef WB_HANDOUT
+constexpr bool kHaveReference = false;
+#else
+constexpr bool kHaveReference = true;
+#endif
 
 // The letter F, counter-clockwise, 1.3 × the unit design, centred near (-1.5, 0.5).
 std::vector<glm::dvec2> makePolygon() {
@@ -118,9 +131,10 @@ void drawPrism(bool lit) {
 
 class AffineLab : public Lab {
   public:
-    explicit AffineLab(AffineState* s) : s_(s ? s : &own_) {
+    explicit AffineLab(AffineState* s) : s_(s ? s : &own_), ex_(wbExercises_lab01()) {
         if (!s) reseed(own_, own_.seed);
         // Exercise 1.1 once: the composite and the closed form, and how far apart they are.
+        if (!kHaveReference) return;
         const Line2 ex{3, -2, 1};
         exComposite_ = mirrorLineComposite(ex);
         exClosed_ = mirrorLine(ex);
@@ -137,10 +151,15 @@ class AffineLab : public Lab {
                 {"v", tr("2D view / 3D view")},
                 {"r", tr("new random line through K, L (next seed)")},
                 {tr("Left Right"), tr("turn l (mode 2) / move S (mode 3)")},
-                {tr("Up Down"), tr("move S (mode 3) / tilt l (3D, mode 2)")}};
+                {tr("Up Down"), tr("move S (mode 3) / tilt l (3D, mode 2)")},
+                ex_.keyHelp()};
     }
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
 
     void draw(const View& view) override {
+        ex_.poll(!view.headless);
         glViewport(0, 0, view.width, view.height);
         if (s_->view3d)
             draw3d(view);
@@ -149,6 +168,7 @@ class AffineLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         AffineState& s = *s_;
         const bool pointMode = s.mode == AffineMode::ShadowPoint;
         switch (k) {
@@ -202,6 +222,7 @@ class AffineLab : public Lab {
 
     void gui() override {
         AffineState& s = *s_;
+        ex_.gui();
         int mode = int(s.mode);
         ImGui::RadioButton(tr("1 mirror image"), &mode, 1);
         ImGui::RadioButton(tr("2 shadow, light at infinity along l"), &mode, 2);
@@ -221,12 +242,20 @@ class AffineLab : public Lab {
             ImGui::Text("l = (%.3f, %.3f)", l.x, l.y);
             double sxy[2] = {s.light.x, s.light.y};
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
-            const glm::dmat3 m = affineMatrix2d(s);
-            ImGui::TextWrapped(tr("M (3x3), applied as M [P1 ... P%zu], then / w:"),
-                               affinePolygon().size());
-            if (s.mode == AffineMode::ShadowPoint)
-                ImGui::TextWrapped(tr("(homogeneous: any non-zero multiple is the same map)"));
-            matrix(glm::value_ptr(m), 3);
+            if (kHaveReference) {
+                const glm::dmat3 m = affineMatrix2d(s);
+                ImGui::TextWrapped(tr("M (3x3), applied as M [P1 ... P%zu], then / w:"),
+                                   affinePolygon().size());
+                if (s.mode == AffineMode::ShadowPoint)
+                    ImGui::TextWrapped(tr("(homogeneous: any non-zero multiple is the same map)"));
+                matrix(glm::value_ptr(m), 3);
+            }
+            if (ex_.on()) {
+                const std::optional<glm::dmat3> mine = studentMatrix();
+                ImGui::TextWrapped("%s",
+                                   mine ? tr("your M:") : tr("your M: none (not done or failing)"));
+                if (mine) matrix(glm::value_ptr(*mine), 3);
+            }
             ImGui::TextWrapped(tr("vertices at infinity: %zu, behind the light: %zu"),
                                lastAtInfinity_, lastBehind_);
         } else {
@@ -245,6 +274,7 @@ class AffineLab : public Lab {
             ImGui::TextWrapped(tr("M (4x4), given to glMultMatrixd:"));
             matrix(glm::value_ptr(m), 4);
         }
+        if (!kHaveReference) return;
         ImGui::Separator();
         ImGui::TextWrapped(tr("Exercise 1.1: mirror in 3x - 2y + 1 = 0"));
         ImGui::TextWrapped(tr("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):"));
@@ -292,37 +322,8 @@ class AffineLab : public Lab {
         }
         glEnd();
 
-        const std::vector<glm::dvec2>& poly = affinePolygon();
-        const glm::dmat3 m = affineMatrix2d(s);
-        // The lab's point: all vertices in ONE product M·[P1 ... Pn], then divide by w.
-        const HomogeneousColumns<3> h = multiply(m, toHomogeneous(poly));
-        const ProjectedPoints<glm::dvec2> img = dehomogenize(h);
-        lastAtInfinity_ = img.atInfinity;
-        lastBehind_ = 0;
-        std::vector<bool> usable(poly.size());
-        for (size_t i = 0; i < poly.size(); ++i) {
-            // Under the point-light matrix w > 0 exactly for vertices nearer the line than S.
-            usable[i] = img.kinds[i] == PointKind::Finite && h.at(2, i) > 0;
-            if (img.kinds[i] == PointKind::Finite && h.at(2, i) <= 0) ++lastBehind_;
-        }
-
-        // Rays from the light through each vertex to its shadow, dotted.
-        if (s.mode != AffineMode::Mirror) {
-            glEnable(GL_LINE_STIPPLE);
-            glLineStipple(2, 0xAAAA);
-            glColor3ub(230, 150, 0);
-            glBegin(GL_LINES);
-            const glm::dvec2 l = affineLightDir(s);
-            for (size_t i = 0; i < poly.size(); ++i) {
-                if (!usable[i]) continue;
-                const glm::dvec2 from =
-                    s.mode == AffineMode::ShadowPoint ? s.light : poly[i] - 3.0 * l;
-                glVertex2dv(glm::value_ptr(from));
-                glVertex2dv(glm::value_ptr(img.points[i]));
-            }
-            glEnd();
-            glDisable(GL_LINE_STIPPLE);
-        }
+        // The reference's rays under everything else, as the lab always drew them.
+        if (!ex_.on() && kHaveReference) drawImage(affineMatrix2d(s), s, true, false);
 
         // The line Λ, drawn across the whole view, and K, L.
         const glm::dvec2 d = glm::normalize(s.l - s.k) * (4.0 * (hw + hh));
@@ -340,9 +341,62 @@ class AffineLab : public Lab {
         glEnd();
 
         // The object, filled, outline darker.
+        const std::vector<glm::dvec2>& poly = affinePolygon();
         fillPolygon(poly, std::vector<bool>(poly.size(), true), kPolygonColor);
         outline(poly, std::vector<bool>(poly.size(), true), 20, 50, 140, 2);
 
+        // Your code (e): your matrix's image, and the reference's as a ghost over it.
+        if (ex_.on()) {
+            if (const std::optional<glm::dmat3> mine = studentMatrix())
+                drawImage(*mine, s, true, true);
+            if (kHaveReference) {
+                ex::ExerciseMode::ghostBegin();
+                drawImage(affineMatrix2d(s), s, true, true);
+                ex::ExerciseMode::ghostEnd();
+            }
+        } else {
+            drawImage(affineMatrix2d(s), s, false, true);
+        }
+        if (s.mode != AffineMode::Mirror) drawLight2d(s, hw, hh);
+        glLineWidth(1);
+        glPointSize(1);
+    }
+
+    // The polygon's image under m (mirror image filled, shadow as a thick outline on Λ)
+    // with the rays from the light to it.
+    void drawImage(const glm::dmat3& m, const AffineState& s, bool rays, bool image) {
+        const std::vector<glm::dvec2>& poly = affinePolygon();
+        // The lab's point: all vertices in ONE product M·[P1 ... Pn], then divide by w.
+        const HomogeneousColumns<3> h = multiply(m, toHomogeneous(poly));
+        const ProjectedPoints<glm::dvec2> img = dehomogenize(h);
+        lastAtInfinity_ = img.atInfinity;
+        lastBehind_ = 0;
+        std::vector<bool> usable(poly.size());
+        for (size_t i = 0; i < poly.size(); ++i) {
+            // Under the point-light matrix w > 0 exactly for vertices nearer the line than S.
+            usable[i] = img.kinds[i] == PointKind::Finite && h.at(2, i) > 0;
+            if (img.kinds[i] == PointKind::Finite && h.at(2, i) <= 0) ++lastBehind_;
+        }
+
+        // Rays from the light through each vertex to its shadow, dotted.
+        if (rays && s.mode != AffineMode::Mirror) {
+            glEnable(GL_LINE_STIPPLE);
+            glLineStipple(2, 0xAAAA);
+            glColor3ub(230, 150, 0);
+            glBegin(GL_LINES);
+            const glm::dvec2 l = affineLightDir(s);
+            for (size_t i = 0; i < poly.size(); ++i) {
+                if (!usable[i]) continue;
+                const glm::dvec2 from =
+                    s.mode == AffineMode::ShadowPoint ? s.light : poly[i] - 3.0 * l;
+                glVertex2dv(glm::value_ptr(from));
+                glVertex2dv(glm::value_ptr(img.points[i]));
+            }
+            glEnd();
+            glDisable(GL_LINE_STIPPLE);
+        }
+
+        if (!image) return;
         if (s.mode == AffineMode::Mirror) {
             fillPolygon(img.points, usable, kImageColor);
             outline(img.points, usable, 140, 20, 20, 2);
@@ -350,10 +404,7 @@ class AffineLab : public Lab {
             // A shadow on a line has no area: its outline collapses onto Λ.
             outline(img.points, usable, kShadowColor[0], kShadowColor[1], kShadowColor[2],
                     float(kShadowLineWidth));
-            drawLight2d(s, hw, hh);
         }
-        glLineWidth(1);
-        glPointSize(1);
     }
 
     static void fillPolygon(const std::vector<glm::dvec2>& p, const std::vector<bool>& ok,
@@ -536,8 +587,46 @@ class AffineLab : public Lab {
         glLineWidth(1);
     }
 
+    // Your matrix for the current mode and inputs, when the task's check let it be called.
+    std::optional<glm::dmat3> studentMatrix() const {
+        const AffineState& s = *s_;
+        const lab01::Table* t = ex_.studentTable<lab01::Table>();
+        if (!t) return std::nullopt;
+        std::optional<glm::dmat3> m;
+        switch (s.mode) {
+        case AffineMode::Mirror:
+            m = ex_.call("01.mirror", [&] { return t->mirror(s.k, s.l); });
+            break;
+        case AffineMode::ShadowDirectional:
+            m = ex_.call("01.shadow-dir",
+                         [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); });
+            break;
+        case AffineMode::ShadowPoint:
+            m = ex_.call("01.shadow-point", [&] { return t->shadowPoint(s.k, s.l, s.light); });
+            break;
+        }
+        if (!m) return m;
+        // Any non-zero multiple is the same map; drawn with the reference's sign so that
+        // w > 0 marks the same vertices (GL and this lab skip w <= 0). In a handout: the sign
+        // that makes w > 0 at the polygon's first vertex (on the light's side).
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r)
+                if (!std::isfinite((*m)[c][r])) return std::nullopt;
+        double dot = ((*m) * glm::dvec3(affinePolygon()[0], 1.0)).z;
+        if (kHaveReference) {
+            const glm::dmat3 ref = affineMatrix2d(s);
+            dot = 0;
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r)
+                    dot += (*m)[c][r] * ref[c][r];
+        }
+        if (dot < 0) *m = -*m;
+        return m;
+    }
+
     AffineState own_;
     AffineState* s_;
+    ex::ExerciseMode ex_;
     glm::dmat3 exComposite_{1.0}, exClosed_{1.0};
     double exDiff_ = 0;
     size_t lastAtInfinity_ = 0, lastBehind_ = 0;
@@ -571,8 +660,10 @@ void reseed(AffineState& s, unsigned seed) {
         const Line2 line = affineLine(s);
         const double dist = std::abs(signedDistance(line, c));
         if (dist < r + 0.8 || dist > 6.0) continue;
-        const glm::dvec3 mc = mirrorLine(line) * glm::dvec3(c, 1.0);
-        if (std::abs(mc.x) > 9.5 - r || std::abs(mc.y) > 8.5 - r) continue;
+        if (kHaveReference) {
+            const glm::dvec3 mc = mirrorLine(line) * glm::dvec3(c, 1.0);
+            if (std::abs(mc.x) > 9.5 - r || std::abs(mc.y) > 8.5 - r) continue;
+        }
         // S: beyond the polygon seen from Λ, a little to the side.
         const glm::dvec2 n = normalTowardsPolygon(s), t(-n.y, n.x);
         s.light = c + n * (r + 1.5) + t * 1.0;

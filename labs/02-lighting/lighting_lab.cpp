@@ -1,6 +1,9 @@
 #include "lighting_lab.h"
 
+#include "common/exercise_mode.h"
 #include "common/gl_util.h"
+#include "core/i18n.h"
+#include "exercises.h"
 
 #include "common/panel.h"
 #include "core/i18n.h"
@@ -9,7 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+
+const wb::ex::LabExercises& wbExercises_lab02();
 
 namespace wb {
 
@@ -232,7 +238,8 @@ void drawMarker(const glm::vec4& pos) {
 
 class LightingLab : public Lab {
   public:
-    explicit LightingLab(LightingState* s) : s_(s ? s : &own_) {}
+    // 'e' is emission here, so the exercises are on 'E'.
+    explicit LightingLab(LightingState* s) : s_(s ? s : &own_), ex_(wbExercises_lab02(), 'E') {}
     std::string title() const override { return tr("Lab 02 - Phong lighting"); }
     std::vector<KeyHelp> keys() const override {
         return {{"1", tr("specular material + specular light")},
@@ -252,8 +259,12 @@ class LightingLab : public Lab {
                 {"m", tr("light marker on/off")},
                 {"b", tr("blocker between light and cube")},
                 {tr("arrows PgUp PgDn"), tr("move the light")},
-                {", .", tr("spin the cubes")}};
+                {", .", tr("spin the cubes")},
+                ex_.keyHelp()};
     }
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     void init() override {
         // init() runs once per context (headless renders make a new one each time).
         program_ = loadProgram("shaders/phong.vert", "shaders/phong.frag", programError_);
@@ -266,14 +277,110 @@ class LightingLab : public Lab {
     // One view of the two cubes with state `s` into the current viewport.
     void drawScene(const View& view, const LightingState& s);
     void drawDigit(int digit, int w, int h);
+    // Your cube (exercises, key E): your vertices and normals, your grid normals for N > 1,
+    // your normals as solid hairs and the reference's as a ghost.
+    void drawYourCube(bool centreNormals, int n);
 
     LightingState own_;
     LightingState* s_;
     GLuint program_ = 0;
     std::string programError_;
+    ex::ExerciseMode ex_;
 };
 
+void LightingLab::drawYourCube(bool centreNormals, int n) {
+    const lab02::Table* t = ex_.studentTable<lab02::Table>();
+    const lab02::Table* ref = ex_.referenceTable<lab02::Table>();
+    const char* task = centreNormals ? "02.cube-centre" : "02.cube-face";
+    auto make = [&](const lab02::Table* table) -> std::optional<lab02::Cube> {
+        if (!table) return std::nullopt;
+        lab02::Cube c =
+            centreNormals ? table->centreNormals({0, 0, 0}, 1) : table->faceNormals({0, 0, 0}, 1);
+        if (c.vertices.size() != c.normals.size() || c.vertices.size() % 4 != 0)
+            return std::nullopt;
+        return c;
+    };
+    const std::optional<lab02::Cube> mine =
+        t ? ex_.call(task, [&] { return make(t); }).value_or(std::nullopt) : std::nullopt;
+    std::vector<glm::dvec3> hairs; // pairs: point, normal
+    if (mine) {
+        for (size_t f = 0; f + 3 < mine->vertices.size(); f += 4) {
+            std::array<glm::dvec3, 4> c, cn;
+            for (size_t k = 0; k < 4; ++k) {
+                c[k] = mine->vertices[f + k];
+                cn[k] = mine->normals[f + k];
+            }
+            auto vertex = [&](int i, int j) {
+                const double u = double(i) / double(n), v = double(j) / double(n);
+                const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+                glm::dvec3 p(0.0), nn(0.0);
+                for (size_t k = 0; k < 4; ++k) {
+                    p += w[k] * c[k];
+                    nn += w[k] * cn[k]; // your corner normals as given at the corners (N = 1)
+                }
+                if (n > 1) {
+                    // Your grid normal (task 5) when it can be called, else the lab's own blend.
+                    const auto g =
+                        ex_.call("02.grid-normal", [&] { return t->gridNormal(c, cn, p); });
+                    nn = g ? *g : glm::normalize(nn);
+                }
+                glNormal3d(nn.x, nn.y, nn.z);
+                glVertex3d(p.x, p.y, p.z);
+                if (n <= 8) hairs.insert(hairs.end(), {p, nn});
+            };
+            glBegin(GL_QUADS);
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    vertex(i, j);
+                    vertex(i + 1, j);
+                    vertex(i + 1, j + 1);
+                    vertex(i, j + 1);
+                }
+            glEnd();
+        }
+    }
+    // The hairs: unlit lines, no shader; yours solid yellow, the reference's a ghost.
+    GLint program = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program);
+    glUseProgram(0);
+    glDisable(GL_LIGHTING);
+    glLineWidth(2.0f);
+    auto drawHairs = [](const std::vector<glm::dvec3>& h) {
+        glBegin(GL_LINES);
+        for (size_t i = 0; i + 1 < h.size(); i += 2) {
+            glVertex3d(h[i].x, h[i].y, h[i].z);
+            const glm::dvec3 e = h[i] + 0.45 * h[i + 1];
+            glVertex3d(e.x, e.y, e.z);
+        }
+        glEnd();
+    };
+    glColor3f(1.0f, 0.85f, 0.1f);
+    drawHairs(hairs);
+    if (const std::optional<lab02::Cube> r = make(ref)) {
+        std::vector<glm::dvec3> rh;
+        for (size_t i = 0; i < r->vertices.size(); ++i)
+            rh.insert(rh.end(), {r->vertices[i], r->normals[i]});
+        ex::ExerciseMode::ghostBegin();
+        glColor3f(1.0f, 1.0f, 1.0f);
+        drawHairs(rh);
+        // The reference cube's edges, so a missing or misplaced face shows.
+        glBegin(GL_LINES);
+        for (size_t f = 0; f + 3 < r->vertices.size(); f += 4)
+            for (size_t k = 0; k < 4; ++k) {
+                const glm::dvec3 a = r->vertices[f + k], b = r->vertices[f + (k + 1) % 4];
+                glVertex3d(a.x, a.y, a.z);
+                glVertex3d(b.x, b.y, b.z);
+            }
+        glEnd();
+        ex::ExerciseMode::ghostEnd();
+    }
+    glLineWidth(1.0f);
+    glEnable(GL_LIGHTING);
+    glUseProgram(GLuint(program));
+}
+
 void LightingLab::draw(const View& view) {
+    ex_.poll(!view.headless);
     const LightingState& s = *s_;
     glClearColor(s.background.r, s.background.g, s.background.b, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -369,7 +476,10 @@ void LightingLab::drawScene(const View& view, const LightingState& s) {
         glPushMatrix();
         glTranslatef(side == 0 ? -kCubeOffset : kCubeOffset, 0, 0);
         glRotatef(s.cubeSpin, 0, 1, 0);
-        drawCube(side == 1, n);
+        if (ex_.on())
+            drawYourCube(side == 1, n);
+        else
+            drawCube(side == 1, n);
         glPopMatrix();
     }
     if (s.showBlocker) { // halfway from the light to the top of the right cube: it casts no shadow
@@ -389,6 +499,7 @@ void LightingLab::drawScene(const View& view, const LightingState& s) {
 }
 
 bool LightingLab::key(int k) {
+    if (ex_.key(k)) return true;
     LightingState& s = *s_;
     const float step = 0.25f;
     switch (k) {
@@ -471,6 +582,7 @@ bool LightingLab::key(int k) {
 
 void LightingLab::gui() {
     LightingState& s = *s_;
+    ex_.gui();
     ImGui::TextWrapped(tr("Left cube: normals perpendicular to the faces."));
     ImGui::TextWrapped(tr("Right cube: normals from the cube centre through the vertex."));
     ImGui::Separator();

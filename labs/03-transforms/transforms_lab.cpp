@@ -1,5 +1,9 @@
 #include "transforms_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "common/gl.h"
 #include "common/gl_util.h"
 #include "core/teapot.h"
@@ -15,6 +19,8 @@
 #include <cmath>
 #include <random>
 #include <string>
+
+const wb::ex::LabExercises& wbExercises_lab03();
 
 namespace wb {
 
@@ -327,7 +333,10 @@ void setLight() {
 
 class TransformsLab : public Lab {
   public:
-    explicit TransformsLab(TransformsState* s) : s_(s ? s : &own_) {}
+    explicit TransformsLab(TransformsState* s) : s_(s ? s : &own_), ex_(wbExercises_lab03()) {}
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return tr("Lab 03 - transforms and projections"); }
     std::vector<KeyHelp> keys() const override {
         return {{"1 2 3", tr("glOrtho / gluPerspective / glFrustum")},
@@ -339,7 +348,8 @@ class TransformsLab : public Lab {
                 {"m", tr("mirror image in the blackboard wall")},
                 {"w", tr("glFrontFace(GL_CW) for the mirror")},
                 {"l", tr("mirrored light position")},
-                {"t", tr("top view onto the wall")}};
+                {"t", tr("top view onto the wall")},
+                ex_.keyHelp()};
     }
     void init() override { placedSeed_ = s_->seed + 1; } // forces a placement on first draw
     void draw(const View& view) override;
@@ -348,10 +358,11 @@ class TransformsLab : public Lab {
 
   private:
     void project(const View& view);
-    void drawWorld(bool mirrored);
+    void drawWorld(bool mirrored, bool reference = false);
 
     TransformsState own_;
     TransformsState* s_;
+    ex::ExerciseMode ex_; // e: your projection, camera and mirror (exercises.cpp)
     std::vector<TableObjects> objects_;
     unsigned placedSeed_ = 0;
 };
@@ -369,7 +380,9 @@ void TransformsLab::project(const View& view) {
         break;
     }
     case Projection::Perspective:
-        gluPerspective(std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear, s.zFar);
+        if (!exerciseProjection(ex_, std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear,
+                                s.zFar))
+            gluPerspective(std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear, s.zFar);
         break;
     case Projection::Frustum:
         glFrustum(s.frustum[0] / zoom, s.frustum[1] / zoom, s.frustum[2] / zoom,
@@ -379,9 +392,15 @@ void TransformsLab::project(const View& view) {
     glMatrixMode(GL_MODELVIEW);
 }
 
-void TransformsLab::drawWorld(bool mirrored) {
+void TransformsLab::drawWorld(bool mirrored, bool reference) {
     glPushMatrix();
-    if (mirrored) {
+    // Your mirror (e): your calls and your glFrontFace; the lab's below otherwise.
+    const std::optional<unsigned> mine =
+        mirrored && !reference ? exerciseMirror(ex_, kWallZ) : std::nullopt;
+    if (mine) {
+        glFrontFace(GLenum(*mine));
+        if (s_->mirrorLight) setLight();
+    } else if (mirrored) {
         // Reflection in the wall plane z = kWallZ: move the wall to z = 0, flip z, move back.
         glTranslatef(0, 0, kWallZ);
         glScalef(1, 1, -1);
@@ -403,6 +422,7 @@ void TransformsLab::drawWorld(bool mirrored) {
 
 void TransformsLab::draw(const View& view) {
     TransformsState& s = *s_;
+    ex_.poll(!view.headless);
     if (placedSeed_ != s.seed || objects_.empty()) {
         objects_ = placeObjects(s.seed);
         placedSeed_ = s.seed;
@@ -438,6 +458,14 @@ void TransformsLab::draw(const View& view) {
     setLight();
     if (s.mirror && s.classroom) drawWorld(true);
     drawWorld(false);
+    if (ex_.on() && s.mirror && s.classroom) { // the reference's mirrored room, a ghost wireframe
+        ex::ExerciseMode::ghostBegin();
+        glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+        glDisable(GL_CULL_FACE);
+        drawWorld(true, true);
+        glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+        ex::ExerciseMode::ghostEnd();
+    }
     if (s.classroom) {
         // The blackboard wall: opaque, or a half-transparent glass when the mirror is on
         // (the mirrored room lies behind it, as the room seen in a mirror).
@@ -464,6 +492,12 @@ void TransformsLab::draw(const View& view) {
 
 bool TransformsLab::key(int k) {
     TransformsState& s = *s_;
+    if (ex_.key(k)) return true;
+    if (k == 'z' || k == 'x') // your moveCamera (e), one unit in or out
+        if (const auto d = exerciseCameraStep(ex_, s.distance, k == 'z' ? 1.0 : -1.0)) {
+            s.distance = float(*d);
+            return true;
+        }
     switch (k) {
     case '1':
         s.projection = Projection::Ortho;
@@ -517,6 +551,7 @@ bool TransformsLab::key(int k) {
 
 void TransformsLab::gui() {
     TransformsState& s = *s_;
+    ex_.gui();
     int proj = int(s.projection);
     ImGui::RadioButton(tr("glOrtho (1)"), &proj, 0);
     sameLineIfFits(tr("gluPerspective (2)"));

@@ -1,8 +1,13 @@
 #include "textures_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "common/gl.h"
 #include "common/gl_util.h"
 #include "common/paths.h"
+#include "core/i18n.h"
 #include "core/mesh.h"
 #include "environment.h"
 #include "texture_file.h"
@@ -18,6 +23,8 @@
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+const wb::ex::LabExercises& wbExercises_lab04();
 
 namespace wb {
 namespace {
@@ -84,7 +91,10 @@ void upload(GLuint tex, const Image& img) {
 
 class TexturesLab : public Lab {
   public:
-    explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_) {}
+    explicit TexturesLab(TexturesLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab04()) {}
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return tr("Lab 04 - textures"); }
     std::vector<KeyHelp> keys() const override {
         return {{"0", tr("overview: mirror object, textured sphere and torus")},
@@ -99,7 +109,8 @@ class TexturesLab : public Lab {
                 {"k", tr("bump mapping on/off (smooth torus, same shader)")},
                 {"o", tr("mirror object: sphere / torus")},
                 {"b", tr("background room on/off")},
-                {tr("Left/Right/Up/Down"), tr("spin the object")}};
+                {tr("Left/Right/Up/Down"), tr("spin the object")},
+                ex_.keyHelp()};
     }
     std::vector<OptionHelp> options() const override {
         return {{"texture", tr("FILE"), tr("image for the flat object instead of bricks.png")}};
@@ -143,6 +154,7 @@ class TexturesLab : public Lab {
     }
 
     void draw(const View& view) override {
+        ex_.poll(!view.headless);
         glViewport(0, 0, view.width, view.height);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -192,6 +204,7 @@ class TexturesLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         switch (k) {
         case '0':
             s_->scene = TextureScene::Overview;
@@ -247,6 +260,7 @@ class TexturesLab : public Lab {
     }
 
     void gui() override {
+        ex_.gui();
         int scene = int(s_->scene);
         ImGui::Text(tr("Scene (0-5)"));
         ImGui::RadioButton(tr("all"), &scene, 0);
@@ -273,6 +287,12 @@ class TexturesLab : public Lab {
         // A Combo takes its items as one string of NUL-separated names: translated one by one.
         const char* textures[] = {tr("bricks"), tr("uv grid")};
         ImGui::Combo(tr("texture (t)"), &s_->texture, textures, 2);
+        if (s_->scene == TextureScene::Overview)
+            ImGui::TextWrapped("%s", s_->texture == 0
+                                         ? wb::tr("overview: t swaps the textures of the sphere "
+                                                  "(uv grid) and the torus (bricks)")
+                                         : wb::tr("overview: t swaps the textures of the sphere "
+                                                  "(bricks) and the torus (uv grid)"));
         ImGui::Checkbox(tr("mirror torus (o; off = sphere)"), &s_->mirrorTorus);
         ImGui::Checkbox(tr("background room (b)"), &s_->background);
         ImGui::Checkbox(tr("bump mapping (k)"), &s_->bump);
@@ -353,10 +373,12 @@ class TexturesLab : public Lab {
         drawMirror(view);
         glPopMatrix();
         place(-1.8, -0.6, 0.48, 25.0);
-        drawLit(sphere_, 1);
+        // `t` swaps the two bodies' textures here (at start: the uv grid on the sphere, the
+        // bricks on the torus), so the key changes what the first view shows.
+        drawLit(sphere_, 1 - s_->texture);
         glPopMatrix();
         place(1.8, -0.6, 0.42, 40.0);
-        drawLit(torus_, 0);
+        drawLit(torus_, s_->texture);
         glPopMatrix();
     }
 
@@ -365,7 +387,11 @@ class TexturesLab : public Lab {
         glBindTexture(GL_TEXTURE_2D, textures_[texture]);
         applyTextureParameters();
         setLight();
-        drawMesh(mesh);
+        // Your sphere / torus (e), the reference's as a ghost wireframe; else the lab's.
+        const bool mine = (&mesh == &sphere_ && drawExerciseMesh(ex_, false, 1.2, 0, 48, 24)) ||
+                          (&mesh == &torus_ &&
+                           drawExerciseMesh(ex_, true, kBumpTorusMajor, kBumpTorusMinor, 64, 32));
+        if (!mine) drawMesh(mesh);
         glDisable(GL_LIGHTING);
     }
 
@@ -408,7 +434,16 @@ class TexturesLab : public Lab {
         glEnable(GL_TEXTURE_GEN_T);
         glDisable(GL_LIGHTING); // a perfect mirror: all its colour is the reflection
         glColor3f(1, 1, 1);
-        drawMesh(s_->mirrorTorus ? torus_ : sphere_);
+        const GlMesh& mirror = s_->mirrorTorus ? torus_ : sphere_;
+        if (exerciseSphereMapReady(ex_)) { // your (s, t) per vertex instead of GL's texgen (e)
+            glDisable(GL_TEXTURE_GEN_S);
+            glDisable(GL_TEXTURE_GEN_T);
+            drawWithExerciseSphereMap(ex_, mirror.positions.data(), mirror.normals.data(),
+                                      mirror.positions.size() / 3, mirror.indices.data(),
+                                      mirror.indices.size());
+        } else {
+            drawMesh(mirror);
+        }
         glDisable(GL_TEXTURE_GEN_S);
         glDisable(GL_TEXTURE_GEN_T);
     }
@@ -488,6 +523,7 @@ class TexturesLab : public Lab {
 
     TexturesLabState own_;
     TexturesLabState* s_;
+    ex::ExerciseMode ex_; // e: your meshes and sphere map (exercises.cpp), the reference as a ghost
     GLuint textures_[3] = {0, 0, 0};
     GLuint bumpProgram_ = 0;
     GLuint sphereMapTex_ = 0, latLongTex_ = 0;

@@ -1,5 +1,9 @@
 #include "stencil_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "common/gl.h"
 #include "common/gl_util.h"
 #include "core/affine.h"
@@ -14,6 +18,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+
+const wb::ex::LabExercises& wbExercises_lab05();
 
 namespace wb {
 namespace {
@@ -87,7 +93,10 @@ void stencilColour(uint8_t v, uint8_t* rgb) {
 
 class StencilLab : public Lab {
   public:
-    explicit StencilLab(StencilLabState* s) : s_(s ? s : &own_) {}
+    explicit StencilLab(StencilLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab05(), 'E') {}
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return tr("Lab 05 - stencil buffer"); }
     std::vector<KeyHelp> keys() const override {
         return {{"s", tr("shadow on the stairs on/off")},
@@ -97,12 +106,14 @@ class StencilLab : public Lab {
                 {"m", tr("show the raw stencil buffer (scene dimmed where 0)")},
                 {tr("Left/Right"), tr("move the object along x")},
                 {tr("Up/Down"), tr("move the object along z")},
-                {tr("PageUp/PageDown"), tr("move the object up/down")}};
+                {tr("PageUp/PageDown"), tr("move the object up/down")},
+                ex_.keyHelp()};
     }
 
     void init() override { torus_ = makeTorus(kTorusMajor, kTorusMinor, 40, 20); }
 
     void draw(const View& view) override {
+        ex_.poll(!view.headless);
         buildScene();
         s_->shadowTriangles = 0;
         glViewport(0, 0, view.width, view.height);
@@ -145,10 +156,13 @@ class StencilLab : public Lab {
             std::copy_n(&rows[size_t(view.height - 1 - y) * size_t(view.width)], view.width,
                         &s_->stencil[size_t(y) * size_t(view.width)]);
         if (s_->showMask) drawMask(view, rows);
+        // Your answers are in the picture (E): the reference's elliptical mirror as a ghost.
+        if (ex_.on() && s_->ellipseMirror && !s_->showMask) drawEllipseGhost(referenceEllipse());
     }
 
     bool key(int k) override {
         const double step = 0.1;
+        if (ex_.key(k)) return true; // E: the exercise mode's usual e is the elliptical mirror
         switch (k) {
         case 's':
             s_->shadow = !s_->shadow;
@@ -191,6 +205,7 @@ class StencilLab : public Lab {
     }
 
     void gui() override {
+        ex_.gui();
         ImGui::Checkbox(tr("shadow (s)"), &s_->shadow);
         ImGui::Checkbox(tr("naive shadow, no stencil (n)"), &s_->naiveShadow);
         ImGui::Checkbox(tr("rectangular mirror (r)"), &s_->rectMirror);
@@ -363,7 +378,7 @@ class StencilLab : public Lab {
     std::vector<Mirror> mirrors() const {
         std::vector<Mirror> out;
         if (s_->rectMirror) out.push_back({rectangle(), kStencilRectMirror});
-        if (s_->ellipseMirror) out.push_back({ellipse(), kStencilEllipseMirror});
+        if (s_->ellipseMirror) out.push_back({ellipseOutline(), kStencilEllipseMirror});
         return out;
     }
 
@@ -374,6 +389,13 @@ class StencilLab : public Lab {
                 {r[2], r[3], kMirrorZ},
                 {r[0], r[3], kMirrorZ}};
     }
+
+    // The elliptical mirror: your outline under the exercise mode (E), else the lab's.
+    std::vector<glm::dvec3> ellipseOutline() const {
+        const double* m = kEllipseMirror;
+        return exerciseEllipse(ex_, {m[0], m[1]}, m[2], m[3], kMirrorZ, 72, ellipse());
+    }
+    static std::vector<glm::dvec3> referenceEllipse() { return ellipse(); }
 
     static std::vector<glm::dvec3> ellipse() {
         std::vector<glm::dvec3> e;
@@ -412,7 +434,7 @@ class StencilLab : public Lab {
             return out;
         };
         s_->rectOutline = project(rectangle());
-        s_->ellipseOutline = project(ellipse());
+        s_->ellipseOutline = project(ellipseOutline());
     }
 
     void drawMirrors() {
@@ -445,7 +467,8 @@ class StencilLab : public Lab {
             glClipPlane(GL_CLIP_PLANE0, behind); // in world coordinates: modelview is the camera
             glEnable(GL_CLIP_PLANE0);
             glPushMatrix();
-            glMultMatrixd(glm::value_ptr(mirrorPlane(mirrorPlaneEq)));
+            glMultMatrixd(
+                glm::value_ptr(exerciseReflection(ex_, mirrorPlaneEq, mirrorPlane(mirrorPlaneEq))));
             glFrontFace(GL_CW);
             drawScene();
             if (s_->shadow && !s_->naiveShadow) {
@@ -576,7 +599,8 @@ class StencilLab : public Lab {
     // plane casts nothing on it), drawn through shadowPoint(plane, light).
     void drawFlattened(const Plane& plane, const std::vector<Triangle>& caster) {
         glPushMatrix();
-        glMultMatrixd(glm::value_ptr(shadowPoint(plane, kLight)));
+        glMultMatrixd(
+            glm::value_ptr(exerciseShadow(ex_, plane, kLight, shadowPoint(plane, kLight))));
         glBegin(GL_TRIANGLES);
         for (const Triangle& t : caster) {
             const std::vector<glm::dvec3> poly = clipToPositive(t, plane);
@@ -617,6 +641,7 @@ class StencilLab : public Lab {
 
     StencilLabState own_;
     StencilLabState* s_;
+    ex::ExerciseMode ex_; // E: your matrices and outline (exercises.cpp), the reference as a ghost
     Mesh torus_;
     std::vector<Receiver> receivers_;
     std::vector<Quad> stairBack_;

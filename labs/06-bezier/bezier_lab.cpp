@@ -1,6 +1,9 @@
 #include "bezier_lab.h"
 
+#include "exercise_view.h"
+
 #include "common/gl_util.h"
+#include "core/i18n.h"
 #include "core/teapot.h"
 
 #include "common/panel.h"
@@ -17,6 +20,8 @@
 #include <map>
 #include <string>
 #include <tuple>
+
+const wb::ex::LabExercises& wbExercises_lab06();
 
 namespace wb {
 namespace {
@@ -47,7 +52,10 @@ const float kArcColours[2][3] = {{0.95f, 0.3f, 0.25f}, {0.3f, 0.55f, 1.0f}};
 
 class BezierLab : public Lab {
   public:
-    explicit BezierLab(BezierLabState* s) : s_(s ? s : &own_) {}
+    explicit BezierLab(BezierLabState* s) : s_(s ? s : &own_), ex_(wbExercises_lab06()) {}
+    bool busy() const override { return ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     std::string title() const override { return tr("Lab 06 - Bezier curves and patches"); }
     std::vector<KeyHelp> keys() const override {
         return {{"1", tr("circle: two Bezier curves")},
@@ -60,7 +68,8 @@ class BezierLab : public Lab {
                 {"t", tr("true circle / sphere (grey)")},
                 {"n", tr("normals: GL_AUTO_NORMAL / core")},
                 {"3", tr("Utah teapot: Newell's 32 patches")},
-                {"z", tr("zoom on the spot GL leaves unlit")}};
+                {"z", tr("zoom on the spot GL leaves unlit")},
+                ex_.keyHelp()};
     }
     void init() override {
         bezierCircleVariants(); // the fits take about a second: do them before the first frame
@@ -96,6 +105,7 @@ class BezierLab : public Lab {
 
     BezierLabState own_;
     BezierLabState* s_;
+    ex::ExerciseMode ex_; // e: your circle and sphere (exercises.cpp), the reference as a ghost
     std::map<std::tuple<int, int, int>, std::vector<double>> times_; // (shape, variant, grid) -> ms
     std::map<std::tuple<int, int, int>, double> errors_; // (shape, variant, grid) -> error
     // Core tessellation of (variant, patch, grid): points then normals.
@@ -147,6 +157,7 @@ double BezierLab::meshError(int n) {
 }
 
 void BezierLab::draw(const View& view) {
+    ex_.poll(!view.headless);
     glClearColor(0.97f, 0.97f, 0.95f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glMatrixMode(GL_PROJECTION);
@@ -171,6 +182,13 @@ void BezierLab::draw(const View& view) {
 
 void BezierLab::drawCircle() {
     const BezierLabState& s = *s_;
+    if (ex_.on()) { // your curves (e), the reference's as a ghost, the true circle on top
+        glPushMatrix();
+        glScaled(kBezierCircleRadius, kBezierCircleRadius, kBezierCircleRadius);
+        drawCircleExercise(ex_, s.grid, s.showControl);
+        glPopMatrix();
+        return;
+    }
     const CircleVariant& v = bezierCircleVariants()[size_t(s.circleVariant)];
     glDisable(GL_LIGHTING);
     glDisable(GL_DEPTH_TEST);
@@ -412,6 +430,10 @@ void BezierLab::drawSphere(const View& view) {
     const BezierLabState& s = *s_;
     const SphereVariant& v = bezierSphereVariants()[size_t(s.sphereVariant)];
     glRotated(kBezierSphereTilt, 1.0, 0.0, 0.0);
+    if (ex_.on()) { // your patches (e), the reference's as a ghost
+        drawSphereExercise(ex_, s.grid, s.wireframe, s.showControl);
+        return;
+    }
     glEnable(GL_DEPTH_TEST);
     drawSurface(true);
 
@@ -486,6 +508,7 @@ void BezierLab::drawCoreMesh(size_t p) {
 }
 
 bool BezierLab::key(int k) {
+    if (ex_.key(k)) return true;
     BezierLabState& s = *s_;
     switch (k) {
     case '1':
@@ -532,6 +555,7 @@ bool BezierLab::key(int k) {
 void BezierLab::gui() {
     // The panel is narrow: one short item per line, numbers in monospaced tables.
     BezierLabState& s = *s_;
+    ex_.gui();
     ImGui::RadioButton(tr("circle (1)"), &s.shape, 0);
     sameLineIfFits(tr("sphere (2)"));
     ImGui::RadioButton(tr("sphere (2)"), &s.shape, 1);

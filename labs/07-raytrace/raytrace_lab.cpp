@@ -1,11 +1,14 @@
 #include "raytrace_lab.h"
 
+#include "exercise_view.h"
+
 #include "raster_mesh.h"
 #include "trace_job.h"
 
 #include "common/cli_values.h"
 #include "common/gl.h"
 #include "common/gl_util.h"
+#include "core/i18n.h"
 
 #include "common/panel.h"
 #include "core/i18n.h"
@@ -23,6 +26,8 @@
 #include <thread>
 
 #include <unistd.h>
+
+const wb::ex::LabExercises& wbExercises_lab07();
 
 namespace wb {
 
@@ -72,7 +77,8 @@ class RaytraceLab : public Lab {
                 {"r", tr("trace resolution 1, 1/2, 1/4")},
                 {"c", tr("clear the ray inspector")},
                 {"t", tr("run the timing experiment")},
-                {tr("click"), tr("inspect the ray tree of a pixel")}};
+                {tr("click"), tr("inspect the ray tree of a pixel")},
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -163,6 +169,7 @@ class RaytraceLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
         switch (k) {
         case 'g':
             s.traced = false;
@@ -249,8 +256,10 @@ class RaytraceLab : public Lab {
     // Non-finite pixels, or --inspect outside the image: no PNG, exit 1.
     bool headlessFailed() const override { return headlessFailed_; }
 
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
     bool busy() const override {
-        if (experiment_.active) return true;
+        if (experiment_.active || ex_.busy()) return true;
         // One more frame after the mesh was rebuilt: the panel (drawn before the scene)
         // then shows the new triangle count and budget note, not the old ones.
         if (meshJustBuilt_) return true;
@@ -399,7 +408,9 @@ class RaytraceLab : public Lab {
     uint64_t meshGeneration_ = ~uint64_t(0);
     int meshW_ = 0, meshH_ = 0;
     float meshZoom_ = 0;
-    bool meshJustBuilt_ = false; // the last draw() rebuilt the mesh (see busy())
+    bool meshJustBuilt_ = false;               // the last draw() rebuilt the mesh (see busy())
+    ex::ExerciseMode ex_{wbExercises_lab07()}; // e: seed 000's steps with your functions
+    ExerciseTrace exTrace_;                    // the last picture traced with them
     GLuint program_ = 0;
     std::string programError_;
     double rasterMs_ = 0, rasterMsSmooth_ = 0;
@@ -748,6 +759,15 @@ void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
 
 void RaytraceLab::draw(const View& view) {
     lastView_ = view;
+    ex_.poll(!view.headless);
+    if (ex_.on()) { // your intersection, normal, lighting and reflection (exercise_view.cpp)
+        glViewport(0, 0, view.width, view.height);
+        glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        exTrace_ = traceExercise(ex_, 240, 180);
+        drawExerciseTrace(exTrace_, view.width, view.height);
+        return;
+    }
     if (experiment_.active) {
         stepExperiment(view);
         if (experiment_.active && view.headless) return;
@@ -1134,7 +1154,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     ImGui::TextColored(ImColor(yellow), tr("-- BVH"));
     ImGui::SameLine();
     ImGui::TextColored(ImColor(cyan), tr("-- no BVH (brute force)"));
-    const float w = ImGui::GetContentRegionAvail().x, h = 120.0f;
+    // Tall enough for a label above each decade line and one below the top line with room
+    // between them at any UI scale (a fixed 120 px put "10 ms" over "100 ms").
+    const float th = ImGui::GetTextLineHeight();
+    const float w = ImGui::GetContentRegionAvail().x,
+                h = std::max(8.0f * th, (hi - lo) * (2.0f * th + 4.0f) +
+                                            2.0f * ImGui::GetStyle().FramePadding.y);
     const ImVec2 pos = ImGui::GetCursorScreenPos();
     // Both series on one log scale, drawn on an ImGui frame (PlotLines has no log axis
     // and would show log10 values in its tooltip); the speed-up below is a PlotHistogram.
@@ -1171,9 +1196,9 @@ void plotTimings(const std::vector<TimingRow>& rows) {
             std::snprintf(label, sizeof label, tr("%g s"), ms / 1000);
         else
             std::snprintf(label, sizeof label, tr("%g ms"), ms);
-        // Below its line, except the lowest one (above it): labels never overlap.
-        const float th = ImGui::GetTextLineHeight();
-        const float ty = d == int(lo) ? y - th : y + 1;
+        // Above its line, except the top one (below it, inside the frame): with the height
+        // above, a decade holds two labels and never overlaps its neighbours'.
+        const float ty = d == int(hi) ? y + 1 : y - th - 1;
         dl->AddText(ImVec2(x0 + 2, ty), IM_COL32(230, 230, 230, 200), label);
     }
     ImGui::SetCursorScreenPos(after);
@@ -1199,6 +1224,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
 } // namespace
 
 void RaytraceLab::gui() {
+    ex_.gui();
+    if (ex_.on())
+        wrapText(exTrace_.usedYours.empty()
+                     ? tr("the picture: the reference's steps (none of yours is done yet)")
+                     : trf("the picture uses your %s; the reference over it as a ghost",
+                           exTrace_.usedYours.c_str()));
     wrapText(tr(scene_.about.c_str())); // N_() where the scenes are made
     if (ImGui::BeginCombo(tr("scene"), s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())
@@ -1244,6 +1275,11 @@ void RaytraceLab::gui() {
     ImGui::Separator();
     const TraceStatus st = job_.status();
     const ExperimentStatus es = experimentStatus();
+    if (es.cancelled && !es.active) {
+        wrapText(tr("timing experiment cancelled (x): the rows measured so far are in the table "
+                    "below; t starts it again"));
+        ImGui::Separator();
+    }
     if (es.active) {
         // Up here, where it is seen without scrolling: the table and plot are at the end.
         wrapf(tr("timing experiment: %s; %.1f s"), es.current.c_str(), es.seconds);
@@ -1266,8 +1302,8 @@ void RaytraceLab::gui() {
         // Live while tracing (tiles finished so far); one number per row, right-aligned.
         if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_SizingStretchProp)) {
             // The counts get the room of the longest (10 digits); the names wrap beside them.
-            ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
-            ImGui::TableSetupColumn("count", ImGuiTableColumnFlags_WidthFixed,
+            ImGui::TableSetupColumn(tr("what"), ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableSetupColumn(tr("count"), ImGuiTableColumnFlags_WidthFixed,
                                     ImGui::CalcTextSize("0000000000").x);
             auto row = [](const char* what, long long n) {
                 ImGui::TableNextRow();
@@ -1365,9 +1401,11 @@ void RaytraceLab::gui() {
     if (!timings_.empty() &&
         ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn(tr("scene"));
-        ImGui::TableSetupColumn(tr("raster"));
-        ImGui::TableSetupColumn(tr("BVH"));
-        ImGui::TableSetupColumn(tr("no BVH"));
+        // Units in the headers, numbers alone in the cells: the five columns fit the
+        // 420-px panel (with "ms"/"s" in every cell the last column was cut).
+        ImGui::TableSetupColumn(tr("raster ms"));
+        ImGui::TableSetupColumn(tr("BVH s"));
+        ImGui::TableSetupColumn(tr("no BVH s"));
         ImGui::TableSetupColumn(tr("Mray/s"));
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
@@ -1375,13 +1413,12 @@ void RaytraceLab::gui() {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(r.scene.c_str());
             ImGui::TableNextColumn();
-            ImGui::Text(tr("%.1fms"), r.rasterMs);
+            ImGui::Text("%.1f", r.rasterMs);
             ImGui::TableNextColumn();
-            if (r.traceSeconds >= 0)
-                ImGui::Text(tr("%.3fs%s"), r.traceSeconds, r.bvhBuilt ? "" : "*");
+            if (r.traceSeconds >= 0) ImGui::Text("%.3f%s", r.traceSeconds, r.bvhBuilt ? "" : "*");
             ImGui::TableNextColumn();
             if (r.bruteSeconds >= 0)
-                ImGui::Text(r.bruteEstimated ? tr("~%.0fs") : tr("%.3fs"), r.bruteSeconds);
+                ImGui::Text(r.bruteEstimated ? "~%.0f" : "%.3f", r.bruteSeconds);
             else
                 ImGui::TextUnformatted("-");
             ImGui::TableNextColumn();

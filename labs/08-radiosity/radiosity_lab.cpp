@@ -1,5 +1,9 @@
 #include "radiosity_lab.h"
 
+#include "exercise_view.h"
+
+#include "core/i18n.h"
+
 #include "gl_hemicube.h"
 #include "hemicube_view.h"
 #include "patch_view.h"
@@ -27,6 +31,8 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+
+const wb::ex::LabExercises& wbExercises_lab08();
 
 namespace wb {
 
@@ -82,7 +88,8 @@ class RadiosityLab : public Lab {
                 {"[", tr("smaller patches")},
                 {"]", tr("larger patches")},
                 {"n", tr("next scene")},
-                {tr("click"), tr("a patch: its F row and hemicube")}};
+                {tr("click"), tr("a patch: its F row and hemicube")},
+                ex_.keyHelp()};
     }
 
     std::vector<OptionHelp> options() const override {
@@ -204,6 +211,7 @@ class RadiosityLab : public Lab {
     }
 
     bool key(int k) override {
+        if (ex_.key(k)) return true;
 #if defined(WB_HEADLESS)
         // Headless, keys are a script (--keys "r s"): a run finishes before the next key.
         finishRun();
@@ -266,7 +274,13 @@ class RadiosityLab : public Lab {
     }
 
     bool busy() const override {
-        return running();
+        return running() || ex_.busy();
+    }
+    int pollMs() const override {
+        return ex_.pollMs();
+    }
+    bool poll() override {
+        return ex_.shellPoll();
     }
 
     void draw(const View& view) override;
@@ -745,6 +759,7 @@ class RadiosityLab : public Lab {
     static constexpr size_t kMaxPatches = 40000; // [ ] and a stop here: the lab stays responsive
 
     std::unique_ptr<Model> model_;
+    ex::ExerciseMode ex_{wbExercises_lab08()}; // e: your form factors (exercises.cpp)
     PatchView view_;
     GlHemicube glHemicube_;
     bool glGeometryOk_ = false;
@@ -825,8 +840,13 @@ int RadiosityLab::pick(const View& view, int x, int y) {
 }
 
 void RadiosityLab::draw(const View& view) {
+    ex_.poll(!view.headless);
     glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (ex_.on()) { // your form factors and rays (exercise_view.cpp)
+        drawRadiosityExercise(ex_, view);
+        return;
+    }
     if (!model_) return;
     // Headless: a run started by the replayed keys is waited for (busy() until done).
     if (view.headless) {
@@ -935,6 +955,10 @@ void RadiosityLab::drawOverlay(const View& view) {
 }
 
 void RadiosityLab::gui() {
+    ex_.gui();
+    if (ex_.on())
+        for (const std::string& line : radiosityExerciseLines(ex_))
+            ImGui::TextWrapped("%s", line.c_str());
     if (!model_) {
         ImGui::TextWrapped("%s", message_.c_str());
         return;

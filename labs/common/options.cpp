@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -67,7 +69,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
         check("--out", !v.empty(), tr("--out needs a file name"));
         o.out = v;
     });
-    cli::addSizeOption(app, "--size", kMaxSide, o.width, o.height, valueError, "");
+    CLI::Option* size =
+        cli::addSizeOption(app, "--size", kMaxSide, o.width, o.height, valueError, "");
     app.add_option_function<std::string>("--keys", [&](const std::string& v) {
         std::vector<int> codes;
         std::string keyError;
@@ -131,6 +134,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
         }
         return false;
     }
+    o.sizeGiven = size && size->count() > 0;
     const auto extras = app.remaining();
     if (!extras.empty()) {
         const std::string& arg = extras.front();
@@ -210,6 +214,38 @@ int windowWidth(const ShellOptions& opts, bool panelFillsWindow) {
     return opts.width + (panelFillsWindow ? 0 : int(float(kPanelWidth) * opts.uiScale + 0.5f));
 }
 
+float maxUiScaleFor(int width) {
+    return std::floor(float(width) * kMaxPanelShare / float(kPanelWidth) * 100.0f) / 100.0f;
+}
+
+int sceneViewHeight(int sceneWidth, int sceneHeight) {
+    const int most = int(float(sceneWidth) / kMinSceneAspect + 0.5f);
+    return std::max(1, std::min(sceneHeight, most));
+}
+
+WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenWidth,
+                    int screenHeight, float uiScale) {
+    WindowFit f;
+    const int maxW = std::max(320, screenWidth - kScreenMarginX);
+    const int maxH = std::max(240, screenHeight - kScreenMarginY);
+    const float grow = std::max(1.0f, uiScale);
+    f.height = std::min(maxH, opts.sizeGiven ? opts.height : int(float(opts.height) * grow + 0.5f));
+    if (panelFillsWindow) { // the launcher: its cards want room as the text grows
+        f.width =
+            std::min(maxW, opts.sizeGiven ? opts.width : int(float(opts.width) * grow + 0.5f));
+        f.uiScale = uiScale;
+        return f;
+    }
+    // The scene as asked, or as wide as 4:3 at the window's height.
+    const int scene =
+        opts.sizeGiven ? opts.width : std::max(opts.width, int(float(f.height) * kMinSceneAspect));
+    const int panel = int(float(kPanelWidth) * uiScale + 0.5f);
+    f.width = std::min(maxW, scene + panel);
+    f.uiScale = std::max(kMinUiScale, std::min(uiScale, maxUiScaleFor(f.width)));
+    f.panelWidth = int(float(kPanelWidth) * f.uiScale + 0.5f);
+    return f;
+}
+
 std::string usageText(const std::string& program, const Lab& lab) {
     const bool fills = lab.panelFillsWindow();
     ShellOptions defaults;
@@ -232,7 +268,8 @@ std::string usageText(const std::string& program, const Lab& lab) {
     else
         flag("--size WxH", trf("headless: image size (default %s); windowed: the scene's\nsize, "
                                "the panel (%d px at --ui-scale 1) is added beside it:\nthe window "
-                               "opens at %s by default",
+                               "opens at %s by default,\nless where the screen is smaller (it "
+                               "always fits)",
                                image.c_str(), kPanelWidth, window.c_str()));
     flag("--ui-scale X", tr("panel text and widgets X times larger, 0.5..4 (projector: 2);\nin the "
                             "window also Ctrl+= / Ctrl+- or the panel's View slider"));
@@ -246,8 +283,9 @@ std::string usageText(const std::string& program, const Lab& lab) {
     flag("--frames N", tr("windowed: quit after N frames (smoke tests)"));
     flag("--screenshot FILE.png", tr("windowed: save the last frame before quitting"));
     flag("--smoke", tr("windowed: press each one-letter key of the lab twice, a frame apart"));
-    flag("--check-panel", tr("headless: lay the panel out at the default size (after --keys, "
-                             "then\nafter each one-letter key) and fail if any text is clipped"));
+    flag("--check-panel", tr("lay the panel out as the window has it on 1024x768, 1280x800,\n"
+                             "1600x1000 and 1920x1080 screens (after --keys, then after each\n"
+                             "one-letter key) and fail if any text is clipped (no window)"));
     for (const auto& o : lab.options())
         flag("--" + o.name + (o.argument.empty() ? "" : " " + o.argument), o.what);
     s << "\n" << tr("Keys:") << "\n";

@@ -195,6 +195,7 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
         ImGui::SliderFloat("##uiscale", &p.requestedScale, kMinUiScale, kMaxUiScale, "%.2f");
         p.scaleSliderActive =
             ImGui::IsItemActive(); // the shell applies the scale when it is let go
+        if (!p.scaleNote.empty()) ImGui::TextWrapped("%s", p.scaleNote.c_str());
         if (!fills)
             ImGui::TextWrapped(tr("Drag the panel's left edge to make it wider (now %.0f px)."),
                                double(p.width));

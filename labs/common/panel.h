@@ -23,6 +23,7 @@ struct PanelState {
     bool measureFps = false; // redraw continuously so the frame time means frames per second
     double frameMs = 0.0; // CPU time of the last frame (smoothed while measuring fps), milliseconds
     std::string lastScreenshot; // path or error of the last screenshot
+    std::string scaleNote;      // why the UI scale is lower than asked (empty when it is not)
     bool screenshotRequested = false;
     bool keysLikeShell = true; // false for the launcher: no drag / zoom / h lines
 };

@@ -17,6 +17,12 @@ int runLab(int argc, char** argv, LabFactory factory);
 // Returns true when used. Esc is handled by each path (quit).
 bool shellKey(int code, View& view, bool& panelVisible);
 
+// Zoom is kept within kMinZoom..kMaxZoom (48 steps of 1.1 either way): unbounded, ~930
+// presses of + overflow it to infinity and - can never bring it back.
+constexpr float kMinZoom = 0.01f;
+constexpr float kMaxZoom = 100.0f;
+float clampZoom(float zoom);
+
 // Checks before any work that `path` can be written (creating it, then removing it if it
 // did not exist), so a long render never ends in "cannot write". False with a message naming it.
 bool checkWritable(const std::string& path, std::string& error);

@@ -3,7 +3,9 @@
 
 #include "core/file_read.h"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
@@ -12,14 +14,18 @@
 
 namespace wb {
 
+float clampZoom(float zoom) {
+    return std::isfinite(zoom) ? std::clamp(zoom, kMinZoom, kMaxZoom) : 1.0f;
+}
+
 bool shellKey(int code, View& view, bool& panelVisible) {
     switch (code) {
     case '+':
     case '=':
-        view.zoom *= 1.1f;
+        view.zoom = clampZoom(view.zoom * 1.1f);
         return true;
     case '-':
-        view.zoom /= 1.1f;
+        view.zoom = clampZoom(view.zoom / 1.1f);
         return true;
     case 'h':
         panelVisible = !panelVisible;

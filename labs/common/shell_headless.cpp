@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
 
 namespace wb {
 
@@ -43,8 +44,10 @@ bool renderHeadless(Lab& lab, int width, int height, const std::vector<int>& key
 namespace {
 
 // --check-panel: the lab in an OSMesa context of the scene's size, its panel laid out by
-// ImGui (no GL drawing) at the window's default size and scale, once after --keys and once
-// after each one-letter key of the lab; every clipped text is printed. Exit 0 when none.
+// ImGui (no GL drawing) as a window opened on each screen of kCheckedScreens has it (the
+// width, panel width and UI scale fitWindow gives there for --ui-scale), once after --keys
+// and once after each one-letter key of the lab; every clipped text is printed. Exit 0 when
+// none.
 int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
                const std::vector<int>& keys) {
     const int width = opts.width, height = opts.height;
@@ -66,65 +69,80 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
-    const std::string fontMessage = setupImGuiFonts(opts.uiScale);
-    if (!fontMessage.empty()) std::fprintf(stderr, "%s: %s\n", program, fontMessage.c_str());
-    unsigned char* pixels = nullptr;
-    int tw = 0, th = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &tw, &th); // builds the atlas; no texture is needed
-    const float windowW = float(windowWidth(opts, lab.panelFillsWindow()));
-    // Tall enough that no widget is scrolled out of view (ImGui draws only what is visible);
-    // the scrollbar's room is kept as in the real, shorter window.
-    const float tall = 20000.0f;
-    io.DisplaySize = ImVec2(windowW, tall);
-    PanelState panel;
-    panel.uiScale = panel.requestedScale = opts.uiScale;
-    panel.width = 0.0f;
-
     std::vector<std::string> reported; // each text once, with the first state it was seen in
     int clipped = 0, untranslated = 0;
     // --lang qps: every text must have come through the catalogue (panel_check.h).
     const bool pseudo = language() == "qps";
-    auto check = [&](const std::string& state) {
-        glViewport(0, 0, width, height);
-        lab.draw(view);
-        // Three frames: the first sizes the window, the second adds the scrollbar, the third is
-        // checked.
-        for (int frame = 0; frame < 3; ++frame) {
-            io.DeltaTime = 1.0f / 60.0f;
-            ImGui::NewFrame();
-            if (frame == 2) panelcheck::start();
-            drawPanel(lab, panel, windowW, tall, true);
-            ImGui::Render();
+    // The window a user opens (default scene size); --size only sizes the context here.
+    ShellOptions asOpened;
+    asOpened.uiScale = opts.uiScale;
+    for (const ScreenSize& screen : kCheckedScreens) {
+        const WindowFit fit =
+            fitWindow(asOpened, lab.panelFillsWindow(), screen.width, screen.height, opts.uiScale);
+        const std::string fontMessage = setupImGuiFonts(fit.uiScale);
+        if (!fontMessage.empty() && &screen == kCheckedScreens)
+            std::fprintf(stderr, "%s: %s\n", program, fontMessage.c_str());
+        unsigned char* pixels = nullptr;
+        int tw = 0, th = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &tw, &th); // builds the atlas; no texture needed
+        const float windowW = float(fit.width);
+        // Tall enough that no widget is scrolled out of view (ImGui draws only what is
+        // visible); the scrollbar's room is kept as in the real, shorter window.
+        const float tall = 20000.0f;
+        io.DisplaySize = ImVec2(windowW, tall);
+        PanelState panel;
+        panel.uiScale = panel.requestedScale = fit.uiScale;
+        panel.width = float(fit.panelWidth);
+        panel.resetWidth = true;
+        const std::string where =
+            trf("on a %dx%d screen (window %dx%d, UI scale %.2f)", screen.width, screen.height,
+                fit.width, fit.height, double(fit.uiScale));
+        auto check = [&](const std::string& state) {
+            glViewport(0, 0, width, height);
+            lab.draw(view);
+            // Three frames: the first sizes the window, the second adds the scrollbar, the
+            // third is checked.
+            for (int frame = 0; frame < 3; ++frame) {
+                io.DeltaTime = 1.0f / 60.0f;
+                ImGui::NewFrame();
+                if (frame == 2) panelcheck::start();
+                drawPanel(lab, panel, windowW, tall, true);
+                ImGui::Render();
+            }
+            for (const auto& c : panelcheck::stop()) {
+                if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
+                reported.push_back(c.text);
+                std::printf(tr("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s) %s\n"),
+                            program, state.c_str(), c.text.c_str(), double(c.overflow),
+                            c.window.c_str(), where.c_str());
+                ++clipped;
+            }
+            for (const auto& text :
+                 pseudo ? panelcheck::drawnTexts() : std::vector<std::string>{}) {
+                const std::string words = panelcheck::untranslatedWords(text);
+                if (words.empty() ||
+                    std::find(reported.begin(), reported.end(), text) != reported.end())
+                    continue;
+                reported.push_back(text);
+                std::printf(tr("%s: untranslated %s: \"%s\" (English: %s)\n"), program,
+                            state.c_str(), text.c_str(), words.c_str());
+                ++untranslated;
+            }
+        };
+        check(keys.empty() ? "at start" : "after --keys");
+        for (const auto& k : lab.keys()) {
+            if (k.key.size() != 1) continue;
+            const int code = static_cast<unsigned char>(k.key[0]);
+            if (!shellKey(code, view, panelShown)) lab.key(code);
+            check("after key '" + k.key + "'");
         }
-        for (const auto& c : panelcheck::stop()) {
-            if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
-            reported.push_back(c.text);
-            std::printf(tr("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s)\n"), program,
-                        state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str());
-            ++clipped;
-        }
-        for (const auto& text : pseudo ? panelcheck::drawnTexts() : std::vector<std::string>{}) {
-            const std::string words = panelcheck::untranslatedWords(text);
-            if (words.empty() ||
-                std::find(reported.begin(), reported.end(), text) != reported.end())
-                continue;
-            reported.push_back(text);
-            std::printf(tr("%s: untranslated %s: \"%s\" (English: %s)\n"), program, state.c_str(),
-                        text.c_str(), words.c_str());
-            ++untranslated;
-        }
-    };
-    check(keys.empty() ? "at start" : "after --keys");
-    for (const auto& k : lab.keys()) {
-        if (k.key.size() != 1) continue;
-        const int code = static_cast<unsigned char>(k.key[0]);
-        if (!shellKey(code, view, panelShown)) lab.key(code);
-        check("after key '" + k.key + "'");
+        std::printf(tr("%s: panel check %s: done\n"), program, where.c_str());
     }
     ImGui::DestroyContext(); // the GL context finishes and goes at the end of the scope
-    std::printf(tr("%s: panel check at %.0fx%d, UI scale %.2f, language %s: %d clipped text%s"),
-                program, double(windowW), opts.height, double(opts.uiScale), language().c_str(),
-                clipped, clipped == 1 ? "" : "s");
+    std::printf(tr("%s: panel check on %zu screen sizes, UI scale %.2f asked: %d clipped text%s "
+                   "(language %s)"),
+                program, std::size(kCheckedScreens), double(opts.uiScale), clipped,
+                clipped == 1 ? "" : "s", language().c_str());
     if (pseudo) std::printf(tr(", %d untranslated"), untranslated);
     std::printf("\n");
     return clipped || untranslated ? 1 : 0;

@@ -9,6 +9,8 @@
 
 #include "core/i18n.h"
 
+#include "core/i18n.h"
+
 #include <GL/freeglut.h>
 #include <GL/glx.h>
 #include <imgui.h>
@@ -35,6 +37,7 @@ struct WindowState {
     View view; // the scene's part of the window (left of the panel)
     int windowWidth = kDefaultWidth + kPanelWidth; // whole window, pixels
     int windowHeight = kDefaultHeight;
+    int screenWidth = 0, screenHeight = 0; // GLUT's screen: the window is fitted to it
     bool panelVisible = true;
     PanelState panel; // the panel's own settings (width, UI scale, measure fps)
     ImGuiInput input; // GLUT events queued for ImGui, see imgui_input.h
@@ -43,6 +46,7 @@ struct WindowState {
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
     bool timerPending = false;     // a glutTimerFunc redraw is on its way (busy lab)
+    bool pollPending = false;      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;         // left button down outside the panel
     bool moved = false;            // the drag moved far enough to be a rotation, not a click
@@ -66,7 +70,9 @@ int panelWidth() {
 void layout() {
     int sceneWidth = g->panelVisible ? g->windowWidth - panelWidth() : g->windowWidth;
     g->view.width = sceneWidth > 1 ? sceneWidth : 1;
-    g->view.height = g->windowHeight > 1 ? g->windowHeight : 1;
+    // A narrow, tall scene area (a wide panel, a tall screen) gets the scene at the labs'
+    // 4:3 at its bottom: they frame the subject by its height, so a narrower view cuts it.
+    g->view.height = sceneViewHeight(g->view.width, g->windowHeight > 1 ? g->windowHeight : 1);
 }
 
 void quit() {
@@ -115,16 +121,31 @@ bool saveScreenshot(const std::string& path) {
 
 // A new UI scale: fonts rebuilt at the new size (sharp, not stretched), style scaled, the
 // panel's width scaled with it. Between frames only.
+// Ctrl+= and the slider do what --ui-scale does: the window is fitted to the screen again
+// for the new scale (fitWindow), so the scene keeps its share and the panel its lines; a
+// scale whose panel would not fit is lowered to the largest that does, and the panel says so.
 void applyUiScale() {
     PanelState& p = g->panel;
     if (p.scaleSliderActive || p.requestedScale == p.uiScale) return;
-    const float ratio = p.requestedScale / p.uiScale;
-    p.uiScale = p.requestedScale;
+    const bool fills = g->lab->panelFillsWindow();
+    const WindowFit fit =
+        fitWindow(g->opts, fills, g->screenWidth, g->screenHeight, p.requestedScale);
+    p.scaleNote =
+        fit.uiScale < p.requestedScale
+            ? trf("UI scale %.2f does not fit beside the scene on this %dx%d screen: "
+                  "%.2f is the largest that does.",
+                  double(p.requestedScale), g->screenWidth, g->screenHeight, double(fit.uiScale))
+            : "";
+    p.requestedScale = fit.uiScale;
+    if (fit.uiScale == p.uiScale) return;
+    p.uiScale = fit.uiScale;
     ImGui_ImplOpenGL2_DestroyFontsTexture(); // re-created by the next ImGui_ImplOpenGL2_NewFrame
     const std::string message = setupImGuiFonts(p.uiScale);
     if (!message.empty()) std::fprintf(stderr, "%s: %s\n", g->program.c_str(), message.c_str());
-    p.width = std::floor(p.width * ratio + 0.5f);
+    p.width = float(fit.panelWidth);
     p.resetWidth = true;
+    if (fit.width != g->windowWidth || fit.height != g->windowHeight)
+        glutReshapeWindow(fit.width, fit.height);
 }
 
 // ImGui's mouse cursor (resize arrows on the panel's edge) as GLUT's.
@@ -161,9 +182,27 @@ void busyTimer(int) {
     glutPostRedisplay();
 }
 
+void scheduleNextFrame(bool busyBefore = false);
+
+// Lab::pollMs(): the lab looks (e.g. at a file) without a redraw, and asks for one on change.
+void pollTimer(int) {
+    g->pollPending = false;
+    if (g->lab->poll())
+        glutPostRedisplay();
+    else
+        scheduleNextFrame();
+}
+
 // Redraw on change only: input (and the frames ImGui needs after it), a queued event, a
 // lab working in the background, --frames / --smoke runs, or "measure fps".
-void scheduleNextFrame() {
+// busyBefore: the lab was busy when this frame started; its work may have ended while the
+// frame was drawn, so the frame may show a state older than the end: one more frame then.
+void scheduleNextFrame(bool busyBefore) {
+    const int pollMs = g->lab->pollMs(); // asked first: a lab may stop counting polls as busy
+    if (busyBefore && !g->lab->busy()) {
+        glutPostRedisplay();
+        return;
+    }
     const bool continuous = g->panel.measureFps || g->opts.frames > 0 || !g->smokeKeys.empty();
     if (continuous || g->input.pending() || g->settleFrames > 0 || ImGui::GetIO().WantTextInput) {
         if (g->settleFrames > 0) --g->settleFrames;
@@ -171,11 +210,15 @@ void scheduleNextFrame() {
     } else if (g->lab->busy() && !g->timerPending) {
         g->timerPending = true;
         glutTimerFunc(kBusyRedrawMs, busyTimer, 0);
+    } else if (pollMs > 0 && !g->lab->busy() && !g->pollPending) {
+        g->pollPending = true;
+        glutTimerFunc(unsigned(pollMs), pollTimer, 0);
     }
 }
 
 void display() {
     auto t0 = std::chrono::steady_clock::now();
+    const bool busyBefore = g->lab->busy();
     if (!g->smokeKeys.empty()) { // as if typed, through the same path as real key presses
         labKey(g->smokeKeys.front());
         g->smokeKeys.erase(g->smokeKeys.begin());
@@ -234,7 +277,7 @@ void display() {
     g->panel.frameMs = g->panel.measureFps && g->frame > 0 ? 0.9 * g->panel.frameMs + 0.1 * ms : ms;
     ++g->frame;
     if (lastFrame) return quit();
-    scheduleNextFrame();
+    scheduleNextFrame(busyBefore);
 }
 
 void reshape(int w, int h) {
@@ -319,7 +362,9 @@ void mouse(int button, int state, int x, int y) {
         g->downX = g->lastX = x;
         g->downY = g->lastY = y;
     } else {
-        if (g->dragging && !g->moved) g->lab->click(x, y, g->view);
+        // In the scene's coordinates: it is drawn at the bottom of its area (layout()).
+        if (g->dragging && !g->moved)
+            g->lab->click(x, y - (g->windowHeight - g->view.height), g->view);
         g->dragging = false;
     }
 }
@@ -347,7 +392,7 @@ void wheel(int button, int dir, int x, int y) {
     g->input.wheel(dir, x, y, glutGetModifiers());
     changed();
     if (ImGui::GetIO().WantCaptureMouse) return;
-    g->view.zoom *= dir > 0 ? 1.1f : 1.0f / 1.1f;
+    g->view.zoom = clampZoom(g->view.zoom * (dir > 0 ? 1.1f : 1.0f / 1.1f));
 }
 
 // The headless renderer is the same lab compiled against OSMesa, installed next to us.
@@ -381,7 +426,9 @@ int runLab(int argc, char** argv, LabFactory factory) {
         std::fputs(usageText(argv[0], *state.lab).c_str(), stdout);
         return 0;
     }
-    if (state.opts.headless) return execHeadless(argv);
+    // --check-panel lays the panel out for the screens a class uses, not this one: the same
+    // headless check with or without a display.
+    if (state.opts.headless || state.opts.checkPanel) return execHeadless(argv);
     const char* displayEnv = std::getenv("DISPLAY");
     if (!displayEnv || !*displayEnv) {
         std::fprintf(
@@ -402,11 +449,25 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    // --size is the scene's size; the panel is added beside it (usageText states the same sum).
-    state.panel.uiScale = state.panel.requestedScale = state.opts.uiScale;
+    // --size is the scene's size; the panel is added beside it (usageText states the same
+    // sum), and the window is fitted to the screen it opens on.
+    state.screenWidth = glutGet(GLUT_SCREEN_WIDTH);
+    state.screenHeight = glutGet(GLUT_SCREEN_HEIGHT);
+    const WindowFit fit = fitWindow(state.opts, state.lab->panelFillsWindow(), state.screenWidth,
+                                    state.screenHeight, state.opts.uiScale);
+    if (fit.uiScale < state.opts.uiScale) {
+        state.panel.scaleNote = trf(
+            "UI scale %.2f does not fit beside the scene on this %dx%d screen: %.2f is the "
+            "largest that does.",
+            double(state.opts.uiScale), state.screenWidth, state.screenHeight, double(fit.uiScale));
+        std::fprintf(stderr, "%s: %s\n", argv[0], state.panel.scaleNote.c_str());
+    }
+    state.panel.uiScale = state.panel.requestedScale = fit.uiScale;
+    state.panel.width = float(fit.panelWidth);
+    state.panel.resetWidth = true; // the first frame sizes the panel to it
     state.panel.keysLikeShell = !state.lab->panelFillsWindow();
-    state.windowWidth = windowWidth(state.opts, state.lab->panelFillsWindow());
-    state.windowHeight = state.opts.height;
+    state.windowWidth = fit.width;
+    state.windowHeight = fit.height;
     glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());
     state.language = language();

@@ -29,6 +29,14 @@ std::string binDir() {
 }
 
 namespace {
+std::vector<std::string> g_labFlags;
+} // namespace
+
+void setLabFlags(std::vector<std::string> flags) {
+    g_labFlags = std::move(flags);
+}
+
+namespace {
 
 // The labs in kLabs (its last entry is the null terminator). A constant, so the compiler
 // sees every kLabs[i] in bounds (GCC's -Warray-bounds under the sanitizers could not).
@@ -132,9 +140,12 @@ class Launcher : public Lab {
             "Choose a lab (click its picture or press its number); it opens in its own window."));
         const float scale =
             ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
+        char scaleText[16];
+        std::snprintf(scaleText, sizeof scaleText, "%.2f", double(scale));
+        scaleNow_ = scaleText;
         const ImVec2 thumb(float(kThumbWidth) * 0.5f * scale, float(kThumbHeight) * 0.5f * scale);
         const int columns =
-            ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 260.0f * scale) ? 2 : 1;
+            ImGui::GetContentRegionAvail().x > 2.0f * (thumb.x + 220.0f * scale) ? 2 : 1;
         if (ImGui::BeginTable("labs", columns,
                               ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_PadOuterX)) {
             for (int i = 0; i < labCount(); ++i) {
@@ -156,7 +167,8 @@ class Launcher : public Lab {
             clicked = ImGui::ImageButton(
                 reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
         } else {
-            clicked = ImGui::Button(c.status.empty() ? tr("(no picture)") : tr(c.status.c_str()), thumb);
+            clicked =
+                ImGui::Button(c.status.empty() ? tr("(no picture)") : tr(c.status.c_str()), thumb);
         }
         ImGui::SameLine();
         ImGui::BeginGroup();
@@ -184,9 +196,12 @@ class Launcher : public Lab {
         const LabEntry& lab = kLabs[i];
         const std::string headless = binDir() + "/" + lab.executable + "-headless";
         const std::string built = binDir() + "/thumbs/" + lab.thumbnail;
+        const std::string installed = assetPath(std::string("thumbs/") + lab.thumbnail); // .deb
         const std::string cached = cacheDir() + "/" + lab.thumbnail;
         Card& c = cards_[size_t(i)];
         if (mtime(built) >= mtime(headless) && upload(c, built)) return;
+        // A package's files come together (stripping at packaging makes the programs newer).
+        if (mtime(built) == 0 && mtime(installed) > 0 && upload(c, installed)) return;
         if (mtime(cached) >= mtime(headless) && upload(c, cached)) return;
         mkdir(cacheDir().c_str(), 0755);
         c.renderPath = cached;
@@ -235,9 +250,29 @@ class Launcher : public Lab {
         pid_t pid = fork();
         if (pid == 0) {
             if (fork() == 0) {
-                // The lab opens in the language the launcher shows now (it may have been switched).
-                execl(exe.c_str(), exe.c_str(), "--lang", language().c_str(),
-                      static_cast<char*>(nullptr));
+                // The launcher's flags (--ui-scale, --lang, ...), with the UI scale and the
+                // language it has now (Ctrl+= or View > Language may have changed them) in place
+                // of the ones it was started with.
+                std::vector<std::string> args = {exe};
+                for (size_t k = 0; k < g_labFlags.size(); ++k) {
+                    if (g_labFlags[k] == "--ui-scale" || g_labFlags[k] == "--lang") {
+                        ++k;
+                        continue;
+                    }
+                    if (g_labFlags[k].rfind("--ui-scale=", 0) == 0 ||
+                        g_labFlags[k].rfind("--lang=", 0) == 0)
+                        continue;
+                    args.push_back(g_labFlags[k]);
+                }
+                args.push_back("--ui-scale");
+                args.push_back(scaleNow_);
+                args.push_back("--lang");
+                args.push_back(language());
+                std::vector<char*> argv;
+                for (auto& a : args)
+                    argv.push_back(a.data());
+                argv.push_back(nullptr);
+                execv(exe.c_str(), argv.data());
                 std::perror(exe.c_str());
             }
             _exit(0);
@@ -249,6 +284,7 @@ class Launcher : public Lab {
 
     std::vector<Card> cards_;
     std::string status_;
+    std::string scaleNow_ = "1"; // the UI scale the labs are started with
 };
 
 } // namespace

@@ -66,7 +66,10 @@ int main(int argc, char** argv) {
             return std::strcmp(argv[i], "--help") ? 2 : 0;
         }
     }
-    if (!headless) return wb::runLab(argc, argv, wb::makeLauncher);
+    if (!headless) {
+        wb::setLabFlags(wb::labFlagsFrom(argc, argv));
+        return wb::runLab(argc, argv, wb::makeLauncher);
+    }
     std::printf(wb::tr("No display: rendering every lab headless into %s/\n"), outDir.c_str());
     int failed = wb::renderAllHeadless(outDir, size);
     return failed ? 1 : 0;

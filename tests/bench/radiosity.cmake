@@ -12,3 +12,9 @@ if(NOT WORKBENCH_SANITIZE)
   add_test(NAME "radiosity_bench --quick"
            COMMAND radiosity_bench --quick --out-dir ${CMAKE_BINARY_DIR}/bench-out/radiosity-quick)
 endif()
+
+# Issue 19 item 12: our per-surface means of the converged Cornell box, for the Blender/Cycles
+# reference (scripts/bench/radiosity_reference.sh). A bench, not a test: blender is no CI dependency.
+add_executable(radiosity_reference radiosity_reference.cpp)
+target_compile_options(radiosity_reference PRIVATE ${WB_WARNINGS})
+target_link_libraries(radiosity_reference PRIVATE core)

@@ -298,15 +298,15 @@ ScaleRow fullRun(double edge, int res, int threads, const std::string& what) {
     return r;
 }
 
-std::string keepGlSection(const std::string& path) {
+// A section other benches write between <!-- NAME:begin --> and <!-- NAME:end -->, kept as it is.
+std::string keepSection(const std::string& path, const std::string& name, const std::string& placeholder) {
     std::ifstream in(path);
     std::stringstream ss;
     ss << in.rdbuf();
     const std::string doc = ss.str();
-    const std::string begin = "<!-- gl-hemicube:begin -->", end = "<!-- gl-hemicube:end -->";
+    const std::string begin = "<!-- " + name + ":begin -->", end = "<!-- " + name + ":end -->";
     const std::size_t a = doc.find(begin), b = doc.find(end);
-    if (a == std::string::npos || b == std::string::npos || b < a)
-        return begin + "\n(GL hemicube rows: run bin/radiosity_gl_bench --write docs/bench/radiosity.md)\n" + end + "\n";
+    if (a == std::string::npos || b == std::string::npos || b < a) return begin + "\n" + placeholder + "\n" + end + "\n";
     return doc.substr(a, b + end.size() - a) + "\n";
 }
 
@@ -526,7 +526,10 @@ int main(int argc, char** argv) {
 
     // Report.
     const std::string md = outDir + "/radiosity.md";
-    const std::string glSection = keepGlSection(md);
+    const std::string glSection =
+        keepSection(md, "gl-hemicube", "(GL hemicube rows: run bin/radiosity_gl_bench --write docs/bench/radiosity.md)");
+    const std::string referenceSection = keepSection(
+        md, "reference", "(Cycles reference: run scripts/bench/radiosity_reference.sh, paste its table)");
     std::ofstream out(md);
     std::time_t now = std::time(nullptr);
     char date[64];
@@ -623,7 +626,7 @@ int main(int argc, char** argv) {
         << "| same, rays (auto kernel: exact near term), k = 16 / 64 | reciprocity " << fmt("%.2f", 100 * ray16.recip) << " % / "
         << fmt("%.2f", 100 * ray64.recip) << " %; row-sum error max " << fmt("%.2e", ray16.rowMax) << " / " << fmt("%.2e", ray64.rowMax) << " |\n"
         << "| GL and CPU hemicubes agree | see the GL section below (lab 08) |\n\n";
-    out << glSection;
+    out << glSection << "\n" << referenceSection;
     out.close();
 
     plots(outDir);

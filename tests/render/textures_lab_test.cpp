@@ -331,3 +331,15 @@ TEST_CASE("lab 04 first frame is the overview", "[gl][textures]") {
         CHECK(std::abs(p[k] - expect[k]) <= 12.0);
     wb::test::checkGolden(first, "lab04-overview", 48, 0.5); // tolerances as the goldens above
 }
+
+// Issue 19, item 14: `t` in the first view changed the panel's texture name only (it chose
+// the flat object's texture); there it swaps the sphere's and the torus's textures.
+TEST_CASE("lab 04 t changes the first view", "[gl][textures]") {
+    wb::Image first = wb::test::renderLab(*wb::makeTexturesLab(), 160, 120);
+    wb::Image swapped = wb::test::renderLab(*wb::makeTexturesLab(), 160, 120, "t");
+    wb::Image back = wb::test::renderLab(*wb::makeTexturesLab(), 160, 120, "tt");
+    // The sphere and torus cover ~15% of the picture; bricks against the uv grid there
+    // moves the mean by more than 1/255 (the mirror and room do not change).
+    CHECK(wb::compareImages(first, swapped).meanDiff > 1.0);
+    CHECK(wb::compareImages(first, back).maxDiff == 0);
+}

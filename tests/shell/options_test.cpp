@@ -1,6 +1,10 @@
 // Command-line parsing of the lab shell: every flag, and bad input rejected with a clear message.
 #include "common/cli_values.h"
 #include "common/options.h"
+#include "common/shell.h"
+#include "launcher/launcher.h"
+
+#include <limits>
 
 #include <catch2/catch.hpp>
 
@@ -100,6 +104,47 @@ TEST_CASE("the window --help names is the window that opens", "[options]") {
     CHECK(windowWidth(o, false) == kDefaultWidth + 2 * kPanelWidth);
 }
 
+TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]") {
+    for (const ScreenSize screen : kCheckedScreens)
+        for (float scale : {1.0f, 1.5f, 2.0f}) {
+            for (bool fills : {false, true}) {
+                CAPTURE(screen.width, screen.height, scale, fills);
+                ShellOptions o;
+                o.uiScale = scale;
+                const WindowFit f = fitWindow(o, fills, screen.width, screen.height, scale);
+                CHECK(f.width <= screen.width - kScreenMarginX);
+                CHECK(f.height <= screen.height - kScreenMarginY);
+                CHECK(f.uiScale <= scale);
+                if (fills) continue;
+                // The panel's layout needs kPanelWidth x scale; the scene keeps its share.
+                CHECK(f.panelWidth == int(float(kPanelWidth) * f.uiScale + 0.5f));
+                CHECK(float(f.width - f.panelWidth) >=
+                      (1.0f - kMaxPanelShare) * float(f.width) - 1.0f);
+                // The panel shows at least 70% of the lines the 600-px window shows at scale 1
+                // (a 1280x800 laptop at scale 2 -> 1.65 has 720 px: 436 / 600 = 73%).
+                CHECK(float(f.height) / f.uiScale >= 600.0f * 0.7f);
+            }
+        }
+    ShellOptions o;
+    // A projector's 1600x1000 keeps scale 2 (the issue's 1640-px window no longer overflows).
+    o.uiScale = 2.0f;
+    WindowFit f = fitWindow(o, false, 1600, 1000, 2.0f);
+    CHECK(f.uiScale == 2.0f);
+    CHECK(f.width == 1580);
+    CHECK(f.height == 920);
+    // 1024x768 cannot hold an 840-px panel beside a scene: the largest scale that fits.
+    f = fitWindow(o, false, 1024, 768, 2.0f);
+    CHECK(f.uiScale == Approx(1.31f));
+    // A large screen at scale 1 keeps the window --help states.
+    o.uiScale = 1.0f;
+    f = fitWindow(o, false, 1920, 1080, 1.0f);
+    CHECK(f.width == windowWidth(o, false));
+    CHECK(f.height == kDefaultHeight);
+    // The scene is never drawn narrower than 4:3; a wide one keeps its height.
+    CHECK(sceneViewHeight(600, 900) == 450);
+    CHECK(sceneViewHeight(1000, 600) == 600);
+}
+
 TEST_CASE("lab options keep their command-line order, flags and values interleaved", "[options]") {
     ShellOptions o;
     std::string err;
@@ -131,4 +176,28 @@ TEST_CASE("shared values: --threads 0 means all cores, sizes are strict", "[opti
     CHECK_FALSE(cli::parseSize("16385x1", 16384, w, h));
     CHECK_FALSE(cli::parseSize("10x10junk", 16384, w, h));
     CHECK((w == 16384 && h == 1)); // untouched on failure
+}
+
+TEST_CASE("zoom stays finite and comes back after a thousand + presses", "[options]") {
+    View v;
+    bool panel = true;
+    for (int i = 0; i < 1000; ++i) // unclamped, 1.1^930 overflowed a float to infinity
+        CHECK(shellKey('+', v, panel));
+    CHECK(v.zoom == kMaxZoom);
+    for (int i = 0; i < 48; ++i)
+        shellKey('-', v, panel);
+    CHECK(v.zoom < 1.05f);
+    for (int i = 0; i < 1000; ++i)
+        shellKey('-', v, panel);
+    CHECK(v.zoom == kMinZoom);
+    CHECK(clampZoom(std::numeric_limits<float>::infinity()) == 1.0f);
+}
+
+TEST_CASE("the launcher passes its flags on, less those about its own window", "[options]") {
+    const char* argv[] = {"workbench", "--ui-scale", "2",    "--size",  "800x600", "--lang", "ru",
+                          "--frames",  "3",          "--smoke", "--keys", "1",     "--root", "/r",
+                          "--screenshot=s.png", "--future-flag"};
+    const std::vector<std::string> flags = labFlagsFrom(int(std::size(argv)), argv);
+    CHECK(flags == std::vector<std::string>{"--ui-scale", "2", "--lang", "ru", "--root", "/r",
+                                            "--future-flag"});
 }

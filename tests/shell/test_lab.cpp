@@ -14,22 +14,31 @@ public:
     void init() override { ++s_->initCalls; }
     void draw(const View&) override {
         ++s_->frames;
-        glClearColor(0, 0, 1, 1);
+        glClearColor(0, ranFrames_ >= kRunFrames ? 0.5f : 0.f, 1, 1);
         glClear(GL_COLOR_BUFFER_BIT);
         glMatrixMode(GL_PROJECTION);
         glLoadIdentity();
         glMatrixMode(GL_MODELVIEW);
         glLoadIdentity();
-        glColor3f(s_->green ? 0.f : 1.f, s_->green ? 1.f : 0.f, 0.f);
+        if (running_) // yellow while running; the run ends as this frame is drawn
+            glColor3f(1.f, 1.f, 0.f);
+        else
+            glColor3f(s_->green ? 0.f : 1.f, s_->green ? 1.f : 0.f, 0.f);
         glBegin(GL_TRIANGLES); // covers the lower-left half of the viewport
         glVertex2f(-1, -1);
         glVertex2f(1, -1);
         glVertex2f(-1, 1);
         glEnd();
+        if (running_ && ++ranFrames_ >= kRunFrames) running_ = false; // after the drawing
     }
     bool key(int k) override {
         if (k == 'L') {
             s_->longLabel = !s_->longLabel;
+            return true;
+        }
+        if (k == 'B') {
+            running_ = true;
+            ranFrames_ = 0;
             return true;
         }
         if (k == 'F') { // the headless render must then be neither written nor exit 0
@@ -49,11 +58,14 @@ public:
         ImGui::SliderFloat("a label far too long to fit beside its slider in any panel", &value_, 0, 1);
         for (int i = 0; i < 60; ++i) ImGui::Text("line %d", i); // taller than the window: it scrolls
     }
-    bool busy() const override { return s_->frames < 3; }
+    bool busy() const override { return s_->frames < 3 || running_; }
     bool headlessFailed() const override { return failed_; }
 
 private:
     bool failed_ = false;
+    static constexpr int kRunFrames = 12; // past the frames drawn after start-up events
+    bool running_ = false;                // `B`
+    int ranFrames_ = 0;
     TestLabState own_;
     float value_ = 0.5f;
     TestLabState* s_;

@@ -1,6 +1,9 @@
 #pragma once
 // A tiny lab for testing the shell: a red triangle on blue; `g` turns it green;
 // it reports busy() for its first two frames, like a lab tracing in the background;
+// the unlisted key `B` starts a "background run" that ends right after the frame that
+// draws its twelfth running frame (yellow triangle; green-blue background when it has ended):
+// the window must draw one more frame by itself to show the end;
 // the unlisted key `F` makes its headless render fail (headlessFailed()).
 // Its panel has a button (counted) and, after the unlisted key `L`, a label far too long
 // for any panel (the clipping check must fail on it) and 60 more lines (the panel scrolls).

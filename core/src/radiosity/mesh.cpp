@@ -1,7 +1,10 @@
 #include "core/radiosity/mesh.h"
 
+#include "core/radiosity/patch_bvh.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -19,6 +22,11 @@ struct PatchDesc {
     std::array<glm::dvec2, 4> lat;
     int group = -1; // shooting group, −1 without grouping
 };
+
+// Grid cells of a quad surface are at most this many times longer than wide (along the
+// surface's two edge directions); with the scenes' near-rectangular quads, patchAspect stays
+// below kMaxAspect (mesh.h).
+constexpr double kMaxGridAspect = 1.5;
 
 // Hard cap so a tiny maxEdge gives a clear error, not an out-of-memory (~1 KB per patch with F
 // rows on demand; 4 million patches is far beyond what the solvers can use anyway).
@@ -141,6 +149,116 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
     }
 }
 
+// A point of a surface is covered when the first surface along its normal is met from behind:
+// it lies inside a body (the floor under a block, which has no bottom face). nearestPatch
+// gives −1 for a back side and for nothing at all; `visible` tells them apart.
+bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
+    const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
+    if (bvh.nearestPatch(o, n, 0.0, 1e4) >= 0) return false;
+    return !bvh.visible(o, o + 1e4 * n);
+}
+
+glm::dvec3 pointOn(const std::vector<glm::dvec3>& c, double u, double v) {
+    if (c.size() == 3) {
+        const double su = std::sqrt(u);
+        return c[0] + su * (1 - v) * (c[1] - c[0]) + su * v * (c[2] - c[0]);
+    }
+    return (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+}
+
+// Builds the mesh, then fits it to where bodies stand on surfaces (issue 19 item 10: black
+// blotches on the floor at the base of the Cornell box's blocks). A patch wholly inside a body
+// is dropped: nobody sees it, and its hemicube saw only the body's inside (B = 0). A patch
+// partly inside keeps its polygon for drawing (the covered part is hidden by the body) but its
+// area becomes the exposed area and its centre the centroid of the exposed part, so its
+// hemicube (cast from the centre) and its power are those of what is seen: before, a patch
+// whose centre lay under the block was drawn black where it showed. Exposure is sampled on an
+// 8×8 grid of the patch (a patch is first tested at its centre and four points near its
+// corners; most are wholly exposed). `parents` (refinement) is filtered like `descs`.
+void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int>* parents) {
+    build(mesh, descs);
+    const std::size_t n = mesh.patches.size();
+    std::vector<double> fraction(n, 1.0);
+    std::vector<glm::dvec3> centre(n);
+    {
+        const PatchBvh bvh(mesh);
+        for (std::size_t i = 0; i < n; ++i) {
+            const Patch& p = mesh.patches[i];
+            const auto c = mesh.cornersOf(static_cast<int>(i));
+            bool any = false;
+            for (const glm::dvec2 uv : {glm::dvec2(0.5, 0.5), glm::dvec2(0.02, 0.02), glm::dvec2(0.98, 0.02),
+                                        glm::dvec2(0.98, 0.98), glm::dvec2(0.02, 0.98)})
+                any |= covered(bvh, pointOn(c, uv.x, uv.y), p.normal);
+            if (!any) continue;
+            constexpr int g = 8;
+            int hits = 0;
+            glm::dvec3 sum(0.0);
+            std::vector<glm::dvec3> open;
+            for (int a = 0; a < g; ++a)
+                for (int b = 0; b < g; ++b) {
+                    const glm::dvec3 q = pointOn(c, (a + 0.5) / g, (b + 0.5) / g);
+                    if (covered(bvh, q, p.normal)) continue;
+                    ++hits;
+                    sum += q;
+                    open.push_back(q);
+                }
+            fraction[i] = static_cast<double>(hits) / (g * g);
+            if (hits == 0) continue;
+            centre[i] = sum / static_cast<double>(hits);
+            if (covered(bvh, centre[i], p.normal)) { // a non-convex exposed part: its nearest sample
+                glm::dvec3 best = open.front();
+                for (const glm::dvec3& q : open)
+                    if (glm::length(q - centre[i]) < glm::length(best - centre[i])) best = q;
+                centre[i] = best;
+            }
+        }
+    }
+    std::vector<std::pair<double, glm::dvec3>> fit; // per kept patch
+    std::vector<PatchDesc> kept;
+    std::vector<int> keptParents;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (fraction[i] == 0.0) continue;
+        kept.push_back(descs[i]);
+        if (parents) keptParents.push_back((*parents)[i]);
+        fit.emplace_back(fraction[i], centre[i]);
+    }
+    if (kept.size() != n) {
+        descs = std::move(kept);
+        if (parents) *parents = std::move(keptParents);
+        build(mesh, descs);
+    }
+    bool any = false;
+    for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
+        if (fit[i].first == 1.0) continue;
+        Patch& p = mesh.patches[i];
+        p.area *= fit[i].first;
+        p.centre = fit[i].second;
+        any = true;
+    }
+    if (!any || mesh.groups.empty()) return;
+    // Shooting groups: area and centroid of what is exposed; a group's hemicube eye (its
+    // centroid) under a body would shoot the group's power into the body's inside, so such a
+    // centroid moves to the nearest member's (exposed) centre.
+    const PatchBvh bvh(mesh);
+    for (ShooterGroup& g : mesh.groups) {
+        g.area = 0.0;
+        g.centre = glm::dvec3(0.0);
+        for (int m : g.members) {
+            const Patch& p = mesh.patches[static_cast<std::size_t>(m)];
+            g.area += p.area;
+            g.centre += p.area * p.centre;
+        }
+        if (g.area > 0.0) g.centre /= g.area;
+        if (g.members.empty() || !covered(bvh, g.centre, g.normal)) continue;
+        glm::dvec3 best = mesh.patches[static_cast<std::size_t>(g.members.front())].centre;
+        for (int m : g.members) {
+            const glm::dvec3& c = mesh.patches[static_cast<std::size_t>(m)].centre;
+            if (glm::length(c - g.centre) < glm::length(best - g.centre)) best = c;
+        }
+        g.centre = best;
+    }
+}
+
 } // namespace
 
 std::vector<glm::dvec3> PatchMesh::cornersOf(int patch) const {
@@ -155,6 +273,16 @@ double PatchMesh::totalArea() const {
     double a = 0.0;
     for (const Patch& p : patches) a += p.area;
     return a;
+}
+
+double patchAspect(const PatchMesh& mesh, int patch) {
+    const Patch& p = mesh.patches.at(static_cast<std::size_t>(patch));
+    const auto c = mesh.cornersOf(patch);
+    double longest = 0.0;
+    for (std::size_t k = 0; k < c.size(); ++k) longest = std::max(longest, glm::length(c[(k + 1) % c.size()] - c[k]));
+    const double area = polygonArea(c); // the polygon's shape, not its exposed area
+    if (!(area > 0.0)) return std::numeric_limits<double>::infinity();
+    return longest * longest / ((p.cornerCount == 3 ? 2.0 : 1.0) * area);
 }
 
 PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
@@ -179,11 +307,11 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
         // different group sizes, have the same patches); a shooting group is a block of `per`
         // fine cells along each direction, `per` = how many fine cells fit in shooterEdge.
         auto counts = [&](double len, int& fine, int& coarse, int& per) {
-            fine = static_cast<int>(cells(len, config.maxEdge));
+            if (fine < 1) fine = static_cast<int>(cells(len, config.maxEdge));
             per = grouped ? std::max(1, static_cast<int>(std::floor(config.shooterEdge / (len / fine) + 1e-9))) : 1;
             coarse = (fine + per - 1) / per;
         };
-        int fu = 1, cu = 1, mu = 1, fv = 1, cv = 1, mv = 1;
+        int fu = 0, cu = 1, mu = 1, fv = 0, cv = 1, mv = 1;
         if (c.size() == 3) {
             const double longest = std::max({glm::length(c[1] - c[0]), glm::length(c[2] - c[1]),
                                              glm::length(c[0] - c[2])});
@@ -192,8 +320,18 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
             cv = cu;
             mv = mu;
         } else {
-            counts(std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3])), fu, cu, mu);
-            counts(std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1])), fv, cv, mv);
+            const double U = std::max(glm::length(c[1] - c[0]), glm::length(c[2] - c[3]));
+            const double V = std::max(glm::length(c[3] - c[0]), glm::length(c[2] - c[1]));
+            // Bounded aspect: a long thin surface (a table top's 3 cm edge strip, a lamp
+            // shade's rim) is cut across its length too, so no cell is more than
+            // kMaxGridAspect times longer than wide (a 1.2 m × 3 cm strip at maxEdge 0.4 m
+            // was 3 cells of aspect 13).
+            fu = static_cast<int>(cells(U, config.maxEdge));
+            fv = static_cast<int>(cells(V, config.maxEdge));
+            fu = std::max(fu, static_cast<int>(std::ceil(U * fv / (kMaxGridAspect * V) - 1e-9)));
+            fv = std::max(fv, static_cast<int>(std::ceil(V * fu / (kMaxGridAspect * U) - 1e-9)));
+            counts(U, fu, cu, mu);
+            counts(V, fv, cv, mv);
         }
         const double nu = fu, nv = fv;
         total += nu * nv;
@@ -230,7 +368,7 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
     if (total > kMaxPatches)
         throw std::invalid_argument("radiosity meshing: maxEdge " + std::to_string(config.maxEdge) +
                                     " m gives more than 4 million patches; use a larger patch size");
-    build(mesh, descs);
+    buildFitted(mesh, descs, nullptr);
     return mesh;
 }
 
@@ -317,7 +455,7 @@ int refineAdaptive(PatchMesh& mesh, const std::vector<glm::dvec3>& B, const Refi
         }
         return 0;
     }
-    build(mesh, descs);
+    buildFitted(mesh, descs, &parents);
     if (parentOf) *parentOf = std::move(parents);
     return splits;
 }

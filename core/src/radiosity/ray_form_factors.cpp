@@ -66,10 +66,57 @@ double diameter(const std::vector<glm::dvec3>& c) {
     return d;
 }
 
+// A point inside a body (the floor under a block): the first surface along the normal is met
+// from behind (as meshScene decides it, mesh.cpp). Meshing gives a patch partly inside a body
+// its exposed area (Patch::area < its polygon's area); the sampled points there see nothing.
+bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
+    const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
+    if (bvh.nearestPatch(o, n, 0.0, 1e4) >= 0) return false;
+    return !bvh.visible(o, o + 1e4 * n);
+}
+
+bool fitted(const Patch& P, const std::vector<glm::dvec3>& c) {
+    return P.area < polygonArea(c) * (1.0 - 1e-9);
+}
+
 struct Workspace {
+    std::vector<char> openI, openJ; // per sample: not inside a body (fitted patches only)
     std::vector<glm::dvec3> xi, xj;
     std::vector<int> perm;
+    std::vector<glm::dvec3> front; // P_j clipped to P_i's front half-space
+    std::vector<double> fanArea;   // cumulative areas of its fan triangles
 };
+
+// P_j's part in front of P_i's plane (Sutherland–Hodgman, one plane) and the cumulative
+// areas of its fan from the first vertex, for uniform sampling of that part.
+void clipFront(const std::vector<glm::dvec3>& cj, const glm::dvec3& origin, const glm::dvec3& normal,
+               Workspace& ws) {
+    ws.front.clear();
+    ws.fanArea.clear();
+    const std::size_t m = cj.size();
+    for (std::size_t k = 0; k < m; ++k) {
+        const glm::dvec3& a = cj[k];
+        const glm::dvec3& b = cj[(k + 1) % m];
+        const double da = glm::dot(a - origin, normal), db = glm::dot(b - origin, normal);
+        if (da > 0.0) ws.front.push_back(a);
+        if ((da > 0.0) != (db > 0.0) && da != db) ws.front.push_back(a + da / (da - db) * (b - a));
+    }
+    double sum = 0.0;
+    for (std::size_t k = 1; k + 1 < ws.front.size(); ++k) {
+        sum += 0.5 * glm::length(glm::cross(ws.front[k] - ws.front[0], ws.front[k + 1] - ws.front[0]));
+        ws.fanArea.push_back(sum);
+    }
+}
+
+// A uniform point of the clipped part (ws.front), from two uniforms and a third for the triangle.
+glm::dvec3 sampleFront(const Workspace& ws, SplitMix& rng) {
+    const double pick = rng.uniform() * ws.fanArea.back();
+    std::size_t t = 0;
+    while (t + 1 < ws.fanArea.size() && ws.fanArea[t] < pick) ++t;
+    const double su = std::sqrt(rng.uniform()), v = rng.uniform();
+    const glm::dvec3& c0 = ws.front[0];
+    return c0 + su * (1 - v) * (ws.front[t + 1] - c0) + su * v * (ws.front[t + 2] - c0);
+}
 
 double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayFormFactorConfig& cfg,
             const std::vector<glm::dvec3>& ci, Workspace& ws) {
@@ -105,11 +152,47 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
     // roles for i > j, so the segment set is the same either way.
     auto pointI = [&](int s) { return i < j ? ws.xi[static_cast<std::size_t>(s)] : ws.xi[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])]; };
     auto pointJ = [&](int s) { return i < j ? ws.xj[static_cast<std::size_t>(ws.perm[static_cast<std::size_t>(s)])] : ws.xj[static_cast<std::size_t>(s)]; };
+    // PointToPolygon integrates over P_j clipped to P_i's front half-space, so its visibility
+    // rays must aim at that part: a ray whose end lies behind P_i's plane would count the
+    // clipped-away fraction a second time (issue 19 item 11: F(wall -> floor reaching behind
+    // it) came out 0.12 instead of 0.264). Such an end is redrawn uniformly on the front part;
+    // the ends already in front are uniform on it, so every end is. Pairs wholly in front keep
+    // their rays (and their values) unchanged.
+    bool straddles = false;
+    if (kernel == RayKernel::PointToPolygon) {
+        for (const auto& q : cj) straddles |= glm::dot(q - Pi.centre, Pi.normal) <= 0.0;
+        if (straddles) {
+            clipFront(cj, Pi.centre, Pi.normal, ws);
+            straddles = !ws.fanArea.empty() && ws.fanArea.back() > 0.0;
+        }
+    }
+    SplitMix redraw{mix(cfg.seed ^ 0xc11bULL, static_cast<std::uint64_t>(i), static_cast<std::uint64_t>(j))};
+    // A patch partly inside a body (meshScene fitted its area to the exposed part): its samples
+    // inside the body see nothing. They are left out of the averages rather than counted as
+    // blocked, since the patch's area already leaves that part out (counted both ways, F from
+    // or to the floor at the blocks' feet came out too low by the covered fraction).
+    const bool fitI = fitted(Pi, ci), fitJ = fitted(Pj, cj);
+    ws.openI.assign(static_cast<std::size_t>(k), 1);
+    ws.openJ.assign(static_cast<std::size_t>(k), 1);
+    if (fitI)
+        for (int s = 0; s < k; ++s) ws.openI[static_cast<std::size_t>(s)] = !covered(bvh, ws.xi[static_cast<std::size_t>(s)], Pi.normal);
+    if (fitJ)
+        for (int s = 0; s < k; ++s) ws.openJ[static_cast<std::size_t>(s)] = !covered(bvh, ws.xj[static_cast<std::size_t>(s)], Pj.normal);
+    auto openI = [&](int s) { return ws.openI[static_cast<std::size_t>(i < j ? s : ws.perm[static_cast<std::size_t>(s)])] != 0; };
+    auto openJ = [&](int s) { return ws.openJ[static_cast<std::size_t>(i < j ? ws.perm[static_cast<std::size_t>(s)] : s)] != 0; };
     const double invPi = 1.0 / glm::pi<double>();
     double sum = 0.0;
-    int unblocked = 0;
+    int unblocked = 0, counted = 0;
     for (int s = 0; s < k; ++s) {
-        const glm::dvec3 a = pointI(s), b = pointJ(s);
+        if (!openI(s)) continue; // a inside a body: not part of P_i's exposed area
+        const glm::dvec3 a = pointI(s);
+        glm::dvec3 b = pointJ(s);
+        // b inside a body: PointToPolygon and PointPairs integrate over P_j's whole polygon, and
+        // a covered b is invisible, rightly; Centres uses P_j's exposed area, so such a ray is
+        // not counted.
+        if (kernel == RayKernel::Centres && !openJ(s)) continue;
+        ++counted;
+        if (straddles && glm::dot(b - Pi.centre, Pi.normal) <= 0.0) b = sampleFront(ws, redraw);
         const glm::dvec3 r = b - a;
         const double r2 = glm::dot(r, r);
         const double ca = glm::dot(Pi.normal, r), cb = -glm::dot(Pj.normal, r);
@@ -118,23 +201,26 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
             if (!bvh.visible(a, b)) continue;
             sum += ca * cb / (r2 * r2) * invPi;
         } else if (kernel == RayKernel::PointToPolygon) {
-            if (ca <= 0.0 || cb <= 0.0) continue; // ray leaves behind a patch: blocked
+            // cb <= 0: the point a lies behind P_j's plane and sees only its back. ca <= 0 only
+            // for an end on P_i's plane itself (a redrawn end is strictly in front).
+            if (ca <= 0.0 || cb <= 0.0) continue;
             if (!bvh.visible(a, b)) continue;
             sum += pointToPolygon(a, Pi.normal, cj);
         } else {
             if (ca > 0.0 && cb > 0.0 && bvh.visible(a, b)) ++unblocked;
         }
     }
+    if (counted == 0) return 0.0;
     switch (kernel) {
     case RayKernel::PointPairs:
-        return Pj.area * sum / k;
+        return polygonArea(cj) * sum / counted; // over P_j's polygon: covered b are invisible
     case RayKernel::PointToPolygon:
-        return sum / k;
+        return sum / counted;
     default: {
-        // (15.20) at the centres, times the visible fraction of the k rays.
+        // (15.20) at the centres, times the visible fraction of the counted rays.
         const double cosI = glm::dot(Pi.normal, dc) / d, cosJ = -glm::dot(Pj.normal, dc) / d;
         if (cosI <= 0.0 || cosJ <= 0.0) return 0.0;
-        const double V = static_cast<double>(unblocked) / k;
+        const double V = static_cast<double>(unblocked) / counted;
         return V * cosI * cosJ * Pj.area * invPi / (d * d);
     }
     }

@@ -116,3 +116,36 @@ TEST_CASE("(15.20) centre to centre against the exact value for near pairs (how 
         CHECK(approx / exact <= r.ratioAtMost);
     }
 }
+
+namespace {
+// A·F for a plate of length l and height 1 and a perpendicular plate of length l and depth 1
+// sharing the whole edge (Howell C-14, W = H = 1/l).
+double commonEdgeExchange(double l) { return l * perpendicularRectangles(l, 1, 1); }
+} // namespace
+
+TEST_CASE("a receiver straddling the emitter's plane: only its front part counts") {
+    // A 1×1 wall (y = 0, x from 0.5 to 1.5, z from 0 to 1, facing +y) standing on a 2×2 floor
+    // (z = 0, x from 0 to 2, y from −1 to 1, facing +z) that extends behind it: the floor
+    // straddles the wall's plane and the wall sees only the floor's front half y > 0.
+    // Independent reference, by superposition of Howell C-14 along the common line (strips of
+    // equal height 1 and depth 1, so the exchange between a wall span U and a floor span V is
+    // symmetric in U and V): A_w F(w→front) = S(1) + 2·(S(1.5) − S(1) − S(0.5))/2
+    // = S(1.5) − S(0.5), with S(l) = l·C14(l; 1, 1).
+    const double reference = commonEdgeExchange(1.5) - commonEdgeExchange(0.5);
+    CHECK(reference == Approx(0.264).margin(5e-4)); // the issue's "about 0.264"
+    const std::vector<glm::dvec3> floor = {{0, -1, 0}, {2, -1, 0}, {2, 1, 0}, {0, 1, 0}};
+    // The contour integral clips the floor to the wall's front half-space itself; integrated
+    // over the wall, graded towards the common edge (log-type kink at z → 0, as for C-14).
+    // The wall's side edges x = 0.5, 1.5 are no kink: the floor goes on beyond them.
+    const double num = test::gaussAverage(uniform(1.0, 4), graded(1.0, 40), [&](double x, double z) {
+        return pointToPolygon({0.5 + x, 0, z}, {0, 1, 0}, floor);
+    });
+    // Same quadrature error as the common-edge test above (~1e-9).
+    CHECK(num == Approx(reference).epsilon(1e-8));
+    // The behind part is not counted at all: the same integral over the front half alone.
+    const std::vector<glm::dvec3> front = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+    const double numFront = test::gaussAverage(uniform(1.0, 4), graded(1.0, 40), [&](double x, double z) {
+        return pointToPolygon({0.5 + x, 0, z}, {0, 1, 0}, front);
+    });
+    CHECK(num == Approx(numFront).epsilon(1e-12));
+}

@@ -1,6 +1,9 @@
 // Meshing, adaptive refinement with T-vertices, conforming display triangles and smoothing
 // that never mixes surfaces.
 #include "core/radiosity/mesh.h"
+#include "core/radiosity/patch_bvh.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/triangle.h"
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/smoothing.h"
 
@@ -10,6 +13,15 @@
 #include <set>
 
 using namespace wb::rad;
+
+namespace {
+// The test's own copy of "inside a body": the first surface along the normal is met from behind.
+bool coveredPoint(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
+    const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
+    if (bvh.nearestPatch(o, n, 0.0, 1e4) >= 0) return false;
+    return !bvh.visible(o, o + 1e4 * n);
+}
+} // namespace
 
 TEST_CASE("meshing: edge lengths, areas, normals") {
     for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
@@ -24,9 +36,112 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
             // Same side as the surface: the normal of the patch's own corners agrees.
             CHECK(glm::dot(polygonNormal(c), m.patches[i].normal) == Approx(1.0).epsilon(1e-9));
         }
-        // Patches tile their surface: areas add up (rounding of ~1e4 additions: 1e-12).
-        for (std::size_t k = 0; k < s.surfaces.size(); ++k)
-            CHECK(area[k] == Approx(polygonArea(s.surfaces[k].vertices)).epsilon(1e-12));
+        // Patches tile their surface: areas add up (rounding of ~1e4 additions: 1e-12), except
+        // where a body covers the surface (buildFitted counts only the exposed part, sampled
+        // 8×8 per patch): the Cornell floor under the blocks, the sliver of its back wall behind
+        // the red wall, the classroom's floor under the red box and its ceiling behind the lamps.
+        for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
+            const double full = polygonArea(s.surfaces[k].vertices);
+            const std::string& name = s.surfaces[k].name;
+            INFO(s.name << ": " << name << " " << area[k] << " of " << full);
+            CHECK(area[k] <= full * (1 + 1e-12));
+            if (s.name == "Cornell box" && name == "floor") {
+                // Minus the two footprints (the blocks' tops): measured +0.2%; bound 0.5%.
+                double feet = 0.0;
+                for (const Surface& f : s.surfaces)
+                    if (f.name == "short block 0" || f.name == "tall block 0") feet += polygonArea(f.vertices);
+                CHECK(area[k] == Approx(full - feet).epsilon(5e-3));
+            } else if (s.name == "Cornell box" && name == "back wall") {
+                CHECK(area[k] == Approx(full).epsilon(3e-3)); // the sliver is 8.8e-4 m² of 0.303
+            } else if (s.name == "classroom" && name == "floor") {
+                CHECK(area[k] == Approx(full - 0.36).epsilon(1e-12)); // the 0.6 × 0.6 m box
+            } else if (s.name == "classroom" && name == "ceiling") {
+                CHECK(area[k] == Approx(full - 6 * 0.36).epsilon(5e-3)); // six 1.2 × 0.3 m lamps
+            } else {
+                CHECK(area[k] == Approx(full).epsilon(1e-12));
+            }
+        }
+    }
+}
+
+TEST_CASE("meshing: no patch is seen from inside a body (no black blotches at the blocks' feet)") {
+    // Before issue 19 item 10 the Cornell floor at 0.05 m had patches straddling the blocks'
+    // footprints whose centre (the hemicube's eye) lay under a block: B = 0, drawn black where
+    // the patch showed, and 22 whole patches under the blocks that nobody sees.
+    for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
+        for (double edge : s.name == "Cornell box" ? std::vector<double>{0.03, 0.05, 0.1} : std::vector<double>{0.2, 0.4}) {
+            const PatchMesh m = meshScene(s, {edge});
+            const PatchBvh bvh(m);
+            int inside = 0;
+            for (const Patch& p : m.patches) inside += coveredPoint(bvh, p.centre, p.normal) ? 1 : 0;
+            INFO(s.name << " edge " << edge);
+            CHECK(inside == 0);
+        }
+    }
+}
+
+TEST_CASE("meshing: a ray census finds no crack between patches that share an edge") {
+    // Every edge shared by two display triangles (within a surface, T-vertices included) and
+    // every patch corner: rays from in front of the surface aimed at points on the edge must hit
+    // the surface there, never pass through to what lies behind (a crack). Watertight
+    // triangles (core/raytrace) make a shared edge hit exactly once; a crack is a miss.
+    for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
+        PatchMesh m = meshScene(s, {s.name == "Cornell box" ? 0.1 : 0.8});
+        // Refine once so T-vertices are in the census.
+        std::vector<glm::dvec3> B(m.patches.size());
+        for (std::size_t i = 0; i < B.size(); ++i) B[i] = glm::dvec3(m.patches[i].centre.x < 0.3 * m.patches[i].centre.x + 0.2 ? 1.0 : 0.0);
+        refineAdaptive(m, B, {0.05, 1, 0.001, 100000}, nullptr);
+        std::vector<int> patchOf;
+        const auto tris = displayTriangles(m, &patchOf);
+        std::vector<std::unique_ptr<wb::rt::Primitive>> prims;
+        for (std::size_t t = 0; t < tris.size(); ++t) {
+            auto tri = std::make_unique<wb::rt::Triangle>(m.vertices[static_cast<std::size_t>(tris[t][0])],
+                                                          m.vertices[static_cast<std::size_t>(tris[t][1])],
+                                                          m.vertices[static_cast<std::size_t>(tris[t][2])]);
+            tri->material = patchOf[t];
+            prims.push_back(std::move(tri));
+        }
+        const wb::rt::Bvh bvh(prims);
+        const PatchBvh pbvh(m);
+        int rays = 0, misses = 0;
+        for (const auto& t : tris)
+            for (int k = 0; k < 3; ++k) {
+            const int ia = t[static_cast<std::size_t>(k)], ib = t[static_cast<std::size_t>((k + 1) % 3)];
+            // Edges on the surface's border (its lattice's outline) have one patch only: skipped.
+            const int surface = m.vertexSurface[static_cast<std::size_t>(ia)];
+            const glm::dvec2 la = m.vertexLattice[static_cast<std::size_t>(ia)], lb = m.vertexLattice[static_cast<std::size_t>(ib)];
+            const glm::ivec2 g = m.grid[static_cast<std::size_t>(surface)];
+            const double U = g.x * kLatticeScale, W = g.y * kLatticeScale;
+            const bool tri = m.surfaces[static_cast<std::size_t>(surface)].vertices.size() == 3;
+            const bool border = tri ? ((la.x == 0 && lb.x == 0) || (la.y == 0 && lb.y == 0) || (la.x + la.y == U && lb.x + lb.y == U))
+                                    : ((la.x == 0 && lb.x == 0) || (la.y == 0 && lb.y == 0) || (la.x == U && lb.x == U) || (la.y == W && lb.y == W));
+            if (border) continue;
+            const glm::dvec3 a = m.vertices[static_cast<std::size_t>(ia)], b = m.vertices[static_cast<std::size_t>(ib)];
+            const glm::dvec3 normal = polygonNormal(m.surfaces[static_cast<std::size_t>(surface)].vertices);
+            const glm::dvec3 side = glm::normalize(glm::cross(normal, b - a));
+            // The rim of a hole left under a body (patches dropped there) is no crack.
+            const glm::dvec3 mid = 0.5 * (a + b);
+            const double h = 1e-3 * glm::length(b - a);
+            if (coveredPoint(pbvh, mid + h * side, normal) || coveredPoint(pbvh, mid - h * side, normal)) continue;
+            for (double f : {0.25, 0.5, 0.75}) {
+                const glm::dvec3 target = a + f * (b - a);
+                // From a point in front, slightly off the normal (no ray exactly along the edge).
+                const glm::dvec3 from = target + 0.05 * normal + 0.01 * side;
+                const glm::dvec3 dir = glm::normalize(target - from);
+                wb::rt::Ray ray;
+                ray.origin = from;
+                ray.direction = dir;
+                wb::rt::Hit hit;
+                const double d = glm::length(target - from);
+                const bool any = bvh.intersect(ray, 0.0, 2.0 * d, hit);
+                if (any && hit.t < d - 1e-9 * (1 + d)) continue; // something else in front: no census
+                ++rays;
+                if (!any || hit.t > d + 1e-9 * (1 + d)) ++misses; // through the edge: a crack
+            }
+        }
+        INFO(s.name << ": " << rays << " rays, " << misses << " through a crack");
+        CHECK(rays > 1000);
+        CHECK(misses == 0);
     }
 }
 
@@ -49,8 +164,10 @@ void checkConforming(const PatchMesh& m) {
                          p2 = m.vertices[static_cast<std::size_t>(tris[t][2])];
         area[static_cast<std::size_t>(patchOf[t])] += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
     }
+    // The triangles cover the patch's polygon (its area may be less: the exposed part).
     for (std::size_t i = 0; i < m.patches.size(); ++i)
-        CHECK(area[i] == Approx(m.patches[i].area).epsilon(1e-12));
+        CHECK(area[i] == Approx(polygonArea(m.cornersOf(static_cast<int>(i)))).epsilon(1e-12));
+    const PatchBvh bvh(m);
     int boundary = 0;
     for (const auto& [e, n] : uses) {
         CHECK(n <= 2);
@@ -66,7 +183,15 @@ void checkConforming(const PatchMesh& m) {
                        (a.x + a.y == U && b.x + b.y == U))
                     : ((a.x == 0 && b.x == 0) || (a.y == 0 && b.y == 0) || (a.x == U && b.x == U) ||
                        (a.y == W && b.y == W));
-            CHECK(onBorder);
+            if (!onBorder) {
+                // Else the edge borders a patch dropped under a body: a point just beyond it
+                // (in the surface, away from the kept patch) is covered.
+                const glm::dvec3 pa = m.vertices[static_cast<std::size_t>(e.first)], pb = m.vertices[static_cast<std::size_t>(e.second)];
+                const glm::dvec3 nrm = polygonNormal(m.surfaces[static_cast<std::size_t>(s)].vertices);
+                const glm::dvec3 mid = 0.5 * (pa + pb), side = glm::normalize(glm::cross(nrm, pb - pa));
+                const double h = 1e-3 * glm::length(pb - pa);
+                CHECK((coveredPoint(bvh, mid + h * side, nrm) || coveredPoint(bvh, mid - h * side, nrm)));
+            }
             ++boundary;
         }
     }
@@ -83,7 +208,9 @@ TEST_CASE("adaptive refinement: T-vertices handled, display mesh conforming") {
     std::vector<int> parent;
     const int split = refineAdaptive(m, B, {0.05, 3, 0.001, 100000}, &parent);
     CHECK(split > 0);
-    CHECK(m.patches.size() == n0 + 3 * static_cast<std::size_t>(split));
+    // Children wholly under a block are dropped (meshing: no patch is seen from inside a body).
+    CHECK(m.patches.size() <= n0 + 3 * static_cast<std::size_t>(split));
+    CHECK(m.patches.size() > n0 + 2 * static_cast<std::size_t>(split));
     CHECK(parent.size() == m.patches.size());
     int withT = 0;
     for (const Patch& p : m.patches) withT += p.outline.size() > static_cast<std::size_t>(p.cornerCount);
@@ -99,8 +226,15 @@ TEST_CASE("adaptive refinement: T-vertices handled, display mesh conforming") {
     int maxLevel = 0;
     for (const Patch& p : m.patches) maxLevel = std::max(maxLevel, p.level);
     CHECK(maxLevel == 3);
-    // Triangles split too (the red wall is two triangles).
     checkConforming(meshScene(cornellBox(), {0.05}));
+    // Triangles split too.
+    Scene tri = perpendicularPlates(1, 1, 1);
+    tri.surfaces[1].vertices.pop_back();
+    PatchMesh t = meshScene(tri, {0.25});
+    std::vector<glm::dvec3> bt(t.patches.size());
+    for (std::size_t i = 0; i < bt.size(); ++i) bt[i] = glm::dvec3(t.patches[i].centre.x < 0.5 ? 1.0 : 0.1);
+    CHECK(refineAdaptive(t, bt, {0.05, 3, 0.001, 100000}, nullptr) > 0);
+    checkConforming(t);
 }
 
 TEST_CASE("smoothing: constant stays constant, surfaces never mix (no light leaks)") {
@@ -133,4 +267,54 @@ TEST_CASE("adaptive refinement ignores the emitters' brightness for its threshol
         B[i] = m.patches[i].emission.x > 0 ? m.patches[i].emission
                                            : glm::dvec3(m.patches[i].centre.x < 0.26 ? 1.0 : 0.5);
     CHECK(refineAdaptive(m, B, {0.05, 1, 0.001, 100000}, nullptr) > 0);
+}
+
+TEST_CASE("meshing: bounded aspect ratio on every scene") {
+    for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
+        const bool box = s.name == "Cornell box";
+        for (double edge : box ? std::vector<double>{0.02, 0.035, 0.05, 0.1, 0.2} : std::vector<double>{0.1, 0.2, 0.4, 0.8}) {
+            const PatchMesh m = meshScene(s, {edge});
+            double worst = 0.0;
+            int at = -1;
+            for (std::size_t i = 0; i < m.patches.size(); ++i) {
+                const double a = patchAspect(m, static_cast<int>(i));
+                if (a > worst) { worst = a; at = static_cast<int>(i); }
+            }
+            INFO(s.name << " edge " << edge << ": " << m.patches.size() << " patches, worst aspect " << worst
+                        << " on " << m.surfaces[static_cast<std::size_t>(m.patches[static_cast<std::size_t>(at)].surface)].name);
+            // Before issue 19 item 10: 3.3 (edge 0.1) to 20 (edge 0.8) on the tables' 3 cm top
+            // edges; the bound is mesh.h's kMaxAspect (measured 2.15, the shade rim's end cells).
+            CHECK(worst <= kMaxAspect);
+        }
+    }
+}
+
+TEST_CASE("scenes: no two surfaces lie face to face in one plane (no depth ties)") {
+    // The floor lamp's shade was two coincident faces per panel (inside, outside), the
+    // classroom's table panels too: GL's depth test decides between them pixel by pixel, so
+    // the bright inside showed through as a ragged rim and a 1-px crack (issue 19 item 10).
+    auto inside = [](const glm::dvec3& q, const std::vector<glm::dvec3>& poly, const glm::dvec3& n) {
+        for (std::size_t k = 0; k < poly.size(); ++k)
+            if (glm::dot(glm::cross(poly[(k + 1) % poly.size()] - poly[k], q - poly[k]), n) <= 1e-12) return false;
+        return true; // strictly inside the convex polygon
+    };
+    for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
+        int ties = 0;
+        for (std::size_t a = 0; a < s.surfaces.size(); ++a)
+            for (std::size_t b = a + 1; b < s.surfaces.size(); ++b) {
+                const auto& A = s.surfaces[a].vertices;
+                const auto& Bv = s.surfaces[b].vertices;
+                const glm::dvec3 na = polygonNormal(A), nb = polygonNormal(Bv);
+                if (std::abs(std::abs(glm::dot(na, nb)) - 1.0) > 1e-12) continue;
+                if (std::abs(glm::dot(Bv[0] - A[0], na)) > 1e-9) continue; // parallel planes
+                glm::dvec3 ca(0.0), cb(0.0);
+                for (const auto& v : A) ca += v / double(A.size());
+                for (const auto& v : Bv) cb += v / double(Bv.size());
+                if (inside(ca, Bv, nb) || inside(cb, A, na)) {
+                    ++ties;
+                    UNSCOPED_INFO(s.name << ": " << s.surfaces[a].name << " and " << s.surfaces[b].name);
+                }
+            }
+        CHECK(ties == 0);
+    }
 }

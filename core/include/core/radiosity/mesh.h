@@ -13,6 +13,14 @@
 // patch's corners AND every vertex lying on its edges, in order, and displayTriangles fans
 // such a patch from an extra centre vertex through all of them, so the display mesh is
 // conforming: Gouraud interpolation is continuous and no crack shows.
+//
+// Where a body stands on a surface (the Cornell box's blocks on its floor, the classroom's red
+// box), meshing fits the patches to it: a patch wholly inside the body (the first surface along
+// its normal is met from behind) is dropped, and a patch partly inside keeps its polygon for
+// drawing (the body hides the rest) but its `area` is the exposed area and its `centre` the
+// centroid of the exposed part (8×8 samples), so its hemicube sees what a viewer sees. Before
+// (issue 19 item 10) such a patch whose centre lay under a block was solved as black and drawn
+// black where it showed. The patches' lattice grid itself does not follow the bodies' outlines.
 #include "core/radiosity/scene.h"
 
 #include <array>
@@ -31,8 +39,8 @@ struct Patch {
     int surface = 0;          // index into Scene::surfaces
     int group = -1;           // shooting group (PatchMesh::groups), −1 when not grouped
     int level = 0;            // 0 = from the initial grid, +1 per adaptive split
-    double area = 0.0;        // m²
-    glm::dvec3 centre{0.0};   // centroid (area-weighted), on the patch
+    double area = 0.0;        // m², of the exposed part (see above; the polygon's otherwise)
+    glm::dvec3 centre{0.0};   // centroid (area-weighted) of the exposed part, on the patch
     glm::dvec3 normal{0.0};   // unit, the emitting/receiving side
     glm::dvec3 reflectivity{0.0}; // copied from the surface
     glm::dvec3 emission{0.0};     // copied from the surface
@@ -78,6 +86,15 @@ struct MeshConfig {
     // is the coarse one subdivided); progressive refinement then shoots per group. 0: no groups.
     double shooterEdge = 0.0;
 };
+
+// Aspect ratio of a patch: its longest edge L over its width across that edge, L²/A for a
+// quad (a×b rectangle: a/b; square 1) and L²/(2A) for a triangle (right isosceles: 2;
+// equilateral: 1.15). meshScene keeps it at most kMaxAspect on the lab's scenes (a quad
+// surface's grid cells are at most 1.5 times longer than wide, 2.15 for the end cells of the
+// lamp shade's rim, a 1 cm wide trapezoid with 45° ends; a triangle surface's patches are
+// similar to it, so a sliver surface would give sliver patches: the scenes have none).
+double patchAspect(const PatchMesh& mesh, int patch);
+constexpr double kMaxAspect = 2.5;
 
 // Grid-meshes every surface. Validates the scene first (throws std::invalid_argument).
 PatchMesh meshScene(const Scene& scene, const MeshConfig& config);

@@ -7,7 +7,9 @@
 //  - Centres: the course's (15.20), F_ij = V_ij cos φ_i cos φ_j A_j / (π d²) at the centres;
 //  - PointPairs: (15.20) per ray pair, averaged: A_j/k Σ V_s cos cos/(π r_s²);
 //  - PointToPolygon: 1/k Σ V_s F(dA at sample s on P_i -> P_j) with the exact contour integral
-//    (closed_forms.h): exact for unoccluded pairs up to the sampling of P_i;
+//    (closed_forms.h): exact for unoccluded pairs up to the sampling of P_i; the contour
+//    integral clips P_j to P_i's front half-space, so the visibility rays aim at that part too
+//    (an end behind P_i's plane is redrawn on it);
 //  - Auto: PointToPolygon for near pairs (centre distance < nearFactor × the larger patch
 //    diameter), Centres otherwise.
 #include "core/radiosity/patch_bvh.h"
