@@ -1393,13 +1393,14 @@ void RaytraceLab::gui() {
         if (ImGui::Button(tr("t: run timing experiment"))) startExperiment();
         if (es.cancelled) {
             ImGui::SameLine();
-            ImGui::TextUnformatted(tr("(cancelled)"));
+            ImGui::TextWrapped("%s", tr("(cancelled)"));
         }
     } else {
         wrapText(tr("timing experiment running (progress at the top; x cancels)"));
     }
     if (!timings_.empty() &&
-        ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+        ImGui::BeginTable("timings", 5,
+                          ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn(tr("scene"));
         // Units in the headers, numbers alone in the cells: the five columns fit the
         // 420-px panel (with "ms"/"s" in every cell the last column was cut).
@@ -1411,7 +1412,7 @@ void RaytraceLab::gui() {
         for (const TimingRow& r : timings_) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(r.scene.c_str());
+            ImGui::TextWrapped("%s", r.scene.c_str()); // wraps where a long header squeezes it
             ImGui::TableNextColumn();
             ImGui::Text("%.1f", r.rasterMs);
             ImGui::TableNextColumn();

@@ -343,8 +343,11 @@ void ExerciseMode::gui() {
     Impl& m = *impl_;
     if (!ImGui::CollapsingHeader(tr("Exercises"), ImGuiTreeNodeFlags_DefaultOpen)) return;
     bool onNow = m.on;
-    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow))
-        setOn(onNow);
+    // The label wraps beside the box (a checkbox's own label does not, and a longer language
+    // ran it past the panel's edge).
+    if (ImGui::Checkbox("##exercise-on", &onNow)) setOn(onNow);
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", trf("your code (%c); the reference as a ghost", key_).c_str());
     ImGui::TextWrapped("%s", trf("your file: %s", lab_.file.c_str()).c_str());
     if (!m.started) {
         ImGui::TextWrapped("%s",

@@ -42,7 +42,7 @@ if [ "${1:-}" == --inside ]; then # in Xvfb: $2 lock tool, $3 keys, $4 log, then
   done
   [ -n "$win" ] || { echo "no window"; kill $pid; exit 4; }
   xdotool windowfocus $win
-  sleep 1
+  sleep 2 # the first frames (shaders, meshes) before the keys; less lost keys under a loaded CI
   "$lock" 1 >/dev/null || exit 5
   for ((k = 0; k < ${#keys}; k++)); do
     xdotool key --delay 80 "$(keysym "${keys:k:1}")"
