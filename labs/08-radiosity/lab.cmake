@@ -1,2 +1,2 @@
 add_lab(08-radiosity lab08-radiosity "Radiosity: patches, form factors by rays / CPU hemicube / GL hemicube, progressive refinement, smoothing, Cornell box"
-  SOURCES radiosity_lab.cpp patch_view.cpp gl_hemicube.cpp hemicube_view.cpp)
+  SOURCES radiosity_lab.cpp radiosity_display.cpp radiosity_panel.cpp patch_view.cpp gl_hemicube.cpp hemicube_view.cpp)
