@@ -172,7 +172,18 @@ void RadiosityLab::setupCamera(const View& view) const {
     d = glm::dvec3(pitch * glm::dvec4(d, 0.0));
     const glm::dvec3 eye = sc.target + d;
     const double dist = glm::length(eye - sceneCentre_);
-    setPerspective(view, 40.0, std::max(1e-3 * sceneRadius_, (dist - sceneRadius_) * 0.5),
+    // The Cornell box is seen from outside with its published 40° (vertical). The classroom
+    // and the floor lamp are seen from inside the room: at 40° the ceiling lamps were cut at the
+    // top and the red box at the right edge once the panel narrows the view, so the view opens
+    // to at least 56° vertically and 80° horizontally (a 24 mm lens's field, 1280×800 with the
+    // panel: about 1.1:1).
+    double fovy = 40.0;
+    if (dist < sceneRadius_) {
+        const double aspect = double(view.width) / double(std::max(1, view.height));
+        const double fitH = 2.0 * glm::degrees(std::atan(std::tan(glm::radians(40.0)) / aspect));
+        fovy = std::clamp(std::max(56.0, fitH), 56.0, 100.0);
+    }
+    setPerspective(view, fovy, std::max(1e-3 * sceneRadius_, (dist - sceneRadius_) * 0.5),
                    dist + 2 * sceneRadius_);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
