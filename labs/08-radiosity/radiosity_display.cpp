@@ -340,7 +340,7 @@ void RadiosityLab::drawOverlay(const View& view) {
         overlayDirty_ = false;
         overlaySize_ = 2 * res;
     }
-    const int side = std::max(16, std::min(view.width, view.height) / 4);
+    const int side = std::max(16, std::min(view.width, view.height) / 5);
     const int x0 = view.width - side - 5, y0 = view.height - side - 5;
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();

@@ -516,6 +516,7 @@ void RadiosityLab::startRun() {
     running_ = true;
     runStart_ = std::chrono::steady_clock::now();
     runSeconds_ = 0;
+    usableSeconds_ = -1;
     if (s.method == FfMethod::GlHemicube) {
         // GL rows need the GL thread: draw() takes steps for ~30 ms per frame instead.
         mainThreadRun_ = true;
@@ -547,6 +548,7 @@ void RadiosityLab::startRun() {
         publish();
         runSeconds_ = secondsSince(runStart_);
         running_ = false;
+        reportRun();
     });
 }
 
@@ -572,8 +574,12 @@ void RadiosityLab::stepOnMainThread(bool headless) {
     const auto t0 = std::chrono::steady_clock::now();
     const int limit = stepLimit();
     try {
+        // 0.25 s of steps a frame: the first shots draw a 512² GL hemicube each (~20 ms), and
+        // a frame of 3.7k patches takes ~50 ms to draw here; 30 ms slices made convergence 3×
+        // slower in a window than headless (1.2-1.3 s now against 0.7 s). Keys answer within
+        // a slice.
         while (sol.residual() >= s.tolerance && sol.steps() < limit &&
-               (headless || secondsSince(t0) < 0.03)) {
+               (headless || secondsSince(t0) < 0.25)) {
             if (overBudget()) {
                 budgetHit_ = true;
                 break;
@@ -589,7 +595,19 @@ void RadiosityLab::stepOnMainThread(bool headless) {
     if (!mainThreadRun_) {
         runSeconds_ = secondsSince(runStart_);
         running_ = false;
+        reportRun();
     }
+}
+
+// In a window, the end of a run on stdout (the figures of docs/bench/radiosity.md's window
+// table come from these lines).
+void RadiosityLab::reportRun() const {
+#if !defined(WB_HEADLESS)
+    std::printf("lab08: %s run %.2f s, %d steps, residual %.2e\n",
+                s.method == FfMethod::Rays ? "rays" : s.method == FfMethod::CpuHemicube ? "CPU" : "GL",
+                runSeconds_.load(), snapshot().steps, snapshot().residual);
+    std::fflush(stdout);
+#endif
 }
 
 // Copies what drawing needs out of the solver (called by the worker while it runs, or here).
@@ -602,6 +620,14 @@ void RadiosityLab::publish() {
     snap.steps = sol.steps();
     snap.residual = sol.residual();
     snap.lastShooter = sol.lastShooter();
+    // "Usable": unshot power below 5% of the emitted (docs/bench/radiosity.md §4).
+    if (running() && usableSeconds_ < 0 && snap.residual < 0.05) {
+        usableSeconds_ = secondsSince(runStart_);
+#if !defined(WB_HEADLESS)
+        std::printf("lab08: unshot power < 5%% after %.2f s\n", usableSeconds_.load());
+        std::fflush(stdout);
+#endif
+    }
     std::lock_guard<std::mutex> lock(snapMutex_);
     snap.version = snapshot_.version + 1;
     snapshot_ = std::move(snap);

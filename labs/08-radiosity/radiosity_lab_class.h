@@ -120,6 +120,7 @@ class RadiosityLab : public Lab {
         return snapshot_;
     }
     void printSummary();
+    void reportRun() const;
     void glRow(const rad::HemicubeFrame& frame, int self, std::vector<float>& out);
 
     // radiosity_display.cpp: colours, drawing, picking.
@@ -151,6 +152,7 @@ class RadiosityLab : public Lab {
     rad::ItemBuffer providerItems_; // the GL row provider's item buffer
     std::chrono::steady_clock::time_point runStart_, labStart_;
     std::atomic<double> runSeconds_{0};
+    std::atomic<double> usableSeconds_{-1}; // the run's time to unshot power < 5% (−1: not yet)
     std::atomic<bool> budgetHit_{false};
     double lastStepSeconds_ = 0;
     mutable std::mutex snapMutex_;

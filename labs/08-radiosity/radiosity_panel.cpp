@@ -55,8 +55,9 @@ void RadiosityLab::gui() {
                                      ff.seconds())
                                  .c_str());
     ImGui::TextWrapped("%s", wb::trf("memory for F: %.1f MiB (%s)", double(ff.bytes()) / (1024.0 * 1024.0),
-                                     ff.stored() ? wb::tr("the whole n×n matrix")
-                                                 : wb::tr("a row when a patch shoots"))
+                                     groups ? wb::tr("the shooting patches' rows")
+                                     : ff.stored() ? wb::tr("the whole n×n matrix")
+                                                   : wb::tr("a row when a patch shoots"))
                                  .c_str());
 
     ImGui::Separator();
@@ -76,6 +77,8 @@ void RadiosityLab::gui() {
         ImGui::Text("running %.1f s (any key stops)", secondsSince(runStart_));
     else if (runSeconds_ > 0)
         ImGui::Text("last run %.2f s", runSeconds_.load());
+    if (usableSeconds_ >= 0)
+        ImGui::Text("%s", wb::trf("unshot light < 5%% after %.2f s", usableSeconds_.load()).c_str());
     if (!history_.empty()) {
         std::vector<float> lg(history_.size());
         for (size_t i = 0; i < lg.size(); ++i) lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
