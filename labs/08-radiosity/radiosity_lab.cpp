@@ -56,7 +56,10 @@ std::vector<OptionHelp> RadiosityLab::options() const {
             {"threads", "N", "form-factor threads (0 = all cores)"},
             {"click", "X,Y", "click the scene at pixel (X, Y) as the mouse would"},
             {"steps", "N", wb::tr("headless: solve at most N steps (0: the unsolved scene)")},
-            {"budget", "S", wb::tr("headless: seconds of work before drawing what there is (60)")}};
+            {"budget", "S", wb::tr("headless: seconds of work before drawing what there is (60)")},
+            {"shooting-patch", "M", wb::tr("edge of the shooting patches, metres (0: every patch shoots)")},
+            {"exposure", "X", wb::tr("display scale of B (default: automatic)")},
+            {"white-balance", "on|off", wb::tr("divide by the light's colour (default on)")}};
 }
 
 bool RadiosityLab::setOption(const std::string& name, const std::string& value, std::string& error) {
@@ -169,6 +172,25 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value, 
         s.budget = v;
         return true;
     }
+    if (name == "shooting-patch") {
+        if (!number(0.0, 100.0, v)) return false;
+        shooterOption_ = v;
+        return true;
+    }
+    if (name == "exposure") {
+        if (!number(1e-6, 1e6, v)) return false;
+        s.exposure = float(v);
+        s.autoExposure = false;
+        return true;
+    }
+    if (name == "white-balance") {
+        if (value != "on" && value != "off") {
+            error = wb::trf("expected on or off, got '%s'", value.c_str());
+            return false;
+        }
+        s.whiteBalance = value == "on";
+        return true;
+    }
     error = "unknown option --" + name;
     return false;
 }
@@ -253,7 +275,7 @@ bool RadiosityLab::loadScene(const std::string& name, double patchSize) {
         // Shooting groups of ~11×11 default patches (the Cornell box: 0.31 m, 45 groups, the
         // bench's fastest configuration under 1 s), fixed per scene: [ ] and a refine the
         // receivers, the shooters stay (none when the patches are as large).
-        s.shooterEdge = 11.0 * defaultPatchSize(scene);
+        s.shooterEdge = shooterOption_ >= 0 ? shooterOption_ : 11.0 * defaultPatchSize(scene);
         if (!meshChecked(scene, patchSize, mesh)) return false;
         auto m = std::make_unique<Model>();
         m->scene = std::move(scene);
@@ -422,13 +444,14 @@ void RadiosityLab::rebuildSolver() {
         fc.rowProvider = [this](int i, std::vector<float>& out) {
             glRow(rad::hemicubeFrame(model_->mesh, i), i, out);
         };
-        fc.groupRowProvider = [this](const rad::HemicubeFrame& fr, std::vector<float>& out) {
+        fc.groupRowProvider = [this](int, const rad::HemicubeFrame& fr, std::vector<float>& out) {
             glRow(fr, -1, out);
         };
     } else if (s.method == FfMethod::Rays) {
-        // A shooting group is not a patch: rays from its centroid (point_rays.h), k per patch.
-        fc.groupRowProvider = [this](const rad::HemicubeFrame& fr, std::vector<float>& out) {
-            rad::pointRayRow(model_->mesh, model_->ff->bvh(), fr, s.raySamples, out);
+        // A shooting group is not a patch: each receiver gathers from the group's area by the
+        // exact point-to-polygon term and k visibility rays (point_rays.h).
+        fc.groupRowProvider = [this](int g, const rad::HemicubeFrame&, std::vector<float>& out) {
+            rad::groupGatherRow(model_->mesh, model_->ff->bvh(), g, s.raySamples, out);
         };
     }
     fc.rays.samples = s.raySamples;

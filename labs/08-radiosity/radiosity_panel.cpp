@@ -72,6 +72,18 @@ void RadiosityLab::gui() {
                                          model_->mesh.groups.size(), s.shooterEdge,
                                          model_->mesh.patches.size())
                                      .c_str());
+    if (s.solver == 0) {
+        // Larger shooting patches converge sooner; smaller ones are closer to the answer
+        // (docs/bench/radiosity.md, "Lab 08 defaults": block faces 10-30% off at 0.31 m in the
+        // Cornell box, ~1-3% at 0.10 m).
+        float shooter = float(s.shooterEdge);
+        ImGui::SliderFloat(wb::tr("shooting patch, m"), &shooter, 0.0f, 1.0f, "%.2f");
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+            shooterOption_ = double(shooter);
+            s.shooterEdge = double(shooter);
+            remesh(s.patchSize);
+        }
+    }
     ImGui::Text("iterations %d, residual %.2e", steps_, residual_);
     if (running())
         ImGui::Text("running %.1f s (any key stops)", secondsSince(runStart_));

@@ -62,7 +62,7 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         fr.origin = rt::offsetRayOrigin(sg.centre, sg.normal);
         if (config_.groupRowProvider) {
             out.assign(n, 0.0f);
-            config_.groupRowProvider(fr, out);
+            config_.groupRowProvider(g, fr, out);
             nanos_ += nanosSince(t0);
             ++rows_;
             return;

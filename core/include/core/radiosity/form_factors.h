@@ -31,11 +31,12 @@ struct FormFactorConfig {
     // from the thread calling row()/computeAll() (GL contexts are per thread); computeAll() then
     // runs serially.
     std::function<void(int i, std::vector<float>& out)> rowProvider;
-    // Progressive with shooting groups: the row of a group from its hemicube frame (origin at
+    // Progressive with shooting groups: the row of group g (its hemicube frame has the origin at
     // the group's centroid), `out` sized to n. Empty: core's CPU hemicube at hemicubeResolution.
-    // Lab 08 passes its GL hemicube or rays (pointRayRow) so the keys' method also shoots the
-    // groups. Called from the thread calling shooterRow() (the GL hemicube needs its context).
-    std::function<void(const HemicubeFrame& frame, std::vector<float>& out)> groupRowProvider;
+    // Lab 08 passes its GL hemicube or rays at the receivers (point_rays.h) so the keys' method
+    // also shoots the groups. Called from the thread calling shooterRow() (the GL hemicube
+    // needs its context).
+    std::function<void(int g, const HemicubeFrame& frame, std::vector<float>& out)> groupRowProvider;
 };
 
 class FormFactors {
