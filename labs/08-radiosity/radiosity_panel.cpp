@@ -35,10 +35,10 @@ void RadiosityLab::gui() {
     ImGui::RadioButton("3 GL", &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::Rays)
-        ImGui::TextWrapped("%s", wb::trf("§1.15.1: F by %d rays between each pair of patches "
-                                         "(from each shooting patch's centre to %d points on each "
-                                         "patch), blocked rays not counted.",
-                                         s.raySamples, s.raySamples)
+        ImGui::TextWrapped("%s", wb::trf("§1.15.1: F by rays: from each patch to the shooting patch, "
+                                         "exact where nothing is in the way; %d rays decide what is "
+                                         "blocked.",
+                                         s.raySamples)
                                      .c_str());
     else
         ImGui::TextWrapped("%s", wb::trf("§1.15.2: F by the hemicube, %d×%d pixels a face, %s; "
