@@ -24,7 +24,7 @@ namespace {
 // that stays readable on the grey of unselected surfaces).
 glm::vec3 heat(double t) {
     t = std::clamp(t, 0.0, 1.0);
-    const glm::vec3 stops[] = {{0.02f, 0.02f, 0.1f}, {0.1f, 0.2f, 0.9f}, {0.8f, 0.1f, 0.7f},
+    const glm::vec3 stops[] = {{0.02f, 0.02f, 0.1f}, {0.1f, 0.2f, 0.9f},  {0.8f, 0.1f, 0.7f},
                                {1.0f, 0.5f, 0.0f},   {1.0f, 0.95f, 0.2f}, {1.0f, 1.0f, 1.0f}};
     const double x = t * 5.0;
     const int i = std::min(4, int(x));
@@ -96,12 +96,14 @@ void RadiosityLab::updateColours() {
     autoExposure_ = autoExposure(B);
     if (s.autoExposure) s.exposure = float(autoExposure_);
     patchColour_.resize(B.size());
-    for (size_t i = 0; i < B.size(); ++i) patchColour_[i] = tone(B[i]);
+    for (size_t i = 0; i < B.size(); ++i)
+        patchColour_[i] = tone(B[i]);
     view_.setPatchColours(patchColour_);
     if (s.smooth) {
         const std::vector<glm::dvec3> vb = rad::vertexRadiosity(model_->mesh, B);
         std::vector<glm::vec3> vc(vb.size());
-        for (size_t i = 0; i < vb.size(); ++i) vc[i] = tone(vb[i]);
+        for (size_t i = 0; i < vb.size(); ++i)
+            vc[i] = tone(vb[i]);
         view_.setVertexColours(vc);
     }
     overlayDirty_ = true;
@@ -126,7 +128,8 @@ void RadiosityLab::updateSelection() {
         if (s.method == FfMethod::GlHemicube) {
             std::string err;
             if (!glHemicube_.render(frame, ff.deltaTable().resolution,
-                                    GlHemicube::kNearFraction * sceneRadius_, selectedItems_, err)) {
+                                    GlHemicube::kNearFraction * sceneRadius_, selectedItems_,
+                                    err)) {
                 message_ = err;
                 selected_ = -1;
                 return;

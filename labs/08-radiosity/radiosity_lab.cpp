@@ -18,7 +18,9 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double luminance(const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+double luminance(const glm::dvec3& c) {
+    return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
+}
 
 int hemicubeFor(const RadiosityState& s) {
     if (s.hemicubeRes > 0) return s.hemicubeRes;
@@ -57,12 +59,14 @@ std::vector<OptionHelp> RadiosityLab::options() const {
             {"click", "X,Y", "click the scene at pixel (X, Y) as the mouse would"},
             {"steps", "N", wb::tr("headless: solve at most N steps (0: the unsolved scene)")},
             {"budget", "S", wb::tr("headless: seconds of work before drawing what there is (60)")},
-            {"shooting-patch", "M", wb::tr("edge of the shooting patches, metres (0: every patch shoots)")},
+            {"shooting-patch", "M",
+             wb::tr("edge of the shooting patches, metres (0: every patch shoots)")},
             {"exposure", "X", wb::tr("display scale of B (default: automatic)")},
             {"white-balance", "on|off", wb::tr("divide by the light's colour (default on)")}};
 }
 
-bool RadiosityLab::setOption(const std::string& name, const std::string& value, std::string& error) {
+bool RadiosityLab::setOption(const std::string& name, const std::string& value,
+                             std::string& error) {
     auto number = [&](double lo, double hi, double& out) {
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
@@ -91,9 +95,12 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value, 
         return true;
     }
     if (name == "method") {
-        if (value == "rays") s.method = FfMethod::Rays;
-        else if (value == "cpu") s.method = FfMethod::CpuHemicube;
-        else if (value == "gl") s.method = FfMethod::GlHemicube;
+        if (value == "rays")
+            s.method = FfMethod::Rays;
+        else if (value == "cpu")
+            s.method = FfMethod::CpuHemicube;
+        else if (value == "gl")
+            s.method = FfMethod::GlHemicube;
         else {
             error = "expected rays, cpu or gl, got '" + value + "'";
             return false;
@@ -101,9 +108,12 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value, 
         return true;
     }
     if (name == "solver") {
-        if (value == "progressive") s.solver = 0;
-        else if (value == "jacobi") s.solver = 1;
-        else if (value == "gauss-seidel") s.solver = 2;
+        if (value == "progressive")
+            s.solver = 0;
+        else if (value == "jacobi")
+            s.solver = 1;
+        else if (value == "gauss-seidel")
+            s.solver = 2;
         else {
             error = "expected progressive, jacobi or gauss-seidel, got '" + value + "'";
             return false;
@@ -136,10 +146,11 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value, 
         const int hw = std::max(1, int(std::thread::hardware_concurrency()));
         s.threads = int(v);
         if (s.threads > hw) {
-            std::fprintf(stderr, "%s\n",
-                         wb::trf("lab08: --threads %d: this machine runs %d threads at once; using %d",
-                                 s.threads, hw, hw)
-                             .c_str());
+            std::fprintf(
+                stderr, "%s\n",
+                wb::trf("lab08: --threads %d: this machine runs %d threads at once; using %d",
+                        s.threads, hw, hw)
+                    .c_str());
             s.threads = hw;
         }
         return true;
@@ -261,7 +272,8 @@ bool RadiosityLab::key(int k) {
         loadScene(names[i], -1.0);
         return true;
     }
-    default: return false;
+    default:
+        return false;
     }
 }
 
@@ -319,8 +331,8 @@ bool RadiosityLab::meshChecked(const rad::Scene& scene, double patchSize, rad::P
         area += 0.5 * glm::length(nrm);
     }
     auto refuse = [&](double count) {
-        message_ = wb::trf("patch size %.4g m would give %s%.0f patches; the lab stops at %d", patchSize,
-                           count < 0 ? "" : "at least ", std::fabs(count), kMaxPatches);
+        message_ = wb::trf("patch size %.4g m would give %s%.0f patches; the lab stops at %d",
+                           patchSize, count < 0 ? "" : "at least ", std::fabs(count), kMaxPatches);
         std::fprintf(stderr, "lab08: %s\n", message_.c_str());
         return false;
     };
@@ -413,7 +425,8 @@ void RadiosityLab::install(std::unique_ptr<Model> m) {
     sceneCentre_ = 0.5 * (lo + hi);
     // The light's colour: the emitters' area-weighted emission (white balance divides by it).
     glm::dvec3 light(0.0);
-    for (const rad::Patch& p : model_->mesh.patches) light += p.area * p.emission;
+    for (const rad::Patch& p : model_->mesh.patches)
+        light += p.area * p.emission;
     model_->light = luminance(light) > 0 ? light / luminance(light) : glm::dvec3(1.0);
     selected_ = -1;
     selectedRow_.clear();
@@ -427,10 +440,11 @@ void RadiosityLab::glRow(const rad::HemicubeFrame& frame, int self, std::vector<
     // The table's resolution, not the panel's: a slider being dragged must not make item
     // buffer and delta table disagree.
     const int res = model_->ff->deltaTable().resolution;
-    if (!glHemicube_.render(frame, res, GlHemicube::kNearFraction * sceneRadius_, providerItems_, err))
+    if (!glHemicube_.render(frame, res, GlHemicube::kNearFraction * sceneRadius_, providerItems_,
+                            err))
         throw std::runtime_error(err);
-    rad::accumulate(providerItems_, model_->ff->deltaTable(), int(model_->mesh.patches.size()), self,
-                    out);
+    rad::accumulate(providerItems_, model_->ff->deltaTable(), int(model_->mesh.patches.size()),
+                    self, out);
 }
 
 void RadiosityLab::rebuildSolver() {
@@ -471,9 +485,10 @@ void RadiosityLab::rebuildSolver() {
             // is current: every GL row is drawn here first (computeAll calls the provider
             // serially on this thread) and the sweeps read the stored matrix.
             if (!model_->ff->stored())
-                throw std::runtime_error("Jacobi / Gauss-Seidel with GL rows need F stored (at most " +
-                                         std::to_string(fc.maxStoredPatches) +
-                                         " patches); use progressive or the CPU hemicube");
+                throw std::runtime_error(
+                    "Jacobi / Gauss-Seidel with GL rows need F stored (at most " +
+                    std::to_string(fc.maxStoredPatches) +
+                    " patches); use progressive or the CPU hemicube");
             model_->ff->computeAll();
         }
         model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
@@ -535,6 +550,9 @@ int RadiosityLab::stepLimit() const {
 
 void RadiosityLab::startRun() {
     if (!model_ || running()) return;
+    // A run that ended by itself leaves its thread joinable: assigning a new one to it would
+    // call std::terminate (r after a finished run on a worker method crashed the lab).
+    if (worker_.joinable()) worker_.join();
     cancel_ = false;
     running_ = true;
     runStart_ = std::chrono::steady_clock::now();
@@ -586,7 +604,8 @@ void RadiosityLab::stopRun() {
 // Waits for a run to end by itself (headless scripts).
 void RadiosityLab::finishRun() {
     if (worker_.joinable()) worker_.join();
-    while (mainThreadRun_) stepOnMainThread(true);
+    while (mainThreadRun_)
+        stepOnMainThread(true);
     running_ = false;
 }
 
@@ -627,7 +646,9 @@ void RadiosityLab::stepOnMainThread(bool headless) {
 void RadiosityLab::reportRun() const {
 #if !defined(WB_HEADLESS)
     std::printf("lab08: %s run %.2f s, %d steps, residual %.2e\n",
-                s.method == FfMethod::Rays ? "rays" : s.method == FfMethod::CpuHemicube ? "CPU" : "GL",
+                s.method == FfMethod::Rays          ? "rays"
+                : s.method == FfMethod::CpuHemicube ? "CPU"
+                                                    : "GL",
                 runSeconds_.load(), snapshot().steps, snapshot().residual);
     std::fflush(stdout);
 #endif
@@ -666,14 +687,14 @@ std::string RadiosityLab::summary() const {
                   "%s: %zu patches (edge %.4f m, %zu shooting), %s, %d steps, residual %.2e, form "
                   "factors %.2f s (%lld rows, %.1f MiB)",
                   model_->scene.name.c_str(), model_->mesh.patches.size(), s.patchSize,
-                  model_->mesh.groups.size(), methods[int(s.method)],
-                  snap.steps, snap.residual, ff.seconds(), ff.rowsComputed(),
-                  double(ff.bytes()) / (1024.0 * 1024.0));
+                  model_->mesh.groups.size(), methods[int(s.method)], snap.steps, snap.residual,
+                  ff.seconds(), ff.rowsComputed(), double(ff.bytes()) / (1024.0 * 1024.0));
     std::string out = line;
     if (runSeconds_ > 0) out += wb::trf(", last run %.2f s", runSeconds_.load());
     if (budgetHit_)
-        out += wb::trf("; stopped at the budget of %g s (--budget): the picture is the solution so far",
-                       s.budget);
+        out += wb::trf(
+            "; stopped at the budget of %g s (--budget): the picture is the solution so far",
+            s.budget);
     return out;
 }
 
@@ -689,44 +710,81 @@ void RadiosityLab::printSummary() {
 std::vector<int> RadiosityLab::patchSurfaces() const {
     std::vector<int> out;
     if (model_)
-        for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.surface);
+        for (const rad::Patch& p : model_->mesh.patches)
+            out.push_back(p.surface);
     return out;
 }
 
 std::vector<glm::dvec3> RadiosityLab::patchCentres() const {
     std::vector<glm::dvec3> out;
     if (model_)
-        for (const rad::Patch& p : model_->mesh.patches) out.push_back(p.centre);
+        for (const rad::Patch& p : model_->mesh.patches)
+            out.push_back(p.centre);
     return out;
 }
 
 std::vector<std::string> RadiosityLab::surfaceNames() const {
     std::vector<std::string> out;
     if (model_)
-        for (const rad::Surface& sf : model_->mesh.surfaces) out.push_back(sf.name);
+        for (const rad::Surface& sf : model_->mesh.surfaces)
+            out.push_back(sf.name);
     return out;
 }
 
-std::unique_ptr<Lab> makeRadiosityLab() { return std::make_unique<RadiosityLab>(); }
+std::unique_ptr<Lab> makeRadiosityLab() {
+    return std::make_unique<RadiosityLab>();
+}
 
 namespace {
-const RadiosityLab& rl(const Lab& lab) { return static_cast<const RadiosityLab&>(lab); }
+const RadiosityLab& rl(const Lab& lab) {
+    return static_cast<const RadiosityLab&>(lab);
+}
 } // namespace
 
-RadiosityState& radiosityState(Lab& lab) { return static_cast<RadiosityLab&>(lab).s; }
-int radiosityPatchCount(const Lab& lab) { return rl(lab).patchCount(); }
-int radiosityStepCount(const Lab& lab) { return rl(lab).stepCount(); }
-double radiosityResidual(const Lab& lab) { return rl(lab).residual(); }
-std::vector<glm::dvec3> radiosityDisplayB(const Lab& lab) { return rl(lab).displayB(); }
-int radiositySelected(const Lab& lab) { return rl(lab).selected(); }
-const std::vector<float>& radiositySelectedRow(const Lab& lab) { return rl(lab).selectedRow(); }
-const rad::ItemBuffer& radiositySelectedItems(const Lab& lab) { return rl(lab).selectedItems(); }
-void radiositySelect(Lab& lab, int patch) { static_cast<RadiosityLab&>(lab).select(patch); }
-std::vector<int> radiosityPatchSurfaces(const Lab& lab) { return rl(lab).patchSurfaces(); }
-std::vector<glm::dvec3> radiosityPatchCentres(const Lab& lab) { return rl(lab).patchCentres(); }
-std::vector<std::string> radiositySurfaceNames(const Lab& lab) { return rl(lab).surfaceNames(); }
-std::string radiositySummary(const Lab& lab) { return rl(lab).summary(); }
-bool radiosityBudgetHit(const Lab& lab) { return rl(lab).budgetHit(); }
-glm::vec3 radiosityPatchColour(const Lab& lab, int i) { return rl(lab).patchColour(i); }
+RadiosityState& radiosityState(Lab& lab) {
+    return static_cast<RadiosityLab&>(lab).s;
+}
+int radiosityPatchCount(const Lab& lab) {
+    return rl(lab).patchCount();
+}
+int radiosityStepCount(const Lab& lab) {
+    return rl(lab).stepCount();
+}
+double radiosityResidual(const Lab& lab) {
+    return rl(lab).residual();
+}
+std::vector<glm::dvec3> radiosityDisplayB(const Lab& lab) {
+    return rl(lab).displayB();
+}
+int radiositySelected(const Lab& lab) {
+    return rl(lab).selected();
+}
+const std::vector<float>& radiositySelectedRow(const Lab& lab) {
+    return rl(lab).selectedRow();
+}
+const rad::ItemBuffer& radiositySelectedItems(const Lab& lab) {
+    return rl(lab).selectedItems();
+}
+void radiositySelect(Lab& lab, int patch) {
+    static_cast<RadiosityLab&>(lab).select(patch);
+}
+std::vector<int> radiosityPatchSurfaces(const Lab& lab) {
+    return rl(lab).patchSurfaces();
+}
+std::vector<glm::dvec3> radiosityPatchCentres(const Lab& lab) {
+    return rl(lab).patchCentres();
+}
+std::vector<std::string> radiositySurfaceNames(const Lab& lab) {
+    return rl(lab).surfaceNames();
+}
+std::string radiositySummary(const Lab& lab) {
+    return rl(lab).summary();
+}
+bool radiosityBudgetHit(const Lab& lab) {
+    return rl(lab).budgetHit();
+}
+glm::vec3 radiosityPatchColour(const Lab& lab, int i) {
+    return rl(lab).patchColour(i);
+}
 
 } // namespace wb

@@ -82,7 +82,8 @@ class RadiosityLab : public Lab {
     std::string summary() const;
     bool budgetHit() const { return budgetHit_; }
     glm::vec3 patchColour(int i) const {
-        return i >= 0 && size_t(i) < patchColour_.size() ? patchColour_[size_t(i)] : glm::vec3(0.0f);
+        return i >= 0 && size_t(i) < patchColour_.size() ? patchColour_[size_t(i)]
+                                                         : glm::vec3(0.0f);
     }
 
   private:
@@ -147,9 +148,9 @@ class RadiosityLab : public Lab {
     // Solving.
     std::thread worker_;
     std::atomic<bool> cancel_{false}, running_{false};
-    bool mainThreadRun_ = false;    // the GL method's run, stepped in draw()
-    bool autoSolve_ = false;        // headless: solve before drawing (a change since the last solve)
-    bool autoRun_ = false;          // the current run is the automatic one (--steps limits it)
+    bool mainThreadRun_ = false; // the GL method's run, stepped in draw()
+    bool autoSolve_ = false;     // headless: solve before drawing (a change since the last solve)
+    bool autoRun_ = false;       // the current run is the automatic one (--steps limits it)
     rad::ItemBuffer providerItems_; // the GL row provider's item buffer
     std::chrono::steady_clock::time_point runStart_, labStart_;
     std::atomic<double> runSeconds_{0};

@@ -35,11 +35,12 @@ void RadiosityLab::gui() {
     ImGui::RadioButton("3 GL", &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::Rays)
-        ImGui::TextWrapped("%s", wb::trf("§1.15.1: F by rays: from each patch to the shooting patch, "
-                                         "exact where nothing is in the way; %d rays decide what is "
-                                         "blocked.",
-                                         s.raySamples)
-                                     .c_str());
+        ImGui::TextWrapped("%s",
+                           wb::trf("§1.15.1: F by rays: from each patch to the shooting patch, "
+                                   "exact where nothing is in the way; %d rays decide what is "
+                                   "blocked.",
+                                   s.raySamples)
+                               .c_str());
     else
         ImGui::TextWrapped("%s", wb::trf("§1.15.2: F by the hemicube, %d×%d pixels a face, %s; "
                                          "each pixel adds its delta form factor.",
@@ -49,13 +50,14 @@ void RadiosityLab::gui() {
                                              : wb::tr("cast by rays on the CPU"))
                                      .c_str());
     const bool groups = !model_->mesh.groups.empty() && s.solver == 0;
-    ImGui::TextWrapped("%s", wb::trf("§1.15: %lld rows of F computed (%s) in %.2f s",
-                                     ff.rowsComputed(),
-                                     groups ? wb::tr("one per shooting patch") : wb::tr("one per patch"),
-                                     ff.seconds())
-                                 .c_str());
-    ImGui::TextWrapped("%s", wb::trf("memory for F: %.1f MiB (%s)", double(ff.bytes()) / (1024.0 * 1024.0),
-                                     groups ? wb::tr("the shooting patches' rows")
+    ImGui::TextWrapped("%s",
+                       wb::trf("§1.15: %lld rows of F computed (%s) in %.2f s", ff.rowsComputed(),
+                               groups ? wb::tr("one per shooting patch") : wb::tr("one per patch"),
+                               ff.seconds())
+                           .c_str());
+    ImGui::TextWrapped("%s", wb::trf("memory for F: %.1f MiB (%s)",
+                                     double(ff.bytes()) / (1024.0 * 1024.0),
+                                     groups        ? wb::tr("the shooting patches' rows")
                                      : ff.stored() ? wb::tr("the whole n×n matrix")
                                                    : wb::tr("a row when a patch shoots"))
                                  .c_str());
@@ -68,10 +70,10 @@ void RadiosityLab::gui() {
         rebuildSolver();
     }
     if (groups)
-        ImGui::TextWrapped("%s", wb::trf("§1.14: %zu shooting patches (%.2f m) shoot, %zu patches receive",
-                                         model_->mesh.groups.size(), s.shooterEdge,
-                                         model_->mesh.patches.size())
-                                     .c_str());
+        ImGui::TextWrapped(
+            "%s", wb::trf("§1.14: %zu shooting patches (%.2f m) shoot, %zu patches receive",
+                          model_->mesh.groups.size(), s.shooterEdge, model_->mesh.patches.size())
+                      .c_str());
     if (s.solver == 0) {
         // Larger shooting patches converge sooner; smaller ones are closer to the answer
         // (docs/bench/radiosity.md, "Lab 08 defaults": block faces 10-30% off at 0.31 m in the
@@ -90,24 +92,29 @@ void RadiosityLab::gui() {
     else if (runSeconds_ > 0)
         ImGui::Text("last run %.2f s", runSeconds_.load());
     if (usableSeconds_ >= 0)
-        ImGui::Text("%s", wb::trf("unshot light < 5%% after %.2f s", usableSeconds_.load()).c_str());
+        ImGui::Text("%s",
+                    wb::trf("unshot light < 5%% after %.2f s", usableSeconds_.load()).c_str());
     if (!history_.empty()) {
         std::vector<float> lg(history_.size());
-        for (size_t i = 0; i < lg.size(); ++i) lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
+        for (size_t i = 0; i < lg.size(); ++i)
+            lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
         const float lo = *std::min_element(lg.begin(), lg.end());
         const float hi = *std::max_element(lg.begin(), lg.end());
         ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, "log10 residual", lo - 0.1f,
                          hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
-    if (ImGui::SliderFloat("log10 tol", &tol, -8.0f, -1.0f, "%.1f")) s.tolerance = std::pow(10.0, double(tol));
+    if (ImGui::SliderFloat("log10 tol", &tol, -8.0f, -1.0f, "%.1f"))
+        s.tolerance = std::pow(10.0, double(tol));
     if (ImGui::Checkbox("ambient term", &s.ambient)) {
         // The solver's config is fixed at construction: restart it with the new setting.
         rebuildSolver();
     }
     if (ImGui::Button(running() ? "stop (r)" : "run (r)")) {
-        if (running()) stopRun();
-        else startRun();
+        if (running())
+            stopRun();
+        else
+            startRun();
     }
     ImGui::SameLine();
     if (ImGui::Button("step (space)") && !running()) stepOnce();
@@ -137,18 +144,20 @@ void RadiosityLab::gui() {
     ImGui::Separator();
     if (selected_ >= 0 && !selectedRow_.empty()) {
         const rad::Patch& p = model_->mesh.patches[size_t(selected_)];
-        ImGui::TextWrapped("patch %d on %s", selected_, model_->mesh.surfaces[size_t(p.surface)].name.c_str());
+        ImGui::TextWrapped("patch %d on %s", selected_,
+                           model_->mesh.surfaces[size_t(p.surface)].name.c_str());
         ImGui::Text("row by %s", selectedSource_.c_str());
         ImGui::Text("sum F = %.4f, max %.2e", selectedRowSum_, selectedRowMax_);
         ImGui::Text("%.1f ms, hemicube %d", selectedSeconds_ * 1e3, selectedItems_.resolution);
-        ImGui::TextWrapped("%s", wb::trf("Scene: F from this patch, log scale; colour bar on the right: "
-                                         "%.1e (bottom) to %.1e (top, white), a tick per decade. Upper "
-                                         "right: its hemicube unfolded (top face in the middle).",
-                                         selectedRowMax_ * 1e-4, selectedRowMax_)
-                                     .c_str());
+        ImGui::TextWrapped("%s",
+                           wb::trf("Scene: F from this patch, log scale; colour bar on the right: "
+                                   "%.1e (bottom) to %.1e (top, white), a tick per decade. Upper "
+                                   "right: its hemicube unfolded (top face in the middle).",
+                                   selectedRowMax_ * 1e-4, selectedRowMax_)
+                               .c_str());
         if (overlayTexture_ && overlaySize_ > 0)
-            ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(overlayTexture_)), ImVec2(160, 160),
-                         ImVec2(0, 1), ImVec2(1, 0));
+            ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(overlayTexture_)),
+                         ImVec2(160, 160), ImVec2(0, 1), ImVec2(1, 0));
     } else {
         ImGui::TextWrapped("Click a patch to see its form-factor row and its hemicube.");
     }

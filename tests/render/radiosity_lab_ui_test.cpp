@@ -15,7 +15,9 @@ namespace {
 
 constexpr int kW = 160, kH = 120;
 
-bool contains(const std::string& s, const char* what) { return s.find(what) != std::string::npos; }
+bool contains(const std::string& s, const char* what) {
+    return s.find(what) != std::string::npos;
+}
 
 // A small Cornell box (0.1 m patches, ~390) so a solve takes a fraction of a second.
 std::unique_ptr<wb::Lab> smallCornell(const char* method = "gl") {

@@ -25,7 +25,8 @@ std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g) {
     for (int m : sg.members) {
         const Patch& p = mesh.patches[static_cast<std::size_t>(m)];
         for (int c = 0; c < p.cornerCount; ++c) {
-            const glm::dvec3 q = mesh.vertices[static_cast<std::size_t>(p.corners[static_cast<std::size_t>(c)])];
+            const glm::dvec3 q =
+                mesh.vertices[static_cast<std::size_t>(p.corners[static_cast<std::size_t>(c)])];
             // Snapped to a grid of 1e-9 of the group's size: corners on one edge of the group
             // get exactly the same coordinate (dot products differ in the last bits, and the
             // hull's collinearity test then dropped a true corner: the ceiling's group lost
@@ -35,27 +36,34 @@ std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g) {
             pts.push_back({snap(glm::dot(q - sg.centre, u)), snap(glm::dot(q - sg.centre, v)), q});
         }
     }
-    std::sort(pts.begin(), pts.end(), [](const P2& a, const P2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(pts.begin(), pts.end(),
+              [](const P2& a, const P2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     // Andrew's monotone chain, counter-clockwise about the normal (u, v, n right-handed);
     // collinear points dropped with a tolerance relative to the group's size.
     const double eps = 1e-12 * (1.0 + sg.area);
-    auto cross = [](const P2& o, const P2& a, const P2& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); };
+    auto cross = [](const P2& o, const P2& a, const P2& b) {
+        return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+    };
     std::vector<P2> h(2 * pts.size());
     std::size_t k = 0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        while (k >= 2 && cross(h[k - 2], h[k - 1], pts[i]) <= eps) --k;
+        while (k >= 2 && cross(h[k - 2], h[k - 1], pts[i]) <= eps)
+            --k;
         h[k++] = pts[i];
     }
     for (std::size_t i = pts.size() - 1, t = k + 1; i > 0; --i) {
-        while (k >= t && cross(h[k - 2], h[k - 1], pts[i - 1]) <= eps) --k;
+        while (k >= t && cross(h[k - 2], h[k - 1], pts[i - 1]) <= eps)
+            --k;
         h[k++] = pts[i - 1];
     }
     std::vector<glm::dvec3> out;
-    for (std::size_t i = 0; i + 1 < k; ++i) out.push_back(h[i].p);
+    for (std::size_t i = 0; i + 1 < k; ++i)
+        out.push_back(h[i].p);
     return out;
 }
 
-void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, std::vector<float>& out) {
+void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
+                    std::vector<float>& out) {
     if (k < 1 || k > 4096)
         throw std::invalid_argument("group ray row: k = " + std::to_string(k) + " outside 1..4096");
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
@@ -70,7 +78,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, st
         target[m] = rt::offsetRayOrigin(p.centre, p.normal);
     }
     auto seen = std::make_unique<std::atomic<bool>[]>(members);
-    for (std::size_t m = 0; m < members; ++m) seen[m] = false;
+    for (std::size_t m = 0; m < members; ++m)
+        seen[m] = false;
     const std::size_t kk = std::min<std::size_t>(static_cast<std::size_t>(k), members);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t j) {
         const Patch& p = mesh.patches[j];
@@ -89,12 +98,15 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, st
         const double size = std::sqrt(p.area);
         if (glm::dot(sg.normal, p.centre - sg.centre) < 2.0 * size && p.cornerCount == 4) {
             std::vector<glm::dvec3> c;
-            for (int q = 0; q < 4; ++q) c.push_back(mesh.vertices[static_cast<std::size_t>(p.corners[static_cast<std::size_t>(q)])]);
+            for (int q = 0; q < 4; ++q)
+                c.push_back(mesh.vertices[static_cast<std::size_t>(
+                    p.corners[static_cast<std::size_t>(q)])]);
             double acc = 0.0;
             for (int a = 0; a < 4; ++a)
                 for (int b = 0; b < 4; ++b) {
                     const double u = (a + 0.5) / 4, v = (b + 0.5) / 4;
-                    const glm::dvec3 x = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+                    const glm::dvec3 x = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] +
+                                         u * v * c[2] + (1 - u) * v * c[3];
                     acc += pointToPolygon(x, p.normal, hull);
                 }
             f = acc / 16.0;
@@ -113,8 +125,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, st
             const std::size_t m = (s * members / kk + (j * 7919u) % members) % members;
             const glm::dvec3 d = target[m] - from;
             const double r2 = glm::dot(d, d);
-            const double w = std::max(0.0, glm::dot(p.normal, d)) * std::max(0.0, -glm::dot(sg.normal, d)) /
-                             (r2 * r2 + 1e-300);
+            const double w = std::max(0.0, glm::dot(p.normal, d)) *
+                             std::max(0.0, -glm::dot(sg.normal, d)) / (r2 * r2 + 1e-300);
             if (w <= 0.0) continue;
             allW += w;
             if (bvh.visible(from, target[m])) {
@@ -132,7 +144,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, st
         std::fill(out.begin(), out.end(), 0.0f);
         return;
     }
-    for (float& x : out) x = static_cast<float>(x / live);
+    for (float& x : out)
+        x = static_cast<float>(x / live);
 }
 
 } // namespace wb::rad

@@ -18,7 +18,8 @@
 namespace wb::rad {
 
 // out[j] for group g of mesh.groups (out resized to the patch count). k in 1..4096.
-void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k, std::vector<float>& out);
+void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
+                    std::vector<float>& out);
 
 // The group's outline: convex hull of its members' corners (in its surface's plane).
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g);
