@@ -381,6 +381,11 @@ void RadiosityLab::refine() {
         startRun();
         finishRun();
     }
+    // Out of budget: keep the solved mesh (a finer one would be drawn unsolved).
+    if (overBudget()) {
+        budgetHit_ = true;
+        return;
+    }
 #endif
     // core's threshold is relative to the brightest non-emitting patch (the light's B would
     // make any fraction of it split nothing).
