@@ -215,6 +215,7 @@ const std::vector<PathSpec>& pathSpecs() {
 struct Segment {
     Ray ray;
     double tMin, tMax;
+    const Primitive* skip; // the flat primitive the ray leaves (issue 21), else null
 };
 
 } // namespace
@@ -292,6 +293,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                 s.ray.direction = dir;
                 s.tMin = 0;
                 s.tMax = d;
+                s.skip = h.primitive->planar() ? h.primitive : nullptr;
                 shadow.push_back(s);
             }
         }
@@ -309,7 +311,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             return [&] {
                 occ = 0;
                 for (const Segment& s : shadow)
-                    occ += b.occluded(s.ray, s.tMin, s.tMax);
+                    occ += b.occluded(s.ray, s.tMin, s.tMax, s.skip);
             };
         };
         RTCIntersectContext ctx;

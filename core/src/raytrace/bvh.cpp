@@ -1124,25 +1124,26 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
 }
 
 void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
-                         const std::function<bool(const Primitive&)>& visit) const {
+                         const std::function<bool(const Primitive&)>& visit,
+                         const Primitive* skip) const {
     if (options_.width != 2) {
-        forEachBlockerWide(ray, tMin, tMax, visit);
+        forEachBlockerWide(ray, tMin, tMax, visit, skip);
         return;
     }
     for (const Primitive* p : unbounded_)
-        if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+        if (p != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
-        return !(p.occluded(ray, tMin, tMax) && !visit(p));
+        return &p == skip || !(p.occluded(ray, tMin, tMax) && !visit(p));
     });
 }
 
-bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
-    if (options_.width != 2) return occludedWide(ray, tMin, tMax);
+bool Bvh::occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip) const {
+    if (options_.width != 2) return occludedWide(ray, tMin, tMax, skip);
     for (const Primitive* p : unbounded_)
-        if (p->occluded(ray, tMin, tMax)) return true;
+        if (p != skip && p->occluded(ray, tMin, tMax)) return true;
     bool any = false;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
-        any = p.occluded(ray, tMin, tMax);
+        any = &p != skip && p.occluded(ray, tMin, tMax);
         return !any;
     });
     return any;

@@ -507,12 +507,16 @@ template <class L> struct Bvh::WideWalk {
         return best != nullptr;
     }
 
-    static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax) {
+    // `skip`: a flat primitive the feeler starts on (Aggregate::forEachBlocker), never asked;
+    // compared by pointer, so the test of its neighbours in the leaf is untouched.
+    static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                         const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
-            if (p->occluded(ray, tMin, tMax)) return true;
+            if (p != skip && p->occluded(ray, tMin, tMax)) return true;
         bool any = false;
         walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
-            any = exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax);
+            const Primitive* p = b.order_[i];
+            any = p != skip && exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax);
             return !any;
         });
         return any;
@@ -529,12 +533,14 @@ template <class L> struct Bvh::WideWalk {
     }
 
     static void forEachBlocker(const Bvh& b, const Ray& ray, double tMin, double tMax,
-                               const std::function<bool(const Primitive&)>& visit) {
+                               const std::function<bool(const Primitive&)>& visit,
+                               const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
-            if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+            if (p != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
         walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
-            return !(exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax) &&
-                     !visit(*b.order_[i]));
+            const Primitive* p = b.order_[i];
+            return p == skip ||
+                   !(exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax) && !visit(*p));
         });
     }
 

@@ -38,12 +38,12 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
     struct Walk {
         const std::vector<Material>& materials;
         double opaqueKt;
-        const Primitive* self;
         double k = 1.0;
-    } walk{scene_.materials, settings_.opaqueKt, self};
-    // Only the blockers' materials matter: no hit records (Primitive::occluded).
+    } walk{scene_.materials, settings_.opaqueKt};
+    // Only the blockers' materials matter: no hit records (Primitive::occluded). A flat
+    // primitive cannot shadow its own point: the aggregate never asks it (issue 21; the
+    // visitor skipped it before, after its exact test had run: the same answers).
     scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&walk](const Primitive& p) {
-        if (&p == walk.self) return true; // a flat primitive cannot shadow its own point
         const double kt = walk.materials[size_t(p.material)].kt;
         if (kt < walk.opaqueKt) {
             walk.k = 0.0; // an opaque blocker: no need to look further
@@ -51,7 +51,7 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
         }
         walk.k *= kt;
         return true;
-    });
+    }, self);
     return walk.k;
 }
 

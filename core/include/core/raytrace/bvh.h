@@ -73,9 +73,11 @@ class Bvh : public Aggregate {
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
     void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Primitive&)>& visit) const override;
-    // Any hit in (tMin, tMax] (shadow feeler for opaque scenes).
-    bool occluded(const Ray& ray, double tMin, double tMax) const;
+                        const std::function<bool(const Primitive&)>& visit,
+                        const Primitive* skip = nullptr) const override;
+    // Any hit in (tMin, tMax] (shadow feeler for opaque scenes), never asking `skip` (a
+    // flat primitive the feeler starts on: Aggregate::forEachBlocker).
+    bool occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip = nullptr) const;
 
     const BvhStats& stats() const { return stats_; }
     const BvhOptions& options() const { return options_; }
@@ -121,11 +123,11 @@ class Bvh : public Aggregate {
         int width; // 4 or 8 children per node
         bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
         bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
-        bool (*occluded)(const Bvh&, const Ray&, double, double);
+        bool (*occluded)(const Bvh&, const Ray&, double, double, const Primitive*);
         void (*forEachHit)(const Bvh&, const Ray&, double, double,
                            const std::function<bool(const Hit&)>&);
         void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
-                               const std::function<bool(const Primitive&)>&);
+                               const std::function<bool(const Primitive&)>&, const Primitive*);
     };
     template <class Lanes> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
@@ -143,11 +145,12 @@ class Bvh : public Aggregate {
         path_->forEachHit(*this, ray, tMin, tMax, visit);
     }
     void forEachBlockerWide(const Ray& ray, double tMin, double tMax,
-                            const std::function<bool(const Primitive&)>& visit) const {
-        path_->forEachBlocker(*this, ray, tMin, tMax, visit);
+                            const std::function<bool(const Primitive&)>& visit,
+                            const Primitive* skip) const {
+        path_->forEachBlocker(*this, ray, tMin, tMax, visit, skip);
     }
-    bool occludedWide(const Ray& ray, double tMin, double tMax) const {
-        return path_->occluded(*this, ray, tMin, tMax);
+    bool occludedWide(const Ray& ray, double tMin, double tMax, const Primitive* skip) const {
+        return path_->occluded(*this, ray, tMin, tMax, skip);
     }
 
     BvhOptions options_;

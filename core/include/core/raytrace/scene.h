@@ -27,9 +27,16 @@ class Aggregate {
     // The same walk for shadow feelers, which need only who blocks (its material):
     // `visit` gets each primitive the ray meets in (tMin, tMax]. The default asks
     // forEachHit; BruteForce and Bvh ask Primitive::occluded, which may skip the hit record.
+    // `skip` (issue 21): a FLAT primitive (Primitive::planar) the feeler starts on; it is
+    // never asked (a ray leaving a plane meets it again at no t > 0, so its exact test could
+    // only say "no" or report rounding error: an exact argument, not an epsilon). Curved
+    // primitives must not be passed: a ray leaving a sphere may meet it again.
     virtual void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                                const std::function<bool(const Primitive&)>& visit) const {
-        forEachHit(ray, tMin, tMax, [&](const Hit& h) { return visit(*h.primitive); });
+                                const std::function<bool(const Primitive&)>& visit,
+                                const Primitive* skip = nullptr) const {
+        forEachHit(ray, tMin, tMax, [&](const Hit& h) {
+            return h.primitive == skip || visit(*h.primitive);
+        });
     }
 };
 
@@ -40,7 +47,8 @@ class BruteForce : public Aggregate {
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
     void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Primitive&)>& visit) const override;
+                        const std::function<bool(const Primitive&)>& visit,
+                        const Primitive* skip = nullptr) const override;
 
   private:
     const std::vector<std::unique_ptr<Primitive>>& prims_;
