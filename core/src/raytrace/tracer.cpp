@@ -122,14 +122,15 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
 
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                       RayCounts& counts) const {
+                       RayCounts& counts, const Hit* known) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
         ++counts.secondary;
     if constexpr (kObserve) observer->rayBegin(ray, kind);
     Hit hit;
-    if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+    if (known ? known->primitive == nullptr
+              : !scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
         const Color bg = model_.background(scene_);
         if constexpr (kObserve) {
             observer->missed(bg);
@@ -137,6 +138,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         }
         return bg;
     }
+    if (known) hit = *known;
     const Material& m = scene_.materials[size_t(hit.material)];
     const glm::dvec3 surface = (m.texture && hit.hasUv)
                                    ? sampleTexture(*m.texture, hit.primitive->textureCoords(hit))
@@ -252,6 +254,11 @@ Color Tracer::trace(const Ray& ray) const {
 Color Tracer::trace(const Ray& ray, RayCounts& counts) const {
     long budget = settings_.maxRaysPerSample;
     return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts);
+}
+
+Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts) const {
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {

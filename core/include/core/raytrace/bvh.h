@@ -45,6 +45,9 @@ struct BvhOptions {
     int width = 0;
     BvhSimd simd = BvhSimd::Auto; // instructions of the wide traversal
     int buildThreads = 0; // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
+    // intersectPacket/occludedPacket share one walk per packet (issue 21); false: they
+    // trace the rays one by one (the single-ray reference the bench and tests force).
+    bool packets = true;
 };
 
 struct BvhStats {
@@ -78,6 +81,19 @@ class Bvh : public Aggregate {
     // Any hit in (tMin, tMax] (shadow feeler for opaque scenes), never asking `skip` (a
     // flat primitive the feeler starts on: Aggregate::forEachBlocker).
     bool occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip = nullptr) const;
+
+    // Packets (issue 21): the rays of `lanes` (bit j: rays[j], j < kMaxPacket) that share
+    // the walk's direction signs, have no zero direction component and fit the float walk
+    // walk together, packetWidth() at a time (8 on the AVX2 8-wide path, else 4); the
+    // others go one by one. Every answer is the single-ray query's, bit for bit (the same
+    // float tests per ray, the same exact primitive code).
+    unsigned intersectPacket(const Ray* rays, const double* tMin, const double* tMax, Hit* hits,
+                             unsigned lanes) const override;
+    // Bit j: occluded(rays[j], tMin[j], tMax[j], skip ? skip[j] : nullptr).
+    unsigned occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
+                            const Primitive* const* skip, unsigned lanes) const;
+    // Rays per shared walk: 8 or 4 (wide trees with packets), 1 (binary tree, or packets off).
+    int packetWidth() const;
 
     const BvhStats& stats() const { return stats_; }
     const BvhOptions& options() const { return options_; }
@@ -128,6 +144,10 @@ class Bvh : public Aggregate {
                            const std::function<bool(const Hit&)>&);
         void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
                                const std::function<bool(const Primitive&)>&, const Primitive*);
+        unsigned (*intersectPacket)(const Bvh&, const Ray*, const double*, const double*, Hit*,
+                                    unsigned);
+        unsigned (*occludedPacket)(const Bvh&, const Ray*, const double*, const double*,
+                                   const Primitive* const*, unsigned);
     };
     template <class Lanes> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only

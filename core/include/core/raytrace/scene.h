@@ -14,6 +14,9 @@ namespace wb::rt {
 
 class Scene;
 
+// The most rays Aggregate::intersectPacket takes at once.
+constexpr int kMaxPacket = 8;
+
 // A set of primitives answering ray queries. The default loops over all of them.
 class Aggregate {
   public:
@@ -37,6 +40,18 @@ class Aggregate {
         forEachHit(ray, tMin, tMax, [&](const Hit& h) {
             return h.primitive == skip || visit(*h.primitive);
         });
+    }
+    // Nearest hits of up to kMaxPacket rays at once (issue 21: coherent rays, e.g. a row
+    // of eye rays, share one walk in a Bvh): for each bit j of `lanes`, hits[j] and bit j
+    // of the result as intersect(rays[j], tMin[j], tMax[j], hits[j]) gives them. The
+    // default asks intersect ray by ray.
+    virtual unsigned intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                     Hit* hits, unsigned lanes) const {
+        unsigned found = 0;
+        for (int j = 0; j < kMaxPacket; ++j)
+            if ((lanes >> j) & 1)
+                found |= unsigned(intersect(rays[j], tMin[j], tMax[j], hits[j])) << j;
+        return found;
     }
 };
 
