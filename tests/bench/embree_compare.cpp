@@ -136,10 +136,14 @@ struct EmbreeScene {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     Cones cones;
-    double buildS = 0;
-    explicit EmbreeScene(const Scene& s) {
+    double buildS = 0;    // wall time
+    double buildCpuS = 0; // CPU time of this thread (the whole build with threads=1)
+    // The build is timed from the new scene on (the device, created first, is not part of
+    // it). `config`: rtcNewDevice's, e.g. "threads=1".
+    explicit EmbreeScene(const Scene& s, const char* config = "threads=1") {
+        device = rtcNewDevice(config);
         const auto t0 = Clock::now();
-        device = rtcNewDevice("threads=1");
+        const double c0 = threadCpu();
         scene = rtcNewScene(device);
         std::vector<const Sphere*> spheres;
         std::vector<const Triangle*> tris;
@@ -199,6 +203,7 @@ struct EmbreeScene {
         }
         rtcCommitScene(scene);
         buildS = std::chrono::duration<double>(Clock::now() - t0).count();
+        buildCpuS = threadCpu() - c0;
     }
     ~EmbreeScene() {
         rtcReleaseScene(scene);
@@ -220,6 +225,8 @@ const std::vector<PathSpec>& pathSpecs() {
             v.push_back({"AVX2 4-wide", 4, BvhSimd::Avx2});
             v.push_back({"AVX2 8-wide", 8, BvhSimd::Avx2});
         }
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
+            v.push_back({"AVX-512 8-wide", 8, BvhSimd::Avx512});
         return v;
     }();
     return specs;
@@ -244,9 +251,11 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "user geometry calling our exact double intersection; Embree traverses in float. Ours: "
           "the wide float BVH with exact double primitive tests (Bvh::intersect / "
           "Bvh::occluded); 'binary' is the binary double-box tree of before (BvhOptions::width 2) "
-          "on the same rays. CPU time of the one thread; median of "
+          "on the same rays. Builds: ours (BvhOptions::buildThreads 1 and 2) and Embree's "
+          "(device threads=1 and 2, the device made before the clock starts) alternated, median of "
+       << runs << " each. CPU time of the one thread; median of "
        << runs << " passes, ours and Embree's alternated.\n\n"
-       << "| scene | BVH build ms ours / Embree | eye M rays/s ours | binary | Embree | "
+       << "| scene | BVH build ms ours / Embree: 1 thread (CPU) · 2 threads (wall) | eye M rays/s ours | binary | Embree | "
           "ours/Embree | "
           "shadow M "
           "rays/s ours | binary | Embree | ours/Embree | eye hits ours / Embree | occluded ours / "
@@ -287,6 +296,29 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
         binOpt.width = 2;
         Bvh bin(sf.scene->primitives, binOpt);
         EmbreeScene es(*sf.scene);
+        // Builds: ours and Embree's alternated, medians of `runs`; one thread (CPU time of
+        // this thread: BvhOptions::buildThreads 1, Embree threads=1) and two (wall time:
+        // buildThreads 2, Embree threads=2).
+        double ourB1 = 0, emB1 = 0, ourB2 = 0, emB2 = 0;
+        {
+            std::vector<double> o1, e1, o2, e2;
+            for (int k = 0; k < runs; ++k) {
+                BvhOptions b1;
+                b1.buildThreads = 1;
+                const double c0 = threadCpu();
+                { Bvh t(sf.scene->primitives, b1); }
+                o1.push_back(threadCpu() - c0);
+                { EmbreeScene e(*sf.scene, "threads=1"); e1.push_back(e.buildCpuS); }
+                BvhOptions b2;
+                b2.buildThreads = 2;
+                { Bvh t(sf.scene->primitives, b2); o2.push_back(t.stats().buildSeconds); }
+                { EmbreeScene e(*sf.scene, "threads=2"); e2.push_back(e.buildS); }
+            }
+            ourB1 = median(o1);
+            emB1 = median(e1);
+            ourB2 = median(o2);
+            emB2 = median(e2);
+        }
         const LookAtCamera cam = sf.camera();
         std::vector<Ray> eye;
         for (int y = 0; y <= size; ++y)
@@ -534,9 +566,9 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
         char buf[512];
         std::snprintf(
             buf, sizeof buf,
-            "| %s | %.2f / %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %lld / "
-            "%lld | %lld / %lld |\n",
-            it.name.c_str(), bvh.stats().buildSeconds * 1e3, es.buildS * 1e3, ne / ourEye / 1e6,
+            "| %s | %.2f / %.2f · %.2f / %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | "
+            "%lld / %lld | %lld / %lld |\n",
+            it.name.c_str(), ourB1 * 1e3, emB1 * 1e3, ourB2 * 1e3, emB2 * 1e3, ne / ourEye / 1e6,
             ne / binEye / 1e6, ne / emEye / 1e6, emEye / ourEye, ns / ourShadow / 1e6,
             ns / binShadow / 1e6, ns / emShadow / 1e6, emShadow / ourShadow, ourHits, emHits,
             ourOcc, emOcc);

@@ -95,6 +95,14 @@ struct WidePaths {
             REQUIRE(trees.back()->stats().width == o.width);
             REQUIRE(trees.back()->stats().avx2 == (k > 0));
         }
+        // Issue 21: the AVX-512 (F + VL) 8-wide walk, where the CPU has it.
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+            BvhOptions o = base;
+            o.width = 8;
+            o.simd = BvhSimd::Avx512;
+            trees.push_back(std::make_unique<Bvh>(prims, o));
+            REQUIRE(trees.back()->stats().avx512);
+        }
     }
 };
 
@@ -227,7 +235,7 @@ int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt1993
 // The same on the boxes of the 4-wide and of the 8-wide tree (the AVX2 path's).
 int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
     int hits = adversarialRaysOf(r, r.paths.trees.front()->wideNodes(), g, count, scale);
-    if (r.paths.trees.size() == 3)
+    if (r.paths.trees.size() >= 3)
         hits += adversarialRaysOf(r, r.paths.trees.back()->wideNodes8(), g, count, scale);
     return hits;
 }

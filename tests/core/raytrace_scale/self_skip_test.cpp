@@ -70,6 +70,11 @@ std::vector<std::unique_ptr<Aggregate>> aggregates(const Scene& sc) {
         o.simd = k == 0 ? BvhSimd::Sse2 : BvhSimd::Avx2;
         v.push_back(std::make_unique<Bvh>(sc.primitives, o));
     }
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+        BvhOptions o;
+        o.simd = BvhSimd::Avx512;
+        v.push_back(std::make_unique<Bvh>(sc.primitives, o));
+    }
     return v;
 }
 

@@ -29,6 +29,9 @@ enum class BvhSimd {
     Auto, // AVX2 where the CPU has it (checked at run time), else SSE2
     Sse2, // the portable x86-64 baseline
     Avx2, // AVX2 (falls back to SSE2 on a CPU without it; stats().avx2 says which ran)
+    // AVX-512 F + VL: 8-wide nodes, compares into mask registers (issue 21); falls back to
+    // AVX2, then SSE2 (stats().avx512 says whether it ran). Asked for only: not the default.
+    Avx512,
 };
 
 struct BvhOptions {
@@ -38,7 +41,7 @@ struct BvhOptions {
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
     // 0: automatic (the default: 8 with AVX2, 4 otherwise — the faster one measured,
-    // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4 or avx8
+    // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4, avx8 or avx512
     // overrides it when width and simd are both automatic; any other value is ignored with
     // a message on stderr); 4 or 8: wide float nodes
     // (8 needs AVX2, else 4); 2: binary double nodes (the reference the tests use).
@@ -61,7 +64,8 @@ struct BvhStats {
     int wideNodes = 0;            // nodes of the wide tree (width 4 or 8), else 0
     double collapseSeconds = 0.0; // of buildSeconds: collapsing into the wide tree
     int width = 2;                // the tree traversed: 2 (binary), 4 or 8
-    bool avx2 = false;            // the wide traversal runs the AVX2 code (else SSE2)
+    bool avx2 = false;            // the wide traversal runs AVX2 (or AVX-512) code, else SSE2
+    bool avx512 = false;          // ... the AVX-512 code (BvhSimd::Avx512)
 };
 
 class Bvh : public Aggregate {
@@ -152,6 +156,7 @@ class Bvh : public Aggregate {
     template <class Lanes> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
     static const WidePath* avx2Path(int width); // bvh_wide_avx2.cpp: width 4 or 8
+    static const WidePath* avx512Path();        // bvh_wide_avx512.cpp: width 8
     void collapseWide(const void* buildNodes, std::size_t count);
     template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
