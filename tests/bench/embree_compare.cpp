@@ -282,7 +282,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
         std::fprintf(stderr, "embree: %s\n", it.name.c_str());
         SceneFile sf = it.make();
         Bvh bvh(sf.scene->primitives); // the default path
-        defaultPath = std::string(bvh.stats().avx2 ? "AVX2 " : "SSE2 ") +
+        defaultPath = std::string(bvh.stats().avx512 ? "AVX-512 " : bvh.stats().avx2 ? "AVX2 " : "SSE2 ") +
                       std::to_string(bvh.stats().width) + "-wide";
         // Every SIMD path this CPU has, forced: SSE2 4-wide, AVX2 4- and 8-wide.
         std::vector<std::unique_ptr<Bvh>> paths;

@@ -1,8 +1,8 @@
 // The wide BVH's walk compiled for AVX-512 (F + VL; bvh_wide_impl.h), 8-wide nodes in
 // 256-bit registers with the compares into mask registers (issue 21: a "masked 8-lane"
 // path), entered only where the CPU has AVX-512F and VL (bvh_wide.cpp checks at run time)
-// and only when asked for (BvhOptions::simd Avx512, WB_BVH_PATH=avx512): it is kept as
-// the default only if it measures faster than AVX2 (docs/raytrace-scale.md). Everything this file
+// (the automatic choice there: it measured faster than AVX2 8-wide, docs/raytrace-scale.md;
+// BvhOptions::simd Avx2 or WB_BVH_PATH=avx8 force the AVX2 walk). Everything this file
 // includes is included first, before AVX2 is switched on for the rest of the file, so
 // the library code it inlines (std::, glm) keeps its plain x86-64 definitions and only
 // the walk itself is compiled for AVX-512. Not FMA: no product is fused with a sum, so

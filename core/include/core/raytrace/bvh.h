@@ -14,7 +14,10 @@
 // candidate is decided by the primitive's own exact double code, so hits are bit for
 // bit those of the plain loop (on equal t the primitive later in the scene wins, as in
 // the plain loop). Unbounded primitives (infinite planes, uncut quadrics) are kept
-// outside the tree and tested for every ray.
+// outside the tree and tested for every ray. Issue 21: shadow queries never ask the flat
+// primitive the feeler leaves (`skip`); coherent rays (a camera's row of pixels, a hemicube
+// face's) walk the tree as packets of 8 (AVX2/AVX-512) or 4 (SSE2) with the same answers;
+// an AVX-512 (F + VL) 8-wide walk is chosen where the CPU has it.
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
@@ -26,11 +29,12 @@ namespace wb::rt {
 
 // Which SIMD instructions the wide traversal uses (BvhOptions::simd).
 enum class BvhSimd {
-    Auto, // AVX2 where the CPU has it (checked at run time), else SSE2
+    Auto, // AVX-512 (F + VL), else AVX2, where the CPU has it (checked at run time), else SSE2
     Sse2, // the portable x86-64 baseline
     Avx2, // AVX2 (falls back to SSE2 on a CPU without it; stats().avx2 says which ran)
     // AVX-512 F + VL: 8-wide nodes, compares into mask registers (issue 21); falls back to
-    // AVX2, then SSE2 (stats().avx512 says whether it ran). Asked for only: not the default.
+    // AVX2, then SSE2 (stats().avx512 says whether it ran). Auto picks it where the CPU has
+    // it (measured faster than AVX2 8-wide, docs/raytrace-scale.md).
     Avx512,
 };
 
