@@ -217,7 +217,7 @@ int main(int argc, char** argv) {
        << "`bin/radiosity_gl_bench --write docs/bench/radiosity.md` (tests/bench/radiosity_gl_bench.cpp). "
        << "The hemicube of labs/08-radiosity/gl_hemicube.cpp drawn by OSMesa (Mesa llvmpipe, "
        << std::thread::hardware_concurrency() << " cores, shared and noisy machine) into core's "
-       << "item buffer, against core's CPU hemicube (one BVH ray per pixel, TBB on all cores) in "
+       << "item buffer, against core's CPU hemicube (one BVH ray per pixel, 8 neighbouring pixels of a row traced as one packet (issue 21), TBB on all cores; 'one ray per pixel': the same without packets, the rows required equal) in "
        << "the same run. Error: |F − F_exact| with F_exact the point-to-polygon form factor from "
        << "the patch centre (what a hemicube estimates), over every pair of patches on two unit "
        << "plates meshed 4×4: parallel 1 apart, and perpendicular with a common edge (near "
