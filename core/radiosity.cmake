@@ -7,6 +7,7 @@ target_sources(core PRIVATE
   src/radiosity/hemicube.cpp
   src/radiosity/mesh.cpp
   src/radiosity/patch_bvh.cpp
+  src/radiosity/point_rays.cpp
   src/radiosity/ray_form_factors.cpp
   src/radiosity/scene.cpp
   src/radiosity/scenes.cpp

@@ -20,22 +20,47 @@ namespace wb {
 
 enum class FfMethod { Rays = 0, CpuHemicube = 1, GlHemicube = 2 };
 
-// Everything the keys and the panel change; plain data so tests can read it.
+// Everything the keys and the panel change; plain data so tests can read it. The defaults
+// are the fast configuration (issue 19 item 7; figures in docs/bench/radiosity.md and
+// /work/wt/brief/lab08-defaults.md): ~3.7k patches in the Cornell box, progressive refinement
+// shooting from groups of ~11×11 patches, rows by the method of keys 1 2 3.
 struct RadiosityState {
-    std::string sceneName = "cornell";  // rad::sceneNames(): cornell, classroom, floorlamp
-    FfMethod method = FfMethod::GlHemicube; // keys 1 2 3 (GL: ~4 ms a 128² row here, CPU ~15)
-    int solver = 0;          // 0 progressive, 1 Jacobi, 2 Gauss-Seidel (panel)
-    bool smooth = false;     // s: vertex values + Gouraud (13.43) instead of flat (13.42)
-    bool outlines = false;   // p: patch outlines
-    bool showItems = false;  // panel: the scene in item colours, as the hemicube draws it
-    bool ambient = true;     // progressive: display the ambient term for the unshot light
-    double patchSize = 0.05; // metres, the mesher's longest patch edge ([ ] scale by √2)
-    int hemicubeRes = 128;   // pixels along a full hemicube face (CPU and GL)
-    int raySamples = 16;     // k rays per patch pair (method 1)
-    double tolerance = 1e-3; // r stops when the residual (unshot power / emitted) is below
-    float exposure = 1.0f;   // display: multiplies the scene's automatic exposure
-    int threads = 0;         // form-factor threads, 0 = all cores
+    std::string sceneName = "cornell"; // rad::sceneNames(): cornell, classroom, floorlamp
+    // Keys 1 2 3. Rays by default: with shooting groups the rays are gathered at the receivers
+    // (exact near field, point_rays.h), the fastest method here (0.5 s to a usable picture in
+    // a window) and the closest to the answer; the hemicubes shoot from the group's centre.
+    FfMethod method = FfMethod::Rays;
+    int solver = 0;           // 0 progressive, 1 Jacobi, 2 Gauss-Seidel (panel)
+    bool smooth = false;      // s: vertex values + Gouraud (13.43) instead of flat (13.42)
+    bool outlines = false;    // p: patch outlines
+    bool showItems = false;   // panel: the scene in item colours, as the hemicube draws it
+    bool ambient = true;      // progressive: display the ambient term for the unshot light
+    double patchSize = 0.0;   // metres, the mesher's longest patch edge ([ ] scale by √2);
+                              // 0 before a scene is loaded: sized for ~kDefaultPatches
+    double shooterEdge = 0.0; // metres, shooting groups (0: every patch shoots itself)
+    int hemicubeRes = 0;      // pixels along a full hemicube face; 0: the method's default
+                              // (GL 512, CPU 128: see hemicubeFor())
+    int raySamples = 4;       // k rays per patch pair / per group-to-patch pair (method 1): the
+                              // group rows' F is exact (point to polygon), k only samples V
+    double tolerance = 1e-3;  // a solve stops when the residual (unshot power / emitted) is below
+    bool autoExposure =
+        true;              // display: exposure from the picture (90th percentile), else the slider
+    float exposure = 1.0f; // display: linear B × exposure, then sRGB encoding
+    bool whiteBalance = true; // display: divide by the light's colour (luminance kept)
+    int threads = 0;          // form-factor threads, 0 = all cores (capped at the hardware's)
+    int maxSteps = -1; // headless: the automatic solve stops after this many steps (-1: tolerance)
+    double budget = 60.0; // headless: seconds of work, then the picture of what there is
 };
+
+// Patch count the default patch size is chosen for (defaultPatchSize meshes to find it): the
+// bench's ~4k goal; the Cornell box gets 3,692 at 0.0286 m with today's mesher.
+constexpr int kDefaultPatches = 3700;
+// Patch count no way of setting the patch size (flag, key, slider, adaptive) may exceed.
+constexpr int kMaxPatches = 40000;
+// Edge of a default shooting group in default patch edges (radiosity_lab.cpp says why 4.25).
+constexpr double kShooterPatches = 4.25;
+// Hemicube resolution a method uses when none is set (--hemicube or the slider).
+int hemicubeFor(const RadiosityState& s);
 
 std::unique_ptr<Lab> makeRadiosityLab();
 
@@ -58,5 +83,11 @@ void radiositySelect(Lab& lab, int patch);
 std::vector<int> radiosityPatchSurfaces(const Lab& lab);
 std::vector<std::string> radiositySurfaceNames(const Lab& lab);
 std::vector<glm::dvec3> radiosityPatchCentres(const Lab& lab);
+// The headless summary line of the current state (what the next draw prints).
+std::string radiositySummary(const Lab& lab);
+// True when the last headless run stopped at the budget (--budget) before the tolerance.
+bool radiosityBudgetHit(const Lab& lab);
+// Display colour (sRGB, 0..1) of patch `i` as drawn flat.
+glm::vec3 radiosityPatchColour(const Lab& lab, int i);
 
 } // namespace wb

@@ -22,12 +22,15 @@
 
 #include "common/headless_context.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -145,6 +148,27 @@ ErrorStats closedFormError(wb::GlHemicube& gl, const rad::PatchMesh& mesh,
     return e;
 }
 
+// castItemBuffer as it was before issue 21 (one BVH ray per pixel, rows on all cores): the
+// CPU hemicube's single-ray path, timed beside the packet one in the same run.
+void castOneByOne(const rad::PatchBvh& bvh, const rad::HemicubeFrame& frame, int res,
+                  rad::ItemBuffer& out) {
+    if (out.resolution != res) out.resize(res);
+    const int half = res / 2;
+    tbb::parallel_for(0, res + 4 * half, [&](int r) {
+        rad::HemicubeFace f = rad::HemicubeFace::Top;
+        int row = r;
+        if (r >= res) {
+            f = static_cast<rad::HemicubeFace>(1 + (r - res) / half);
+            row = (r - res) % half;
+        }
+        auto& face = out.faces[static_cast<std::size_t>(f)];
+        for (int col = 0; col < res; ++col)
+            face[std::size_t(row) * std::size_t(res) + std::size_t(col)] = bvh.nearestPatch(
+                frame.origin, glm::normalize(rad::pixelDirection(frame, res, f, col, row)), 0.0,
+                std::numeric_limits<double>::infinity());
+    });
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0.0 : v[v.size() / 2];
@@ -193,7 +217,7 @@ int main(int argc, char** argv) {
        << "`bin/radiosity_gl_bench --write docs/bench/radiosity.md` (tests/bench/radiosity_gl_bench.cpp). "
        << "The hemicube of labs/08-radiosity/gl_hemicube.cpp drawn by OSMesa (Mesa llvmpipe, "
        << std::thread::hardware_concurrency() << " cores, shared and noisy machine) into core's "
-       << "item buffer, against core's CPU hemicube (one BVH ray per pixel, TBB on all cores) in "
+       << "item buffer, against core's CPU hemicube (one BVH ray per pixel, 8 neighbouring pixels of a row traced as one packet (issue 21), TBB on all cores; 'one ray per pixel': the same without packets, the rows required equal) in "
        << "the same run. Error: |F − F_exact| with F_exact the point-to-polygon form factor from "
        << "the patch centre (what a hemicube estimates), over every pair of patches on two unit "
        << "plates meshed 4×4: parallel 1 apart, and perpendicular with a common edge (near "
@@ -202,10 +226,10 @@ int main(int argc, char** argv) {
        << " patches. |GL − CPU|: largest difference of a row entry between the two hemicubes on "
        << "those rows (edge pixels decided differently, see tests/render/radiosity_gl_hemicube_test.cpp).\n\n"
        << "| hemicube | GL ms | CPU ms | GL/CPU | parallel max err | mean | perpendicular max err "
-          "| mean | max \\|GL − CPU\\| |\n"
-       << "|---|---|---|---|---|---|---|---|---|\n";
-    std::printf("%6s %9s %9s %7s %12s %12s %12s %12s %12s\n", "res", "GL ms", "CPU ms", "GL/CPU",
-                "par max", "par mean", "perp max", "perp mean", "|GL-CPU|");
+          "| mean | max \\|GL − CPU\\| | CPU ms, one ray per pixel | CPU packets / one by one |\n"
+       << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::printf("%6s %9s %9s %7s %12s %12s %12s %12s %12s %9s\n", "res", "GL ms", "CPU ms",
+                "GL/CPU", "par max", "par mean", "perp max", "perp mean", "|GL-CPU|", "CPU 1by1");
     for (int res : resolutions) {
         const rad::DeltaFormFactors table = rad::deltaFormFactors(res);
         const ErrorStats par = closedFormError(gl, parallel, table);
@@ -213,7 +237,9 @@ int main(int argc, char** argv) {
         upload(gl, room);
         rad::ItemBuffer items, cpuItems;
         std::vector<float> rowGl, rowCpu;
-        std::vector<double> glTimes, cpuTimes;
+        std::vector<double> glTimes, cpuTimes, singleTimes;
+        rad::ItemBuffer singleItems;
+        std::vector<float> rowSingle;
         double maxDiff = 0;
         const int n = int(room.patches.size());
         glRow(gl, room, table, 0, roomNear, items, rowGl); // warm-up: target allocation
@@ -226,18 +252,26 @@ int main(int argc, char** argv) {
             rad::castItemBuffer(roomBvh, rad::hemicubeFrame(room, i), res, cpuItems, true);
             rad::accumulate(cpuItems, table, n, i, rowCpu);
             cpuTimes.push_back(secondsSince(t0) * 1e3);
+            t0 = std::chrono::steady_clock::now();
+            castOneByOne(roomBvh, rad::hemicubeFrame(room, i), res, singleItems);
+            rad::accumulate(singleItems, table, n, i, rowSingle);
+            singleTimes.push_back(secondsSince(t0) * 1e3);
+            if (rowSingle != rowCpu) {
+                std::fprintf(stderr, "packets and one ray per pixel differ at patch %d\n", i);
+                return 1;
+            }
             for (int j = 0; j < n; ++j)
                 maxDiff = std::max(maxDiff, std::abs(double(rowGl[size_t(j)]) - double(rowCpu[size_t(j)])));
         }
-        const double g = median(glTimes), c = median(cpuTimes);
-        std::printf("%6d %9.2f %9.2f %7.2f %12.3e %12.3e %12.3e %12.3e %12.3e\n", res, g, c, g / c,
-                    par.maxErr, par.sumErr / double(par.pairs), perp.maxErr,
-                    perp.sumErr / double(perp.pairs), maxDiff);
+        const double g = median(glTimes), c = median(cpuTimes), c1 = median(singleTimes);
+        std::printf("%6d %9.2f %9.2f %7.2f %12.3e %12.3e %12.3e %12.3e %12.3e %9.2f\n", res, g, c,
+                    g / c, par.maxErr, par.sumErr / double(par.pairs), perp.maxErr,
+                    perp.sumErr / double(perp.pairs), maxDiff, c1);
         std::fflush(stdout);
         std::snprintf(line, sizeof line,
-                      "| %d² | %.2f | %.2f | %.2f | %.2e | %.2e | %.2e | %.2e | %.1e |\n", res, g, c,
-                      g / c, par.maxErr, par.sumErr / double(par.pairs), perp.maxErr,
-                      perp.sumErr / double(perp.pairs), maxDiff);
+                      "| %d² | %.2f | %.2f | %.2f | %.2e | %.2e | %.2e | %.2e | %.1e | %.2f | %.2f |\n",
+                      res, g, c, g / c, par.maxErr, par.sumErr / double(par.pairs), perp.maxErr,
+                      perp.sumErr / double(perp.pairs), maxDiff, c1, c / c1);
         md << line;
     }
     double load[3] = {0, 0, 0};

@@ -11,6 +11,7 @@ wb_test(radiosity_test
     radiosity/form_factors_test.cpp
     radiosity/solver_test.cpp
     radiosity/bad_input_test.cpp
+    radiosity/group_rays_test.cpp
   LIBS core Eigen3::Eigen)
 if(WORKBENCH_SANITIZE)
   target_compile_definitions(radiosity_test PRIVATE WB_SANITIZED=1)

@@ -26,6 +26,8 @@ wb_test(raytrace_scale_test
     raytrace_scale/parallel_test.cpp
     raytrace_scale/scene_file_test.cpp
     raytrace_scale/phong_direct_test.cpp
+    raytrace_scale/self_skip_test.cpp
+    raytrace_scale/packet_test.cpp
   LIBS core)
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-out)
 target_compile_definitions(raytrace_scale_test PRIVATE WB_TEST_TMP="${CMAKE_BINARY_DIR}/test-out")

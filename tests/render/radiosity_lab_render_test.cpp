@@ -27,6 +27,7 @@ std::unique_ptr<wb::Lab> cornellLab() {
     REQUIRE(lab->setOption("scene", "cornell", err));
     REQUIRE(lab->setOption("patch-size", "0.1", err));
     REQUIRE(lab->setOption("hemicube", "64", err));
+    REQUIRE(lab->setOption("method", "gl", err)); // these tests are about the GL hemicube
     return lab;
 }
 

@@ -60,6 +60,13 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         fr.u = sg.u;
         fr.v = glm::cross(sg.normal, sg.u);
         fr.origin = rt::offsetRayOrigin(sg.centre, sg.normal);
+        if (config_.groupRowProvider) {
+            out.assign(n, 0.0f);
+            config_.groupRowProvider(g, fr, out);
+            nanos_ += nanosSince(t0);
+            ++rows_;
+            return;
+        }
         ItemBuffer items;
         auto cast = [&] { castItemBuffer(*bvh_, fr, table_.resolution, items, config_.threads != 1); };
         if (config_.threads > 1) {

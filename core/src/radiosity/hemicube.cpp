@@ -6,6 +6,7 @@
 #include <glm/gtc/constants.hpp>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -127,7 +128,6 @@ void castItemBuffer(const PatchBvh& bvh, const HemicubeFrame& frame, int resolut
     if (out.resolution != resolution) out.resize(resolution);
     const int half = resolution / 2;
     const int rows = resolution + 4 * half; // top rows, then each side's rows
-    const double inf = std::numeric_limits<double>::infinity();
     auto doRow = [&](int r) {
         HemicubeFace f = HemicubeFace::Top;
         int row = r;
@@ -136,10 +136,18 @@ void castItemBuffer(const PatchBvh& bvh, const HemicubeFrame& frame, int resolut
             row = (r - resolution) % half;
         }
         auto& face = out.faces[static_cast<std::size_t>(f)];
-        for (int col = 0; col < resolution; ++col) {
-            const glm::dvec3 d = glm::normalize(pixelDirection(frame, resolution, f, col, row));
-            face[static_cast<std::size_t>(row) * static_cast<std::size_t>(resolution) +
-                 static_cast<std::size_t>(col)] = bvh.nearestPatch(frame.origin, d, 0.0, inf);
+        // Neighbouring pixels of the row as one packet (issue 21): one walk of the BVH
+        // for up to 8 coherent rays from the same origin, the same patch ids as one by one.
+        for (int col = 0; col < resolution; col += rt::kMaxPacket) {
+            const int n = std::min(rt::kMaxPacket, resolution - col);
+            glm::dvec3 d[rt::kMaxPacket];
+            int ids[rt::kMaxPacket];
+            for (int j = 0; j < n; ++j)
+                d[j] = glm::normalize(pixelDirection(frame, resolution, f, col + j, row));
+            bvh.nearestPatches(frame.origin, d, n, ids);
+            for (int j = 0; j < n; ++j)
+                face[static_cast<std::size_t>(row) * static_cast<std::size_t>(resolution) +
+                     static_cast<std::size_t>(col + j)] = ids[j];
         }
     };
     if (parallel)

@@ -3,6 +3,7 @@
 #include "core/raytrace/triangle.h"
 
 #include <cmath>
+#include <limits>
 
 namespace wb::rad {
 
@@ -37,6 +38,29 @@ int PatchBvh::nearestPatch(const glm::dvec3& origin, const glm::dvec3& dir, doub
     ray.direction = dir;
     rt::Hit hit;
     if (!bvh_->intersect(ray, tMin, tMax, hit)) return -1;
+    return patchOf(ray, hit);
+}
+
+void PatchBvh::nearestPatches(const glm::dvec3& origin, const glm::dvec3* dirs, int n,
+                              int* ids) const {
+    rt::Ray rays[rt::kMaxPacket];
+    rt::Hit hits[rt::kMaxPacket];
+    double tMin[rt::kMaxPacket], tMax[rt::kMaxPacket];
+    for (int j = 0; j < rt::kMaxPacket; ++j) {
+        tMin[j] = 0.0;
+        tMax[j] = std::numeric_limits<double>::infinity();
+    }
+    for (int j = 0; j < n; ++j) {
+        rays[j].origin = origin;
+        rays[j].direction = dirs[j];
+    }
+    const unsigned found = bvh_->intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
+    for (int j = 0; j < n; ++j)
+        ids[j] = (found >> j) & 1 ? patchOf(rays[j], hits[j]) : -1;
+}
+
+int PatchBvh::patchOf(const rt::Ray& ray, const rt::Hit& hit) const {
+    const glm::dvec3& dir = ray.direction;
     const int id = hit.material;
     if (glm::dot(mesh_.patches[static_cast<std::size_t>(id)].normal, dir) < 0.0) return id;
     // Back sides face the inside of a body or the outside of the room: they block, unseen.

@@ -1124,28 +1124,65 @@ void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
 }
 
 void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
-                         const std::function<bool(const Primitive&)>& visit) const {
+                         const std::function<bool(const Primitive&)>& visit,
+                         const Primitive* skip) const {
     if (options_.width != 2) {
-        forEachBlockerWide(ray, tMin, tMax, visit);
+        forEachBlockerWide(ray, tMin, tMax, visit, skip);
         return;
     }
     for (const Primitive* p : unbounded_)
-        if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+        if (p != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
-        return !(p.occluded(ray, tMin, tMax) && !visit(p));
+        return &p == skip || !(p.occluded(ray, tMin, tMax) && !visit(p));
     });
 }
 
-bool Bvh::occluded(const Ray& ray, double tMin, double tMax) const {
-    if (options_.width != 2) return occludedWide(ray, tMin, tMax);
+bool Bvh::occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip) const {
+    if (options_.width != 2) return occludedWide(ray, tMin, tMax, skip);
     for (const Primitive* p : unbounded_)
-        if (p->occluded(ray, tMin, tMax)) return true;
+        if (p != skip && p->occluded(ray, tMin, tMax)) return true;
     bool any = false;
     traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
-        any = p.occluded(ray, tMin, tMax);
+        any = &p != skip && p.occluded(ray, tMin, tMax);
         return !any;
     });
     return any;
+}
+
+int Bvh::packetWidth() const {
+    return options_.width != 2 && options_.packets && path_ ? path_->width : 1;
+}
+
+unsigned Bvh::intersectPacket(const Ray* rays, const double* tMin, const double* tMax, Hit* hits,
+                              unsigned lanes) const {
+    lanes &= (1u << kMaxPacket) - 1;
+    const int w = packetWidth();
+    if (w == 1) return Aggregate::intersectPacket(rays, tMin, tMax, hits, lanes);
+    unsigned found = 0;
+    for (int k = 0; k < kMaxPacket; k += w)
+        if (const unsigned part = (lanes >> k) & ((1u << w) - 1))
+            found |= path_->intersectPacket(*this, rays + k, tMin + k, tMax + k, hits + k, part) << k;
+    return found;
+}
+
+unsigned Bvh::occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
+                             const Primitive* const* skip, unsigned lanes) const {
+    lanes &= (1u << kMaxPacket) - 1;
+    const int w = packetWidth();
+    unsigned blocked = 0;
+    if (w == 1) {
+        for (int j = 0; j < kMaxPacket; ++j)
+            if ((lanes >> j) & 1)
+                blocked |= unsigned(occluded(rays[j], tMin[j], tMax[j], skip ? skip[j] : nullptr))
+                           << j;
+        return blocked;
+    }
+    for (int k = 0; k < kMaxPacket; k += w)
+        if (const unsigned part = (lanes >> k) & ((1u << w) - 1))
+            blocked |= path_->occludedPacket(*this, rays + k, tMin + k, tMax + k,
+                                             skip ? skip + k : nullptr, part)
+                       << k;
+    return blocked;
 }
 
 std::unique_ptr<Bvh> makeAggregate(const Scene& scene, std::size_t crossover, BvhOptions options) {

@@ -246,33 +246,15 @@ template <class L> struct Bvh::WideWalk {
         return true;
     }
 
-    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
-    // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
-    // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
-    template <bool kAnyHit, class Leaf>
-    static void walk(const Bvh& b, const Ray& ray, double tMin, double& tMax, Leaf&& leaf) {
-        using namespace bvh_detail;
-        if (b.stats_.primitives == 0) return;
-        if (b.rootLeafCount_ > 0) {
-            // A tree of one leaf (up to maxLeafSize primitives): the root box in double and
-            // the exact tests, without the float set-up, which costs more than it saves.
-            double t0 = tMin, t1 = tMax;
-            for (int a = 0; a < 3; ++a) {
-                const double inv = 1.0 / ray.direction[a];
-                const bool neg = std::signbit(inv);
-                const double near = ((neg ? b.rootHi_[a] : b.rootLo_[a]) - ray.origin[a]) * inv;
-                const double far =
-                    ((neg ? b.rootLo_[a] : b.rootHi_[a]) - ray.origin[a]) * inv * kFarScale;
-                t0 = near > t0 ? near : t0; // NaN (0·inf): no limit
-                t1 = far < t1 ? far : t1;
-            }
-            if (!(t0 <= t1)) return;
-            for (std::uint32_t i = 0; i < b.rootLeafCount_; ++i)
-                if (!leaf(i, nullptr)) return; // no ray data: the exact tests set up their own
-            return;
-        }
-        const std::vector<Node>& nodes = nodesOf(b);
-        RayData r;
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set). With
+    // `scalar` (the packet walk), the float lanes' values are also written there:
+    // on[3], of[3], inv[3], invFar[3], tMin, and the direction's sign bits.
+    struct Scalars {
+        float on[3], of[3], inv[3], invFar[3], tMin;
+        int signs;
+    };
+    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin,
+                                                       Scalars* scalar) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
@@ -304,7 +286,7 @@ template <class L> struct Bvh::WideWalk {
                 _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
             alignas(16) float inv[4], invFar[4], on[4], of[4];
             _mm_store_ps(inv, finv);
-            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(kInvFarScaleF)));
+            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
             _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
             _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
             for (int a = 0; a < 3; ++a) {
@@ -314,10 +296,58 @@ template <class L> struct Bvh::WideWalk {
                 r.invFar[a] = L::set1(invFar[a]);
             }
             const float ftMin = float(tMin);
-            r.tMin = L::set1(ftMin - std::abs(ftMin) * 0x1p-20f);
+            const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
+            r.tMin = L::set1(lowered);
+            if (scalar) {
+                for (int a = 0; a < 3; ++a) {
+                    scalar->on[a] = on[a];
+                    scalar->of[a] = of[a];
+                    scalar->inv[a] = inv[a];
+                    scalar->invFar[a] = invFar[a];
+                }
+                scalar->tMin = lowered;
+                scalar->signs = signs;
+            }
         } else {
             r.invd = 1.0 / d;
         }
+    }
+
+    // The walk's limit in float for a nearest hit so far at tMax (widened).
+    static float limitOf(double tMax) {
+        const double lim = tMax * bvh_detail::kFarScale;
+        return lim > 3e38 ? std::numeric_limits<float>::infinity() : float(lim) * (1 + 0x1p-20f);
+    }
+
+    // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
+    // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
+    // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
+    template <bool kAnyHit, class Leaf>
+    static void walk(const Bvh& b, const Ray& ray, double tMin, double& tMax, Leaf&& leaf) {
+        using namespace bvh_detail;
+        if (b.stats_.primitives == 0) return;
+        if (b.rootLeafCount_ > 0) {
+            // A tree of one leaf (up to maxLeafSize primitives): the root box in double and
+            // the exact tests, without the float set-up, which costs more than it saves.
+            double t0 = tMin, t1 = tMax;
+            for (int a = 0; a < 3; ++a) {
+                const double inv = 1.0 / ray.direction[a];
+                const bool neg = std::signbit(inv);
+                const double near = ((neg ? b.rootHi_[a] : b.rootLo_[a]) - ray.origin[a]) * inv;
+                const double far =
+                    ((neg ? b.rootLo_[a] : b.rootHi_[a]) - ray.origin[a]) * inv * kFarScale;
+                t0 = near > t0 ? near : t0; // NaN (0·inf): no limit
+                t1 = far < t1 ? far : t1;
+            }
+            if (!(t0 <= t1)) return;
+            for (std::uint32_t i = 0; i < b.rootLeafCount_; ++i)
+                if (!leaf(i, nullptr)) return; // no ray data: the exact tests set up their own
+            return;
+        }
+        const std::vector<Node>& nodes = nodesOf(b);
+        RayData r;
+        initRay(r, ray, tMin, nullptr);
+        const glm::dvec3 o = ray.origin;
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
             const double lim = tMax * kFarScale;
@@ -450,6 +480,370 @@ template <class L> struct Bvh::WideWalk {
         }
     }
 
+    // ---- Packets (issue 21): up to W coherent rays (W = the node width: 8 with AVX2
+    // 8-wide, 4 otherwise) share one walk. The rays of a packet have the same direction
+    // signs, no zero direction component and the float walk (the others are traced one by
+    // one). Per node: one interval test of its W children for the whole packet (the
+    // rays' origins, 1/d and limits as intervals: a child no ray can enter is dropped in
+    // one step, as a single ray's test), then, for each child left, the rays' own tests in
+    // the lanes (ray j in lane j: the same float operations on the same values as ray j's
+    // single walk, so the same verdict). Children are pushed with the mask of the rays
+    // that enter them; rays finish (any hit) or shrink their limit (nearest hit) lane by
+    // lane. Leaves run each entering ray's own leaf tests and exact code (visitLeaf), so
+    // every hit is the one its single walk finds.
+    struct Packet {
+        RayData r[W];
+        alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
+        // The intervals over the packet's rays (lanes not in the packet excluded).
+        float onLo[3], onHi[3], ofLo[3], ofHi[3], invLo[3], invHi[3], invFarLo[3], invFarHi[3];
+        float tMinLo;
+        const std::size_t* off;
+    };
+
+    // Sets up ray j of the packet; false: it cannot join (double walk, zero direction
+    // component, or other signs than `signs`, which the first ray sets).
+    static bool joinPacket(Packet& p, int j, const Ray& ray, double tMin, int& signs) {
+        Scalars s;
+        initRay(p.r[j], ray, tMin, &s);
+        if (!p.r[j].useFloat) return false;
+        if (ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0) return false;
+        if (signs >= 0 && s.signs != signs) return false;
+        signs = s.signs;
+        for (int a = 0; a < 3; ++a) {
+            p.on[a][j] = s.on[a];
+            p.of[a][j] = s.of[a];
+            p.inv[a][j] = s.inv[a];
+            p.invFar[a][j] = s.invFar[a];
+        }
+        p.tMin[j] = s.tMin;
+        p.off = p.r[j].off;
+        return true;
+    }
+
+    // The intervals over the rays of `lanes`; lanes outside it get the first ray's
+    // values and the limit −inf (no box is entered by them).
+    static void closePacket(Packet& p, unsigned lanes) {
+        const int first = __builtin_ctz(lanes);
+        for (int a = 0; a < 3; ++a) {
+            p.onLo[a] = p.onHi[a] = p.on[a][first];
+            p.ofLo[a] = p.ofHi[a] = p.of[a][first];
+            p.invLo[a] = p.invHi[a] = p.inv[a][first];
+            p.invFarLo[a] = p.invFarHi[a] = p.invFar[a][first];
+        }
+        p.tMinLo = p.tMin[first];
+        for (int j = 0; j < W; ++j) {
+            if (!((lanes >> j) & 1)) {
+                for (int a = 0; a < 3; ++a) {
+                    p.on[a][j] = p.on[a][first];
+                    p.of[a][j] = p.of[a][first];
+                    p.inv[a][j] = p.inv[a][first];
+                    p.invFar[a][j] = p.invFar[a][first];
+                }
+                p.tMin[j] = p.tMin[first];
+                p.lim[j] = -std::numeric_limits<float>::infinity();
+                continue;
+            }
+            for (int a = 0; a < 3; ++a) {
+                p.onLo[a] = std::min(p.onLo[a], p.on[a][j]);
+                p.onHi[a] = std::max(p.onHi[a], p.on[a][j]);
+                p.ofLo[a] = std::min(p.ofLo[a], p.of[a][j]);
+                p.ofHi[a] = std::max(p.ofHi[a], p.of[a][j]);
+                p.invLo[a] = std::min(p.invLo[a], p.inv[a][j]);
+                p.invHi[a] = std::max(p.invHi[a], p.inv[a][j]);
+                p.invFarLo[a] = std::min(p.invFarLo[a], p.invFar[a][j]);
+                p.invFarHi[a] = std::max(p.invFarHi[a], p.invFar[a][j]);
+            }
+            p.tMinLo = std::min(p.tMinLo, p.tMin[j]);
+        }
+    }
+
+    // The smallest and largest of four products x·y, x in [x0, x1], y in [y0, y1], in
+    // lanes: rounding is monotonic, so every lane's rounded product of values inside the
+    // intervals lies between them.
+    static V minProduct(V x0, V x1, V y0, V y1) {
+        return L::min(L::min(L::mul(x0, y0), L::mul(x0, y1)), L::min(L::mul(x1, y0), L::mul(x1, y1)));
+    }
+    static V maxProduct(V x0, V x1, V y0, V y1) {
+        return L::max(L::max(L::mul(x0, y0), L::mul(x0, y1)), L::max(L::mul(x1, y0), L::mul(x1, y1)));
+    }
+
+    // Calls leaf(j, i, ray data) for ray j of `lanes` and the primitives i of every leaf
+    // its segment may meet; tMax[j] as in walk() (nearest hit: the leaf may lower it and
+    // the walk re-reads it after each leaf). Any hit: leaf returns false when ray j is
+    // done (found a blocker); the walk ends when every ray is.
+    template <bool kAnyHit, class Leaf>
+    static void walkPacket(const Bvh& b, Packet& p, unsigned lanes, const double* tMax,
+                           Leaf&& leaf) {
+        const std::vector<Node>& nodes = nodesOf(b);
+        for (int j = 0; j < W; ++j)
+            if ((lanes >> j) & 1) p.lim[j] = limitOf(tMax[j]);
+        closePacket(p, lanes);
+        V on[3], of[3], inv[3], invFar[3];
+        V iaOnLo[3], iaOnHi[3], iaOfLo[3], iaOfHi[3], iaInvLo[3], iaInvHi[3], iaFarLo[3],
+            iaFarHi[3];
+        for (int a = 0; a < 3; ++a) {
+            on[a] = L::load(p.on[a]);
+            of[a] = L::load(p.of[a]);
+            inv[a] = L::load(p.inv[a]);
+            invFar[a] = L::load(p.invFar[a]);
+            iaOnLo[a] = L::set1(p.onLo[a]);
+            iaOnHi[a] = L::set1(p.onHi[a]);
+            iaOfLo[a] = L::set1(p.ofLo[a]);
+            iaOfHi[a] = L::set1(p.ofHi[a]);
+            iaInvLo[a] = L::set1(p.invLo[a]);
+            iaInvHi[a] = L::set1(p.invHi[a]);
+            iaFarLo[a] = L::set1(p.invFarLo[a]);
+            iaFarHi[a] = L::set1(p.invFarHi[a]);
+        }
+        const V tMinV = L::load(p.tMin), iaTMin = L::set1(p.tMinLo);
+        V limV = L::load(p.lim);
+        unsigned active = lanes;
+        auto maxLim = [&](unsigned m) {
+            float x = -std::numeric_limits<float>::infinity();
+            for (; m; m &= m - 1)
+                x = std::max(x, p.lim[__builtin_ctz(m)]);
+            return x;
+        };
+        float limHi = maxLim(active);
+        // Visits a leaf for the rays of m; false when no ray is left (any hit).
+        auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
+            for (m &= active; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                const bool more = visitLeaf(b, p.r[j], first, count, p.lim[j],
+                                            [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
+                if constexpr (kAnyHit) {
+                    if (!more) {
+                        active &= ~(1u << j);
+                        p.lim[j] = -std::numeric_limits<float>::infinity();
+                    }
+                } else {
+                    p.lim[j] = limitOf(tMax[j]);
+                }
+            }
+            limV = L::load(p.lim);
+            limHi = maxLim(active);
+            return active != 0;
+        };
+        struct Entry {
+            std::uint32_t child;
+            std::uint16_t count;
+            std::uint16_t rays;
+            float t;
+        };
+        Entry stack[kStack];
+        int sp = 0;
+        std::uint32_t cur = 0;
+        unsigned curRays = active;
+        while (true) {
+            const Node& nd = nodes[cur];
+            if constexpr (sizeof(Node) > 128)
+                _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
+            const char* base = reinterpret_cast<const char*>(&nd);
+            const float* nearP[3];
+            const float* farP[3];
+            // The interval test: the W children against the whole packet at once.
+            V t0 = iaTMin, t1 = L::set1(limHi);
+            for (int a = 0; a < 3; ++a) {
+                nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
+                farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
+                const V n = L::load(nearP[a]), f = L::load(farP[a]);
+                t0 = L::max(minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a],
+                                       iaInvHi[a]),
+                            t0);
+                t1 = L::min(maxProduct(L::sub(f, iaOfHi[a]), L::sub(f, iaOfLo[a]), iaFarLo[a],
+                                       iaFarHi[a]),
+                            t1);
+            }
+            int cand = L::le(t0, t1);
+            // Each candidate child against each ray (lane j: ray j's own test).
+            unsigned rays[W];
+            alignas(32) float tc[W];
+            int mask = 0;
+            curRays &= active;
+            while (cand) {
+                const int c = __builtin_ctz(unsigned(cand));
+                cand &= cand - 1;
+                V r0 = tMinV, r1 = limV;
+                for (int a = 0; a < 3; ++a) {
+                    r0 = L::max(L::mul(L::sub(L::set1(nearP[a][c]), on[a]), inv[a]), r0);
+                    r1 = L::min(L::mul(L::sub(L::set1(farP[a][c]), of[a]), invFar[a]), r1);
+                }
+                const unsigned m = unsigned(L::le(r0, r1)) & curRays;
+                if (!m) continue;
+                mask |= 1 << c;
+                rays[c] = m;
+                if constexpr (!kAnyHit) {
+                    alignas(32) float e[W];
+                    L::store(e, r0);
+                    float lo = std::numeric_limits<float>::infinity();
+                    for (unsigned k = m; k; k &= k - 1)
+                        lo = std::min(lo, e[__builtin_ctz(k)]);
+                    tc[c] = lo;
+                }
+            }
+            bool haveNext = false;
+            if constexpr (kAnyHit) {
+                while (mask) {
+                    const int c = __builtin_ctz(unsigned(mask));
+                    mask &= mask - 1;
+                    if (nd.count[c] > 0) {
+                        if (!visitLeaves(nd.child[c], nd.count[c], rays[c])) return;
+                    } else {
+                        if (haveNext) stack[sp++] = {cur, 0, std::uint16_t(curRays), 0.0f};
+                        cur = nd.child[c];
+                        curRays = rays[c];
+                        haveNext = true;
+                    }
+                }
+            } else if (mask) {
+                // Nearest first: sorted by the packet's smallest entry distance, the farther
+                // ones pushed farthest first; a leaf met as the nearest is visited at once.
+                int order[W], n = 0;
+                while (mask) {
+                    const int c = __builtin_ctz(unsigned(mask));
+                    mask &= mask - 1;
+                    int k = n++;
+                    while (k > 0 && tc[order[k - 1]] < tc[c]) {
+                        order[k] = order[k - 1];
+                        --k;
+                    }
+                    order[k] = c;
+                }
+                for (int k = 0; k + 1 < n; ++k) {
+                    const int c = order[k];
+                    stack[sp++] = {nd.child[c], nd.count[c], std::uint16_t(rays[c]), tc[c]};
+                }
+                const int next = order[n - 1];
+                if (nd.count[next] == 0) {
+                    cur = nd.child[next];
+                    curRays = rays[next];
+                    haveNext = true;
+                } else {
+                    visitLeaves(nd.child[next], nd.count[next], rays[next]);
+                }
+            }
+            if (haveNext) continue;
+            while (true) {
+                if (sp == 0) return;
+                const Entry e = stack[--sp];
+                const unsigned m = e.rays & active;
+                if (!m) continue;
+                if constexpr (!kAnyHit) {
+                    if (e.t > maxLim(m)) continue;
+                    if (e.count > 0) {
+                        visitLeaves(e.child, e.count, m);
+                        continue;
+                    }
+                }
+                cur = e.child;
+                curRays = m;
+                break;
+            }
+        }
+    }
+
+    // Nearest hits of the rays of `lanes` (bit j: rays[j], j < W): hits[j] and the returned
+    // mask as intersect(rays[j], tMin[j], tMax[j], hits[j]) gives them, bit for bit.
+    static unsigned intersectPacket(const Bvh& b, const Ray* rays, const double* tMin,
+                                    const double* tMaxIn, Hit* hits, unsigned lanes) {
+        unsigned found = 0;
+        if (b.stats_.primitives == 0 || b.rootLeafCount_ > 0) {
+            for (; lanes; lanes &= lanes - 1) {
+                const int j = __builtin_ctz(lanes);
+                found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
+            }
+            return found;
+        }
+        Packet p;
+        double tMax[W];
+        const Primitive* best[W];
+        std::uint8_t bestKind[W];
+        std::uint32_t bestIndex[W];
+        unsigned packet = 0;
+        int signs = -1;
+        for (unsigned m = lanes; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            if (joinPacket(p, j, rays[j], tMin[j], signs)) {
+                packet |= 1u << j;
+                tMax[j] = tMaxIn[j];
+                best[j] = nullptr;
+            } else {
+                found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
+            }
+        }
+        if (!packet) return found;
+        // intersect()'s offer, per ray (ties: the primitive later in the scene wins).
+        auto offer = [&](int j, const Primitive& q, std::uint8_t kind, std::uint32_t index,
+                         const RayData* r) {
+            const double before = tMax[j];
+            if (!exactIntersect(q, kind, r, rays[j], tMin[j], tMax[j], hits[j])) return;
+            if (best[j] && hits[j].t == before && index < bestIndex[j]) {
+                exactIntersect(*best[j], bestKind[j], r, rays[j], tMin[j], before, hits[j]);
+                return;
+            }
+            best[j] = &q;
+            bestKind[j] = kind;
+            bestIndex[j] = index;
+            tMax[j] = hits[j].t;
+        };
+        for (unsigned m = packet; m; m &= m - 1)
+            for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
+                offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther,
+                      b.unboundedIndex_[i], nullptr);
+        walkPacket<false>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
+            offer(j, *b.order_[i], b.kind_[i], b.orderIndex_[i], r);
+            return true;
+        });
+        for (unsigned m = packet; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            if (best[j]) found |= 1u << j;
+        }
+        return found;
+    }
+
+    // Any hits of the rays of `lanes`: the returned mask as occluded(rays[j], tMin[j],
+    // tMax[j], skip ? skip[j] : nullptr) gives it.
+    static unsigned occludedPacket(const Bvh& b, const Ray* rays, const double* tMin,
+                                   const double* tMax, const Primitive* const* skip,
+                                   unsigned lanes) {
+        unsigned blocked = 0;
+        auto skipOf = [&](int j) { return skip ? skip[j] : nullptr; };
+        if (b.stats_.primitives == 0 || b.rootLeafCount_ > 0) {
+            for (; lanes; lanes &= lanes - 1) {
+                const int j = __builtin_ctz(lanes);
+                blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
+            }
+            return blocked;
+        }
+        Packet p;
+        unsigned packet = 0;
+        int signs = -1;
+        for (unsigned m = lanes; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            bool unboundedHit = false;
+            for (const Primitive* q : b.unbounded_)
+                if (q != skipOf(j) && q->occluded(rays[j], tMin[j], tMax[j])) {
+                    unboundedHit = true;
+                    break;
+                }
+            if (unboundedHit)
+                blocked |= 1u << j;
+            else if (joinPacket(p, j, rays[j], tMin[j], signs))
+                packet |= 1u << j;
+            else
+                blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
+        }
+        if (!packet) return blocked;
+        walkPacket<true>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
+            const Primitive* q = b.order_[i];
+            if (q == skipOf(j) || !exactOccluded(*q, b.kind_[i], r, rays[j], tMin[j], tMax[j]))
+                return true;
+            blocked |= 1u << j;
+            return false;
+        });
+        return blocked;
+    }
+
     // The exact decisions, called directly for the kinds the leaves know (the same
     // functions the virtual calls would reach: kSphere and kTriangle are exact types).
     // A plain triangle takes the shear the leaf test computed, if it did (the same bits as
@@ -507,12 +901,16 @@ template <class L> struct Bvh::WideWalk {
         return best != nullptr;
     }
 
-    static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax) {
+    // `skip`: a flat primitive the feeler starts on (Aggregate::forEachBlocker), never asked;
+    // compared by pointer, so the test of its neighbours in the leaf is untouched.
+    static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                         const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
-            if (p->occluded(ray, tMin, tMax)) return true;
+            if (p != skip && p->occluded(ray, tMin, tMax)) return true;
         bool any = false;
         walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
-            any = exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax);
+            const Primitive* p = b.order_[i];
+            any = p != skip && exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax);
             return !any;
         });
         return any;
@@ -529,17 +927,20 @@ template <class L> struct Bvh::WideWalk {
     }
 
     static void forEachBlocker(const Bvh& b, const Ray& ray, double tMin, double tMax,
-                               const std::function<bool(const Primitive&)>& visit) {
+                               const std::function<bool(const Primitive&)>& visit,
+                               const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
-            if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+            if (p != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
         walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
-            return !(exactOccluded(*b.order_[i], b.kind_[i], r, ray, tMin, tMax) &&
-                     !visit(*b.order_[i]));
+            const Primitive* p = b.order_[i];
+            return p == skip ||
+                   !(exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax) && !visit(*p));
         });
     }
 
     static const WidePath* path(bool avx2) {
-        static const WidePath p{W, avx2, &intersect, &occluded, &forEachHit, &forEachBlocker};
+        static const WidePath p{W,           avx2,           &intersect,     &occluded,
+                                &forEachHit, &forEachBlocker, &intersectPacket, &occludedPacket};
         return &p;
     }
 };

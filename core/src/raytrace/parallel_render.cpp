@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -128,20 +129,49 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         const Tracer tracer(scene, model, opt.trace);
         RayCounts counts;
         long long nBad = 0;
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                if (opt.cornerRays) {
-                    corners[std::size_t(y) * std::size_t(gw) + std::size_t(x)] =
-                        tracer.trace(lookAt->rayAt(x, y, width, height), counts);
-                } else {
-                    Color c = tracer.trace(camera.primaryRay(x, y, width, height), counts);
-                    if (!finite(c)) {
-                        ++nBad;
-                        c = Color(0.0);
-                    }
-                    model.toRgb8(c, img.at(x, y));
+        const Aggregate& agg = scene.aggregate();
+        auto rayOf = [&](int x, int y) {
+            return opt.cornerRays ? lookAt->rayAt(x, y, width, height)
+                                  : camera.primaryRay(x, y, width, height);
+        };
+        auto store = [&](int x, int y, Color c) {
+            if (opt.cornerRays) {
+                corners[std::size_t(y) * std::size_t(gw) + std::size_t(x)] = c;
+                return;
+            }
+            if (!finite(c)) {
+                ++nBad;
+                c = Color(0.0);
+            }
+            model.toRgb8(c, img.at(x, y));
+        };
+        for (int y = y0; y < y1; ++y) {
+            if (!opt.packets) {
+                for (int x = x0; x < x1; ++x) {
+                    const Ray r = rayOf(x, y);
+                    store(x, y, tracer.trace(r, counts));
+                }
+                continue;
+            }
+            // Eye rays of up to kMaxPacket neighbouring pixels of the row share one walk;
+            // each is then shaded from its hit as trace() would (the same colour).
+            for (int x = x0; x < x1; x += kMaxPacket) {
+                const int n = std::min(kMaxPacket, x1 - x);
+                Ray rays[kMaxPacket];
+                Hit hits[kMaxPacket];
+                double tMin[kMaxPacket], tMax[kMaxPacket];
+                for (int j = 0; j < n; ++j) {
+                    rays[j] = rayOf(x + j, y);
+                    tMin[j] = 0.0;
+                    tMax[j] = std::numeric_limits<double>::infinity();
+                }
+                const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
+                for (int j = 0; j < n; ++j) {
+                    if (!((found >> j) & 1)) hits[j].primitive = nullptr;
+                    store(x + j, y, tracer.traceFrom(rays[j], hits[j], counts));
                 }
             }
+        }
         // The pixels whose four corners are all this tile's, at once (in parallel, and
         // while they are in the cache); those on the tile's last corner row or column
         // wait for the neighbour's corners (the pass after the tiles).

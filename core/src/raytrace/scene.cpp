@@ -23,9 +23,10 @@ void BruteForce::forEachHit(const Ray& ray, double tMin, double tMax,
 }
 
 void BruteForce::forEachBlocker(const Ray& ray, double tMin, double tMax,
-                                const std::function<bool(const Primitive&)>& visit) const {
+                                const std::function<bool(const Primitive&)>& visit,
+                                const Primitive* skip) const {
     for (const auto& p : prims_)
-        if (p->occluded(ray, tMin, tMax) && !visit(*p)) return;
+        if (p.get() != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
 }
 
 Scene::Scene() : bruteForce_(primitives) {

@@ -38,12 +38,12 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
     struct Walk {
         const std::vector<Material>& materials;
         double opaqueKt;
-        const Primitive* self;
         double k = 1.0;
-    } walk{scene_.materials, settings_.opaqueKt, self};
-    // Only the blockers' materials matter: no hit records (Primitive::occluded).
+    } walk{scene_.materials, settings_.opaqueKt};
+    // Only the blockers' materials matter: no hit records (Primitive::occluded). A flat
+    // primitive cannot shadow its own point: the aggregate never asks it (issue 21; the
+    // visitor skipped it before, after its exact test had run: the same answers).
     scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&walk](const Primitive& p) {
-        if (&p == walk.self) return true; // a flat primitive cannot shadow its own point
         const double kt = walk.materials[size_t(p.material)].kt;
         if (kt < walk.opaqueKt) {
             walk.k = 0.0; // an opaque blocker: no need to look further
@@ -51,7 +51,7 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
         }
         walk.k *= kt;
         return true;
-    });
+    }, self);
     return walk.k;
 }
 
@@ -122,14 +122,15 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
 
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                       RayCounts& counts) const {
+                       RayCounts& counts, const Hit* known) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
         ++counts.secondary;
     if constexpr (kObserve) observer->rayBegin(ray, kind);
     Hit hit;
-    if (!scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
+    if (known ? known->primitive == nullptr
+              : !scene_.intersect(ray, 0.0, std::numeric_limits<double>::infinity(), hit)) {
         const Color bg = model_.background(scene_);
         if constexpr (kObserve) {
             observer->missed(bg);
@@ -137,6 +138,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         }
         return bg;
     }
+    if (known) hit = *known;
     const Material& m = scene_.materials[size_t(hit.material)];
     const glm::dvec3 surface = (m.texture && hit.hasUv)
                                    ? sampleTexture(*m.texture, hit.primitive->textureCoords(hit))
@@ -252,6 +254,11 @@ Color Tracer::trace(const Ray& ray) const {
 Color Tracer::trace(const Ray& ray, RayCounts& counts) const {
     long budget = settings_.maxRaysPerSample;
     return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts);
+}
+
+Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts) const {
+    long budget = settings_.maxRaysPerSample;
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {

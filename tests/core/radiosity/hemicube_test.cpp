@@ -8,6 +8,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <limits>
 
 using namespace wb::rad;
 
@@ -105,4 +106,36 @@ TEST_CASE("accumulate: GL-style item buffer, bad ids skipped, mismatched resolut
     ItemBuffer other;
     other.resize(8);
     CHECK_THROWS_AS(accumulate(other, t, 3, 0, row), std::invalid_argument);
+}
+
+TEST_CASE("hemicube item buffer: packets of pixels give the ids of one ray per pixel") {
+    // Issue 21: castItemBuffer traces each face row's neighbouring pixels as packets of up
+    // to 8 rays; every id must be nearestPatch's for that pixel's ray alone (the Cornell
+    // box: boxes' edges and corners, back sides, resolutions not a multiple of 8).
+    const PatchMesh m = meshScene(cornellBox(), {0.15});
+    const PatchBvh bvh(m);
+    long pixels = 0, seen = 0;
+    for (int res : {6, 20, 64}) {
+        for (int i = 0; i < static_cast<int>(m.patches.size()); i += 7) {
+            const HemicubeFrame frame = hemicubeFrame(m, i);
+            ItemBuffer items;
+            castItemBuffer(bvh, frame, res, items, false);
+            for (int f = 0; f < kHemicubeFaces; ++f) {
+                const auto face = static_cast<HemicubeFace>(f);
+                for (int row = 0; row < faceHeight(res, face); ++row)
+                    for (int col = 0; col < faceWidth(res, face); ++col) {
+                        const glm::dvec3 d =
+                            glm::normalize(pixelDirection(frame, res, face, col, row));
+                        const int want = bvh.nearestPatch(frame.origin, d, 0.0,
+                                                          std::numeric_limits<double>::infinity());
+                        const int got = items.faces[static_cast<std::size_t>(f)]
+                                                   [static_cast<std::size_t>(row * res + col)];
+                        REQUIRE(got == want);
+                        ++pixels;
+                        seen += want >= 0;
+                    }
+            }
+        }
+    }
+    REQUIRE(seen > pixels / 2);
 }

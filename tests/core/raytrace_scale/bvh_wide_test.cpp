@@ -95,6 +95,14 @@ struct WidePaths {
             REQUIRE(trees.back()->stats().width == o.width);
             REQUIRE(trees.back()->stats().avx2 == (k > 0));
         }
+        // Issue 21: the AVX-512 (F + VL) 8-wide walk, where the CPU has it.
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+            BvhOptions o = base;
+            o.width = 8;
+            o.simd = BvhSimd::Avx512;
+            trees.push_back(std::make_unique<Bvh>(prims, o));
+            REQUIRE(trees.back()->stats().avx512);
+        }
     }
 };
 
@@ -227,7 +235,7 @@ int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt1993
 // The same on the boxes of the 4-wide and of the 8-wide tree (the AVX2 path's).
 int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
     int hits = adversarialRaysOf(r, r.paths.trees.front()->wideNodes(), g, count, scale);
-    if (r.paths.trees.size() == 3)
+    if (r.paths.trees.size() >= 3)
         hits += adversarialRaysOf(r, r.paths.trees.back()->wideNodes8(), g, count, scale);
     return hits;
 }
@@ -245,6 +253,9 @@ TEST_CASE("rt_bvh_wide: the wide tree is the default, by CPU, and collapses the 
         Bvh wide(s.primitives);
         CHECK(wide.stats().avx2 == avx2);
         CHECK(wide.stats().width == (avx2 ? 8 : 4));
+        // Issue 21: AVX-512 (F + VL) where the CPU has it.
+        CHECK(wide.stats().avx512 ==
+              (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")));
         CHECK(wide.options().width == wide.stats().width);
     }
     for (int width : {4, 8}) {
@@ -320,18 +331,21 @@ TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is ignored", 
     const char* old = std::getenv("WB_BVH_PATH");
     const std::string saved = old ? old : "";
     const bool avx2 = __builtin_cpu_supports("avx2");
+    const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
     struct Case {
         const char* value;
         int width;
-        bool avx2;
+        bool avx2, avx512;
     };
-    for (const Case& c :
-         {Case{"sse4", 4, false}, Case{"avx4", 4, avx2}, Case{"avx8", avx2 ? 8 : 4, avx2}}) {
+    for (const Case& c : {Case{"sse4", 4, false, false}, Case{"avx4", 4, avx2, false},
+                          Case{"avx8", avx2 ? 8 : 4, avx2, false},
+                          Case{"avx512", avx2 ? 8 : 4, avx2, avx512}}) {
         INFO(c.value);
         setenv("WB_BVH_PATH", c.value, 1);
         Bvh b(s.primitives);
         CHECK(b.stats().width == c.width);
         CHECK(b.stats().avx2 == c.avx2);
+        CHECK(b.stats().avx512 == c.avx512);
         BvhOptions explicitOpt; // explicit options win over the variable
         explicitOpt.width = 4;
         explicitOpt.simd = BvhSimd::Sse2;
@@ -341,10 +355,11 @@ TEST_CASE("rt_bvh_wide: WB_BVH_PATH forces a path, and a bad value is ignored", 
     // end whichever program happens to build a BVH.
     unsetenv("WB_BVH_PATH");
     const Bvh automatic(s.primitives);
-    setenv("WB_BVH_PATH", "avx512", 1);
+    setenv("WB_BVH_PATH", "avx1024", 1);
     const Bvh bad(s.primitives);
     CHECK(bad.stats().width == automatic.stats().width);
     CHECK(bad.stats().avx2 == automatic.stats().avx2);
+    CHECK(bad.stats().avx512 == automatic.stats().avx512);
     if (old)
         setenv("WB_BVH_PATH", saved.c_str(), 1);
     else

@@ -31,6 +31,12 @@ struct FormFactorConfig {
     // from the thread calling row()/computeAll() (GL contexts are per thread); computeAll() then
     // runs serially.
     std::function<void(int i, std::vector<float>& out)> rowProvider;
+    // Progressive with shooting groups: the row of group g (its hemicube frame has the origin at
+    // the group's centroid), `out` sized to n. Empty: core's CPU hemicube at hemicubeResolution.
+    // Lab 08 passes its GL hemicube or rays at the receivers (point_rays.h) so the keys' method
+    // also shoots the groups. Called from the thread calling shooterRow() (the GL hemicube
+    // needs its context).
+    std::function<void(int g, const HemicubeFrame& frame, std::vector<float>& out)> groupRowProvider;
 };
 
 class FormFactors {
@@ -50,8 +56,8 @@ class FormFactors {
     const float* row(int i, std::vector<float>& scratch) const;
     // Stored value (computes the row if needed). Throws std::logic_error when not stored.
     float at(int i, int j) const;
-    // Row of shooting group g (mesh.groups): F from the group's centroid to every patch by the
-    // CPU hemicube at hemicubeResolution, whatever the method (a group is not a patch). Cached
+    // Row of shooting group g (mesh.groups): F from the group's centroid to every patch by
+    // groupRowProvider, or the CPU hemicube at hemicubeResolution without one. Cached
     // for all groups when groups × n <= maxStoredPatches². Thread-safe.
     const float* shooterRow(int g, std::vector<float>& scratch) const;
     bool rowReady(int i) const;

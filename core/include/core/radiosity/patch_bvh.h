@@ -23,6 +23,10 @@ class PatchBvh {
     int nearestPatch(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
                      double tMax) const;
 
+    // nearestPatch(origin, dirs[j], 0, inf) for j < n (n <= rt::kMaxPacket), the rays
+    // traced as one packet (issue 21: a hemicube face's neighbouring pixels), into ids[j].
+    void nearestPatches(const glm::dvec3& origin, const glm::dvec3* dirs, int n, int* ids) const;
+
     // True when the open segment from a to b (the end points' own patches excluded by
     // shortening it a relative 1e-9 at both ends) meets no patch.
     bool visible(const glm::dvec3& a, const glm::dvec3& b) const;
@@ -30,6 +34,9 @@ class PatchBvh {
     const rt::BvhStats& stats() const { return bvh_->stats(); }
 
   private:
+    // The patch seen along `ray` given its nearest hit (the back-side rule above).
+    int patchOf(const rt::Ray& ray, const rt::Hit& hit) const;
+
     const PatchMesh& mesh_;
     std::vector<std::unique_ptr<rt::Primitive>> prims_;
     std::unique_ptr<rt::Bvh> bvh_;

@@ -14,7 +14,10 @@
 // candidate is decided by the primitive's own exact double code, so hits are bit for
 // bit those of the plain loop (on equal t the primitive later in the scene wins, as in
 // the plain loop). Unbounded primitives (infinite planes, uncut quadrics) are kept
-// outside the tree and tested for every ray.
+// outside the tree and tested for every ray. Issue 21: shadow queries never ask the flat
+// primitive the feeler leaves (`skip`); coherent rays (a camera's row of pixels, a hemicube
+// face's) walk the tree as packets of 8 (AVX2/AVX-512) or 4 (SSE2) with the same answers;
+// an AVX-512 (F + VL) 8-wide walk is chosen where the CPU has it.
 #include "core/raytrace/scene.h"
 
 #include <cstdint>
@@ -26,9 +29,13 @@ namespace wb::rt {
 
 // Which SIMD instructions the wide traversal uses (BvhOptions::simd).
 enum class BvhSimd {
-    Auto, // AVX2 where the CPU has it (checked at run time), else SSE2
+    Auto, // AVX-512 (F + VL), else AVX2, where the CPU has it (checked at run time), else SSE2
     Sse2, // the portable x86-64 baseline
     Avx2, // AVX2 (falls back to SSE2 on a CPU without it; stats().avx2 says which ran)
+    // AVX-512 F + VL: 8-wide nodes, compares into mask registers (issue 21); falls back to
+    // AVX2, then SSE2 (stats().avx512 says whether it ran). Auto picks it where the CPU has
+    // it (measured faster than AVX2 8-wide, docs/raytrace-scale.md).
+    Avx512,
 };
 
 struct BvhOptions {
@@ -38,13 +45,16 @@ struct BvhOptions {
     double intersectionCost = 1.0; // ...one primitive test
     bool floatBoxes = false; // width 2 only: traverse float binary nodes (conservative, same hits)
     // 0: automatic (the default: 8 with AVX2, 4 otherwise — the faster one measured,
-    // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4 or avx8
+    // docs/raytrace-scale.md; the environment variable WB_BVH_PATH = sse4, avx4, avx8 or avx512
     // overrides it when width and simd are both automatic; any other value is ignored with
     // a message on stderr); 4 or 8: wide float nodes
     // (8 needs AVX2, else 4); 2: binary double nodes (the reference the tests use).
     int width = 0;
     BvhSimd simd = BvhSimd::Auto; // instructions of the wide traversal
     int buildThreads = 0; // build threads: 0 = TBB's current arena, 1 = sequential, n = arena of n
+    // intersectPacket/occludedPacket share one walk per packet (issue 21); false: they
+    // trace the rays one by one (the single-ray reference the bench and tests force).
+    bool packets = true;
 };
 
 struct BvhStats {
@@ -58,7 +68,8 @@ struct BvhStats {
     int wideNodes = 0;            // nodes of the wide tree (width 4 or 8), else 0
     double collapseSeconds = 0.0; // of buildSeconds: collapsing into the wide tree
     int width = 2;                // the tree traversed: 2 (binary), 4 or 8
-    bool avx2 = false;            // the wide traversal runs the AVX2 code (else SSE2)
+    bool avx2 = false;            // the wide traversal runs AVX2 (or AVX-512) code, else SSE2
+    bool avx512 = false;          // ... the AVX-512 code (BvhSimd::Avx512)
 };
 
 class Bvh : public Aggregate {
@@ -73,9 +84,24 @@ class Bvh : public Aggregate {
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
     void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Primitive&)>& visit) const override;
-    // Any hit in (tMin, tMax] (shadow feeler for opaque scenes).
-    bool occluded(const Ray& ray, double tMin, double tMax) const;
+                        const std::function<bool(const Primitive&)>& visit,
+                        const Primitive* skip = nullptr) const override;
+    // Any hit in (tMin, tMax] (shadow feeler for opaque scenes), never asking `skip` (a
+    // flat primitive the feeler starts on: Aggregate::forEachBlocker).
+    bool occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip = nullptr) const;
+
+    // Packets (issue 21): the rays of `lanes` (bit j: rays[j], j < kMaxPacket) that share
+    // the walk's direction signs, have no zero direction component and fit the float walk
+    // walk together, packetWidth() at a time (8 on the AVX2 8-wide path, else 4); the
+    // others go one by one. Every answer is the single-ray query's, bit for bit (the same
+    // float tests per ray, the same exact primitive code).
+    unsigned intersectPacket(const Ray* rays, const double* tMin, const double* tMax, Hit* hits,
+                             unsigned lanes) const override;
+    // Bit j: occluded(rays[j], tMin[j], tMax[j], skip ? skip[j] : nullptr).
+    unsigned occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
+                            const Primitive* const* skip, unsigned lanes) const;
+    // Rays per shared walk: 8 or 4 (wide trees with packets), 1 (binary tree, or packets off).
+    int packetWidth() const;
 
     const BvhStats& stats() const { return stats_; }
     const BvhOptions& options() const { return options_; }
@@ -121,15 +147,20 @@ class Bvh : public Aggregate {
         int width; // 4 or 8 children per node
         bool avx2; // compiled for AVX2 (bvh_wide_avx2.cpp), else SSE2 (bvh_wide.cpp)
         bool (*intersect)(const Bvh&, const Ray&, double, double, Hit&);
-        bool (*occluded)(const Bvh&, const Ray&, double, double);
+        bool (*occluded)(const Bvh&, const Ray&, double, double, const Primitive*);
         void (*forEachHit)(const Bvh&, const Ray&, double, double,
                            const std::function<bool(const Hit&)>&);
         void (*forEachBlocker)(const Bvh&, const Ray&, double, double,
-                               const std::function<bool(const Primitive&)>&);
+                               const std::function<bool(const Primitive&)>&, const Primitive*);
+        unsigned (*intersectPacket)(const Bvh&, const Ray*, const double*, const double*, Hit*,
+                                    unsigned);
+        unsigned (*occludedPacket)(const Bvh&, const Ray*, const double*, const double*,
+                                   const Primitive* const*, unsigned);
     };
     template <class Lanes> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
     static const WidePath* avx2Path(int width); // bvh_wide_avx2.cpp: width 4 or 8
+    static const WidePath* avx512Path();        // bvh_wide_avx512.cpp: width 8
     void collapseWide(const void* buildNodes, std::size_t count);
     template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
@@ -143,11 +174,12 @@ class Bvh : public Aggregate {
         path_->forEachHit(*this, ray, tMin, tMax, visit);
     }
     void forEachBlockerWide(const Ray& ray, double tMin, double tMax,
-                            const std::function<bool(const Primitive&)>& visit) const {
-        path_->forEachBlocker(*this, ray, tMin, tMax, visit);
+                            const std::function<bool(const Primitive&)>& visit,
+                            const Primitive* skip) const {
+        path_->forEachBlocker(*this, ray, tMin, tMax, visit, skip);
     }
-    bool occludedWide(const Ray& ray, double tMin, double tMax) const {
-        return path_->occluded(*this, ray, tMin, tMax);
+    bool occludedWide(const Ray& ray, double tMin, double tMax, const Primitive* skip) const {
+        return path_->occluded(*this, ray, tMin, tMax, skip);
     }
 
     BvhOptions options_;

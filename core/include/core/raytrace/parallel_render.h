@@ -30,6 +30,9 @@ struct ParallelRenderOptions {
     // each pixel centre (camera.primaryRay).
     bool cornerRays = false;
     TraceSettings trace; // depth limit, weight cut-off
+    // Eye rays in packets of 8 neighbouring pixels of a row, one walk per packet
+    // (Aggregate::intersectPacket; issue 21); the same picture as one by one (false).
+    bool packets = true;
     // Called after each finished tile, from a worker thread, serialised by a mutex.
     // With cornerRays the tiles are tiles of the corner grid and the image is complete
     // only at the end: a tile averages the pixels whose corners are all its own, the

@@ -14,6 +14,9 @@ namespace wb::rt {
 
 class Scene;
 
+// The most rays Aggregate::intersectPacket takes at once.
+constexpr int kMaxPacket = 8;
+
 // A set of primitives answering ray queries. The default loops over all of them.
 class Aggregate {
   public:
@@ -27,9 +30,28 @@ class Aggregate {
     // The same walk for shadow feelers, which need only who blocks (its material):
     // `visit` gets each primitive the ray meets in (tMin, tMax]. The default asks
     // forEachHit; BruteForce and Bvh ask Primitive::occluded, which may skip the hit record.
+    // `skip` (issue 21): a FLAT primitive (Primitive::planar) the feeler starts on; it is
+    // never asked (a ray leaving a plane meets it again at no t > 0, so its exact test could
+    // only say "no" or report rounding error: an exact argument, not an epsilon). Curved
+    // primitives must not be passed: a ray leaving a sphere may meet it again.
     virtual void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                                const std::function<bool(const Primitive&)>& visit) const {
-        forEachHit(ray, tMin, tMax, [&](const Hit& h) { return visit(*h.primitive); });
+                                const std::function<bool(const Primitive&)>& visit,
+                                const Primitive* skip = nullptr) const {
+        forEachHit(ray, tMin, tMax, [&](const Hit& h) {
+            return h.primitive == skip || visit(*h.primitive);
+        });
+    }
+    // Nearest hits of up to kMaxPacket rays at once (issue 21: coherent rays, e.g. a row
+    // of eye rays, share one walk in a Bvh): for each bit j of `lanes`, hits[j] and bit j
+    // of the result as intersect(rays[j], tMin[j], tMax[j], hits[j]) gives them. The
+    // default asks intersect ray by ray.
+    virtual unsigned intersectPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                     Hit* hits, unsigned lanes) const {
+        unsigned found = 0;
+        for (int j = 0; j < kMaxPacket; ++j)
+            if ((lanes >> j) & 1)
+                found |= unsigned(intersect(rays[j], tMin[j], tMax[j], hits[j])) << j;
+        return found;
     }
 };
 
@@ -40,7 +62,8 @@ class BruteForce : public Aggregate {
     void forEachHit(const Ray& ray, double tMin, double tMax,
                     const std::function<bool(const Hit&)>& visit) const override;
     void forEachBlocker(const Ray& ray, double tMin, double tMax,
-                        const std::function<bool(const Primitive&)>& visit) const override;
+                        const std::function<bool(const Primitive&)>& visit,
+                        const Primitive* skip = nullptr) const override;
 
   private:
     const std::vector<std::unique_ptr<Primitive>>& prims_;

@@ -96,6 +96,10 @@ class Tracer {
     // caller that sums them itself (renderParallel, once per tile) — the counters are
     // atomics, and a read-modify-write per ray costs ~3% of a frame.
     Color trace(const Ray& ray, RayCounts& counts) const;
+    // The same colour for an eye ray whose nearest hit the caller already found (issue 21:
+    // renderParallel traces eye rays in packets): `hit` is what scene.intersect(ray, 0, inf)
+    // gave, hit.primitive == nullptr when it missed. The ray is counted as traced.
+    Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -125,9 +129,10 @@ class Tracer {
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
     // `budget`: child rays this trace() may still spawn (TraceSettings::maxRaysPerSample).
     // `counts`: the rays it shoots are added there (trace() adds them to the atomics).
+    // `known`: the ray's nearest hit, found by the caller (primitive null: a miss), or null.
     template <bool kObserve>
     Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                   RayCounts& counts) const;
+                   RayCounts& counts, const Hit* known = nullptr) const;
 
     const Scene& scene_;
     const ShadingModel& model_;

@@ -1,0 +1,196 @@
+#pragma once
+// The lab 08 class, shared by its three files (kept apart so each stays readable):
+//   radiosity_lab.cpp      options, keys, the model (scene, patches, form factors, solver) and
+//                          solving (background runs, headless budget);
+//   radiosity_display.cpp  what is drawn: tone mapping (exposure, white balance, sRGB), the
+//                          scene, the form-factor false colour with its colour bar, the
+//                          hemicube inset, picking;
+//   radiosity_panel.cpp    the ImGui panel.
+#include "radiosity_lab.h"
+
+#include "exercise_view.h"
+
+#include "gl_hemicube.h"
+#include "hemicube_view.h"
+#include "patch_view.h"
+
+#include "common/gl.h"
+
+#include "core/radiosity/form_factors.h"
+#include "core/radiosity/scenes.h"
+#include "core/radiosity/solver.h"
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+const wb::ex::LabExercises& wbExercises_lab08();
+
+namespace wb {
+
+double secondsSince(std::chrono::steady_clock::time_point t0);
+double luminance(const glm::dvec3& c);
+
+// What the solver has published for drawing (the worker thread owns the solver while it runs).
+struct RadiositySnapshot {
+    std::vector<glm::dvec3> B;   // display radiosity per patch
+    std::vector<double> history; // residual after each step
+    int steps = 0;
+    double residual = 1.0;
+    int lastShooter = -1;
+    uint64_t version = 0;
+};
+
+class RadiosityLab : public Lab {
+  public:
+    RadiosityState s;
+
+    std::string title() const override { return "Lab 08 - radiosity"; }
+    std::vector<KeyHelp> keys() const override;
+    std::vector<OptionHelp> options() const override;
+    bool setOption(const std::string& name, const std::string& value, std::string& error) override;
+    void init() override;
+    ~RadiosityLab() override { stopRun(); }
+    bool key(int k) override;
+    bool click(int x, int y, const View& view) override {
+        (void)view;
+        pendingClick_ = true;
+        clickX_ = x;
+        clickY_ = y;
+        return true;
+    }
+    bool busy() const override { return running() || ex_.busy(); }
+    int pollMs() const override { return ex_.pollMs(); }
+    bool poll() override { return ex_.shellPoll(); }
+    bool headlessFailed() const override { return failed_; }
+    void draw(const View& view) override;
+    void gui() override;
+
+    // Test hooks.
+    int patchCount() const { return model_ ? int(model_->mesh.patches.size()) : 0; }
+    int stepCount() const { return snapshot().steps; }
+    double residual() const { return snapshot().residual; }
+    std::vector<glm::dvec3> displayB() const { return snapshot().B; }
+    int selected() const { return selected_; }
+    const std::vector<float>& selectedRow() const { return selectedRow_; }
+    const rad::ItemBuffer& selectedItems() const { return selectedItems_; }
+    void select(int patch) {
+        selected_ = patch;
+        selectedDirty_ = true;
+    }
+    std::vector<int> patchSurfaces() const;
+    std::vector<glm::dvec3> patchCentres() const;
+    std::vector<std::string> surfaceNames() const;
+    std::string summary() const;
+    bool budgetHit() const { return budgetHit_; }
+    glm::vec3 patchColour(int i) const {
+        return i >= 0 && size_t(i) < patchColour_.size() ? patchColour_[size_t(i)]
+                                                         : glm::vec3(0.0f);
+    }
+
+  private:
+    // The scene, its patches, form factors and solver: rebuilt together (the form factors and
+    // the solver keep references to the mesh, so the three live at fixed addresses).
+    struct Model {
+        rad::Scene scene;
+        rad::PatchMesh mesh;
+        std::unique_ptr<rad::FormFactors> ff;
+        std::unique_ptr<rad::Solver> solver;
+        glm::dvec3 light{1.0}; // the emitters' area-weighted colour (for white balance)
+    };
+
+    // radiosity_lab.cpp: model and solving.
+    bool loadScene(const std::string& name, double patchSize);
+    static double defaultPatchSize(const rad::Scene& scene);
+    bool meshChecked(const rad::Scene& scene, double patchSize, rad::PatchMesh& out);
+    void remesh(double patchSize);
+    void refine();
+    void setMethod(FfMethod m);
+    void install(std::unique_ptr<Model> m);
+    void rebuildSolver();
+    void requestSolve();
+    void stepOnce();
+    void startRun();
+    void stopRun();
+    void finishRun();
+    void stepOnMainThread(bool headless);
+    bool running() const { return running_.load(); }
+    bool overBudget() const;
+    int stepLimit() const;
+    void publish();
+    RadiositySnapshot snapshot() const {
+        std::lock_guard<std::mutex> lock(snapMutex_);
+        return snapshot_;
+    }
+    void printSummary();
+    void reportRun() const;
+    void glRow(const rad::HemicubeFrame& frame, int self, std::vector<float>& out);
+
+    // radiosity_display.cpp: colours, drawing, picking.
+    glm::vec3 tone(const glm::dvec3& B) const;
+    double autoExposure(const std::vector<glm::dvec3>& B) const;
+    void updateColours();
+    void updateSelection();
+    void setupCamera(const View& view) const;
+    void drawOverlay(const View& view);
+    void drawColourBar(const View& view) const;
+    int pick(const View& view, int x, int y);
+
+    std::unique_ptr<Model> model_;
+    ex::ExerciseMode ex_{wbExercises_lab08()}; // e: your form factors (exercises.cpp)
+    PatchView view_;
+    GlHemicube glHemicube_;
+    bool glGeometryOk_ = false;
+    double sceneRadius_ = 1.0;
+    glm::dvec3 sceneCentre_{0.0};
+    double patchSizeOption_ = -1.0;
+    double shooterOption_ = -1.0; // --shooting-patch (−1: the scene's default)
+    std::string message_, refineNote_;
+    bool failed_ = false; // headless: no PNG, exit 1 (the scene could not be meshed, a bad click)
+
+    // Solving.
+    std::thread worker_;
+    std::atomic<bool> cancel_{false}, running_{false};
+    bool mainThreadRun_ = false; // the GL method's run, stepped in draw()
+    bool autoSolve_ = false;     // headless: solve before drawing (a change since the last solve)
+    bool autoRun_ = false;       // the current run is the automatic one (--steps limits it)
+    rad::ItemBuffer providerItems_; // the GL row provider's item buffer
+    std::chrono::steady_clock::time_point runStart_, labStart_;
+    std::atomic<double> runSeconds_{0};
+    std::atomic<double> usableSeconds_{-1}; // the run's time to unshot power < 5% (−1: not yet)
+    std::atomic<bool> budgetHit_{false};
+    double lastStepSeconds_ = 0;
+    mutable std::mutex snapMutex_;
+    RadiositySnapshot snapshot_;
+    std::string workerError_;     // a step's exception on the worker (guarded by snapMutex_)
+    uint64_t printedVersion_ = 0; // headless summary printed for this snapshot
+
+    // Display.
+    std::vector<glm::vec3> patchColour_;
+    uint64_t coloursVersion_ = ~uint64_t(0);
+    bool coloursDirty_ = true;
+    double autoExposure_ = 1.0; // what auto exposure chose last (the slider's centre)
+    std::vector<double> history_;
+    int steps_ = 0;
+    double residual_ = 1.0;
+    int lastShooter_ = -1;
+
+    // Selection.
+    bool pendingClick_ = false;
+    int clickX_ = 0, clickY_ = 0;
+    int selected_ = -1;
+    bool selectedDirty_ = false;
+    std::vector<float> selectedRow_;
+    rad::ItemBuffer selectedItems_;
+    std::string selectedSource_;
+    double selectedSeconds_ = 0, selectedRowSum_ = 0, selectedRowMax_ = 0;
+    GLuint overlayTexture_ = 0;
+    bool overlayDirty_ = true;
+    int overlaySize_ = 0;
+};
+
+} // namespace wb

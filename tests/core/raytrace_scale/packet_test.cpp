@@ -1,0 +1,345 @@
+// Issue 21 point 3: packets of up to 8 rays sharing one walk (Bvh::intersectPacket,
+// Bvh::occludedPacket) give, lane by lane, the single-ray walk's answers and the plain
+// loop's: the same primitive, t, point and normals bit for bit, the same any-hit verdicts.
+// Packets: coherent (a camera's neighbouring rays from one origin), same-sign rays from
+// scattered origins (the interval test's origin intervals), rays aimed at the corners of
+// the wide nodes' child boxes from one origin and from points on their faces, rays along
+// edges and in face planes (zero direction components: those lanes go one by one),
+// mixed signs, partially masked lanes, per-lane segments ending at or just before the
+// nearest hit; every SIMD path (SSE2 4, AVX2 4 and 8 rays, AVX-512 8), the binary tree and packets
+// switched off; scenes at scale 1, 1e-30 and 1e25. Renders with packets equal renders
+// without, for 1 and 2 threads.
+#include "core/raytrace/box.h"
+#include "core/raytrace/bvh.h"
+#include "core/raytrace/cylinder.h"
+#include "core/raytrace/nff.h"
+#include "core/raytrace/parallel_render.h"
+#include "core/raytrace/phong_model.h"
+#include "core/raytrace/plane.h"
+#include "core/raytrace/quadric.h"
+#include "core/raytrace/smooth_triangle.h"
+#include "core/raytrace/spd.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <memory>
+#include <random>
+
+using namespace wb::rt;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    return {u(g), u(g), u(g)};
+}
+
+void mixedScene(Scene& sc, int n, std::mt19937_64& g, double s) {
+    std::uniform_real_distribution<double> r(0.05 * s, 0.6 * s);
+    for (int i = 0; i < n; ++i) {
+        const glm::dvec3 c = rnd3(g, -10 * s, 10 * s);
+        switch (i % 7) {
+        case 0:
+        case 6:
+            sc.add(Sphere(c, r(g)), 0);
+            break;
+        case 1:
+            sc.add(Cone(c, r(g), c + rnd3(g, -s, s) + glm::dvec3(0.01 * s), r(g)), 0);
+            break;
+        case 2:
+            sc.add(Triangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s)), 0);
+            break;
+        case 3:
+            sc.add(SmoothTriangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s), rnd3(g, -1, 1),
+                                  rnd3(g, -1, 1), rnd3(g, -1, 1)),
+                   0);
+            break;
+        case 4:
+            sc.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(r(g), r(g), r(g))), 0);
+            break;
+        default:
+            sc.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1 * s, s))), 0);
+            break;
+        }
+    }
+    sc.add(Plane({0, 0, -11 * s}, {0, 0, 1}), 0);
+}
+
+bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+struct Trees {
+    BruteForce brute;
+    std::vector<std::unique_ptr<Bvh>> bvhs; // every packet path, the binary tree, packets off
+    explicit Trees(const Scene& sc) : brute(sc.primitives) {
+        const bool avx2 = __builtin_cpu_supports("avx2");
+        for (int k = 0; k < (avx2 ? 3 : 1); ++k) {
+            BvhOptions o;
+            o.width = k == 2 ? 8 : 4;
+            o.simd = k == 0 ? BvhSimd::Sse2 : BvhSimd::Avx2;
+            bvhs.push_back(std::make_unique<Bvh>(sc.primitives, o));
+            REQUIRE(bvhs.back()->packetWidth() == o.width);
+        }
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
+            BvhOptions o;
+            o.simd = BvhSimd::Avx512;
+            bvhs.push_back(std::make_unique<Bvh>(sc.primitives, o));
+            REQUIRE(bvhs.back()->stats().avx512);
+            REQUIRE(bvhs.back()->packetWidth() == 8);
+        }
+        BvhOptions bin;
+        bin.width = 2;
+        bvhs.push_back(std::make_unique<Bvh>(sc.primitives, bin));
+        BvhOptions off;
+        off.packets = false;
+        bvhs.push_back(std::make_unique<Bvh>(sc.primitives, off));
+        REQUIRE(bvhs.back()->packetWidth() == 1);
+    }
+};
+
+struct PacketCounts {
+    long lanes = 0, hits = 0, blocked = 0;
+};
+
+// Compares one packet on every tree against the plain loop and the single-ray walk.
+void comparePacket(const Trees& t, const Ray* rays, const double* tMin, const double* tMax,
+                   unsigned lanes, PacketCounts& n) {
+    Hit want[kMaxPacket];
+    unsigned wantFound = 0, wantBlocked = 0;
+    for (int j = 0; j < kMaxPacket; ++j) {
+        if (!((lanes >> j) & 1)) continue;
+        ++n.lanes;
+        if (t.brute.intersect(rays[j], tMin[j], tMax[j], want[j])) wantFound |= 1u << j;
+        bool any = false;
+        t.brute.forEachBlocker(rays[j], tMin[j], tMax[j],
+                               [&](const Primitive&) { return any = true, false; });
+        if (any) wantBlocked |= 1u << j;
+    }
+    n.hits += __builtin_popcount(wantFound);
+    n.blocked += __builtin_popcount(wantBlocked);
+    for (const auto& b : t.bvhs) {
+        INFO("width " << b->stats().width << (b->stats().avx2 ? " AVX2" : "") << " packet "
+                      << b->packetWidth() << " lanes " << lanes);
+        Hit got[kMaxPacket];
+        for (Hit& h : got)
+            h.t = -7; // lanes outside the mask must stay untouched
+        const unsigned found = b->intersectPacket(rays, tMin, tMax, got, lanes);
+        REQUIRE(found == wantFound);
+        for (int j = 0; j < kMaxPacket; ++j) {
+            INFO("lane " << j);
+            if (!((lanes >> j) & 1)) {
+                REQUIRE(got[j].t == -7);
+                continue;
+            }
+            if (!((found >> j) & 1)) continue;
+            Hit single;
+            REQUIRE(b->intersect(rays[j], tMin[j], tMax[j], single));
+            REQUIRE(got[j].primitive == single.primitive);
+            REQUIRE(got[j].t == single.t);
+            if (b->stats().width == 2) { // the binary tree may pick another on a tie
+                REQUIRE(got[j].t == want[j].t);
+                continue;
+            }
+            REQUIRE(got[j].primitive == want[j].primitive);
+            REQUIRE(got[j].t == want[j].t);
+            REQUIRE(sameBits(got[j].point, want[j].point));
+            REQUIRE(sameBits(got[j].normal, want[j].normal));
+            REQUIRE(sameBits(got[j].outwardNormal, want[j].outwardNormal));
+            REQUIRE(got[j].cosVN == want[j].cosVN);
+        }
+        REQUIRE(b->occludedPacket(rays, tMin, tMax, nullptr, lanes) == wantBlocked);
+    }
+}
+
+// Packets of a scene at scale s: coherent, same-sign scattered, mixed, masked, segments.
+void randomPackets(const Scene& sc, double s, std::mt19937_64& g, int count, PacketCounts& n) {
+    const Trees t(sc);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < count; ++i) {
+        Ray rays[kMaxPacket];
+        double tMin[kMaxPacket], tMax[kMaxPacket];
+        const glm::dvec3 o = rnd3(g, -14 * s, 14 * s);
+        const glm::dvec3 aim = rnd3(g, -8 * s, 8 * s);
+        const glm::dvec3 signs = glm::sign(rnd3(g, -1, 1));
+        for (int j = 0; j < kMaxPacket; ++j) {
+            switch (i % 4) {
+            case 0: // coherent: one origin, neighbouring directions (a camera's row)
+                rays[j].origin = o;
+                rays[j].direction = glm::normalize(aim - o + glm::dvec3(j * 1e-2 * s, 0, 0));
+                break;
+            case 1: // scattered origins, directions of one octant
+                rays[j].origin = o + rnd3(g, -2 * s, 2 * s);
+                rays[j].direction = glm::normalize(signs * (glm::abs(rnd3(g, -1, 1)) + 0.01));
+                break;
+            case 2: // anything (mixed signs: those lanes go one by one)
+                rays[j].origin = rnd3(g, -14 * s, 14 * s);
+                rays[j].direction = glm::normalize(rnd3(g, -1, 1));
+                break;
+            default: // one origin, a wide fan: the interval test meets wide intervals
+                rays[j].origin = o;
+                rays[j].direction = glm::normalize(aim - o + rnd3(g, -4 * s, 4 * s));
+                break;
+            }
+            tMin[j] = 0;
+            tMax[j] = kInf;
+        }
+        unsigned lanes = 0xFF;
+        if (i % 3 == 1) lanes = unsigned(g()) & 0xFF; // partially masked
+        if (i % 7 == 3) {
+            // Segments: each lane ends at its nearest hit, just before it, or midway.
+            for (int j = 0; j < kMaxPacket; ++j) {
+                Hit h;
+                if (!t.brute.intersect(rays[j], 0, kInf, h)) continue;
+                const int k = int(g() % 3);
+                tMax[j] = k == 0 ? h.t : k == 1 ? std::nextafter(h.t, 0.0) : 0.5 * h.t;
+                if (g() & 1) tMin[j] = 0.25 * h.t;
+            }
+        }
+        comparePacket(t, rays, tMin, tMax, lanes, n);
+    }
+}
+
+// Packets aimed at the corners of one wide node's child box: from one origin outside the
+// box's lower corner (all directions in one octant), and from points on its faces.
+template <class Node>
+void cornerPackets(const Trees& t, const std::vector<Node>& nodes, std::mt19937_64& g, int count,
+                   double s, PacketCounts& n) {
+    REQUIRE_FALSE(nodes.empty());
+    constexpr int kW = int(sizeof(Node::count) / sizeof(Node::count[0]));
+    for (int i = 0; i < count; ++i) {
+        const Node& nd = nodes[g() % nodes.size()];
+        const int c = int(g() % kW);
+        if (nd.lo[0][c] > nd.hi[0][c]) continue; // empty slot
+        glm::dvec3 lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = nd.lo[a][c];
+            hi[a] = nd.hi[a][c];
+        }
+        Ray rays[kMaxPacket];
+        double tMin[kMaxPacket], tMax[kMaxPacket];
+        const glm::dvec3 o = i % 3 == 2 ? glm::dvec3(0.0) : lo - glm::abs(rnd3(g, 0.1 * s, 3 * s));
+        for (int j = 0; j < kMaxPacket; ++j) {
+            const glm::dvec3 corner((j & 1) ? hi.x : lo.x, (j & 2) ? hi.y : lo.y,
+                                    (j & 4) ? hi.z : lo.z);
+            if (i % 3 == 1) {
+                // Origins on the box's faces, directions of one octant.
+                rays[j].origin = corner;
+                const int a = int(g() % 3);
+                rays[j].origin[a] = (g() & 1) ? lo[a] : hi[a];
+                rays[j].direction = glm::normalize(glm::abs(rnd3(g, -1, 1)) + 1e-3);
+            } else if (i % 5 == 4 && j >= 6) {
+                // Along an edge (two zero components) and in a face plane (one).
+                rays[j].origin = corner - glm::dvec3(20 * s, 0, 0);
+                rays[j].direction = j == 6 ? glm::dvec3(1, 0, 0) : glm::normalize(glm::dvec3(1, 1, 0));
+            } else {
+                rays[j].origin = o;
+                rays[j].direction = glm::normalize(corner - o);
+            }
+            tMin[j] = 0;
+            tMax[j] = kInf;
+        }
+        comparePacket(t, rays, tMin, tMax, i % 4 == 3 ? unsigned(g()) & 0xFF : 0xFFu, n);
+    }
+}
+
+} // namespace
+
+TEST_CASE("packets: every lane is the single ray's and the plain loop's answer", "[bvh][packet]") {
+    for (double s : {1.0, 1e-30, 1e25}) {
+        INFO("scale " << s);
+        std::mt19937_64 g(77);
+        Scene sc;
+        mixedScene(sc, 1500, g, s);
+        PacketCounts n;
+        randomPackets(sc, s, g, 300, n);
+        INFO(n.lanes << " lanes, " << n.hits << " hits, " << n.blocked << " blocked");
+        // The packets must meet things, or the comparisons above say little.
+        REQUIRE(n.hits > n.lanes / 10);
+        REQUIRE(n.blocked >= n.hits);
+    }
+}
+
+TEST_CASE("packets: rays at the wide nodes' box corners, edges and faces", "[bvh][packet]") {
+    for (double s : {1.0, 1e-30}) {
+        INFO("scale " << s);
+        std::mt19937_64 g(5);
+        Scene sc;
+        mixedScene(sc, 2000, g, s);
+        const Trees t(sc);
+        PacketCounts n;
+        cornerPackets(t, t.bvhs.front()->wideNodes(), g, 300, s, n);
+        if (t.bvhs.size() >= 5) cornerPackets(t, t.bvhs[2]->wideNodes8(), g, 300, s, n);
+        INFO(n.lanes << " lanes, " << n.hits << " hits");
+        REQUIRE(n.hits > n.lanes / 10);
+    }
+}
+
+TEST_CASE("packets: a mesh with shared edges and vertices, ties", "[bvh][packet]") {
+    // A grid of triangles, each twice (ties: the later copy wins), rays through vertices.
+    Scene sc;
+    const int m = 24;
+    for (int y = 0; y < m; ++y)
+        for (int x = 0; x < m; ++x) {
+            const glm::dvec3 a(x, y, 0.1 * ((x * 7 + y * 3) % 5)), b(x + 1, y, 0.1 * ((x + y) % 3)),
+                c(x, y + 1, 0.0), d(x + 1, y + 1, 0.05 * (x % 4));
+            for (int k = 0; k < 2; ++k) {
+                sc.add(Triangle(a, b, c), 0);
+                sc.add(Triangle(b, d, c), 0);
+            }
+        }
+    const Trees t(sc);
+    std::mt19937_64 g(9);
+    PacketCounts n;
+    for (int i = 0; i < 400; ++i) {
+        Ray rays[kMaxPacket];
+        double tMin[kMaxPacket], tMax[kMaxPacket];
+        const glm::dvec3 o(m * 0.5 + (double(g() % 100) - 50) * 0.1, m * 0.5, 10 + double(g() % 7));
+        for (int j = 0; j < kMaxPacket; ++j) {
+            const glm::dvec3 v(double(g() % (m + 1)), double(g() % (m + 1)), 0.0);
+            rays[j].origin = o;
+            rays[j].direction = glm::normalize(v + glm::dvec3(0.5 * (j % 2), 0, 0) * double(i % 2) - o);
+            tMin[j] = 0;
+            tMax[j] = kInf;
+        }
+        comparePacket(t, rays, tMin, tMax, 0xFF, n);
+    }
+    REQUIRE(n.hits > n.lanes / 2);
+}
+
+TEST_CASE("packets: renders with packets equal renders without, any thread count",
+          "[bvh][packet]") {
+    for (const char* name : {"balls", "jacks", "teapot", "gears"}) {
+        INFO(name);
+        SceneFile sf = toScene(spdScene(name, 2));
+        Bvh bvh(sf.scene->primitives);
+        sf.scene->setAggregate(&bvh);
+        PhongModel model;
+        const LookAtCamera cam = sf.camera();
+        ParallelRenderOptions opt;
+        opt.trace.maxDepth = 4;
+        opt.cornerRays = true;
+        opt.threads = 1;
+        opt.packets = false;
+        const wb::Image single = renderParallel(*sf.scene, cam, model, 80, 64, opt);
+        for (int threads : {1, 2}) {
+            opt.threads = threads;
+            opt.packets = true;
+            ParallelRenderStats st;
+            const wb::Image packets = renderParallel(*sf.scene, cam, model, 80, 64, opt, &st);
+            REQUIRE(packets.data == single.data);
+            REQUIRE(st.primaryRays == 81 * 65);
+        }
+        opt.cornerRays = false;
+        opt.packets = false;
+        const wb::Image centresSingle = renderParallel(*sf.scene, cam, model, 70, 50, opt);
+        opt.packets = true;
+        REQUIRE(renderParallel(*sf.scene, cam, model, 70, 50, opt).data == centresSingle.data);
+        sf.scene->setAggregate(nullptr);
+    }
+}
