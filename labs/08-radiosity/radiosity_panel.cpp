@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include <cfloat>
+
 #include <algorithm>
 #include <cmath>
 
@@ -83,7 +85,10 @@ void RadiosityLab::gui() {
         // (docs/bench/radiosity.md, "Lab 08 defaults": block faces 10-30% off at 0.31 m in the
         // Cornell box, ~1-3% at 0.10 m).
         float shooter = float(s.shooterEdge);
-        ImGui::SliderFloat(wb::tr("shooting patch, m"), &shooter, 0.0f, 1.0f, "%.2f");
+        // The label above a full-width slider: beside it, a longer language ran past the edge.
+        ImGui::TextUnformatted(wb::tr("shooting patch, m"));
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        ImGui::SliderFloat("##shooter", &shooter, 0.0f, 1.0f, "%.2f");
         if (ImGui::IsItemDeactivatedAfterEdit()) {
             shooterOption_ = double(shooter);
             s.shooterEdge = double(shooter);
@@ -104,7 +109,7 @@ void RadiosityLab::gui() {
             lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
         const float lo = *std::min_element(lg.begin(), lg.end());
         const float hi = *std::max_element(lg.begin(), lg.end());
-        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, "log10 residual", lo - 0.1f,
+        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, tr("log10 residual"), lo - 0.1f,
                          hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
@@ -114,7 +119,7 @@ void RadiosityLab::gui() {
         // The solver's config is fixed at construction: restart it with the new setting.
         rebuildSolver();
     }
-    if (ImGui::Button(running() ? "stop (r)" : "run (r)")) {
+    if (ImGui::Button(running() ? tr("stop (r)") : tr("run (r)"))) {
         if (running())
             stopRun();
         else
