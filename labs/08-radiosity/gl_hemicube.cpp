@@ -22,16 +22,11 @@ struct FaceSpec {
 
 FaceSpec faceSpec(const rad::HemicubeFrame& f, int face) {
     switch (face) {
-    case 0:
-        return {f.n, f.v, f.u, f.v, false};
-    case 1:
-        return {f.u, f.n, -f.v, f.n, true};
-    case 2:
-        return {-f.u, f.n, f.v, f.n, true};
-    case 3:
-        return {f.v, f.n, f.u, f.n, true};
-    default:
-        return {-f.v, f.n, -f.u, f.n, true};
+    case 0: return {f.n, f.v, f.u, f.v, false};
+    case 1: return {f.u, f.n, -f.v, f.n, true};
+    case 2: return {-f.u, f.n, f.v, f.n, true};
+    case 3: return {f.v, f.n, f.u, f.n, true};
+    default: return {-f.v, f.n, -f.u, f.n, true};
     }
 }
 
@@ -61,9 +56,7 @@ int32_t GlHemicube::decode(const uint8_t rgb[3]) {
     return int32_t(c) - 1;
 }
 
-GlHemicube::~GlHemicube() {
-    release();
-}
+GlHemicube::~GlHemicube() { release(); }
 
 void GlHemicube::release() {
     if (fbo_) glDeleteFramebuffers(1, &fbo_);
@@ -108,8 +101,8 @@ bool GlHemicube::setGeometry(const std::vector<glm::vec3>& vertices,
     if (!vbo_) glGenBuffers(1, &vbo_);
     if (!cbo_) glGenBuffers(1, &cbo_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(glm::vec3)), vertices.data(),
-                 GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(glm::vec3)),
+                 vertices.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, cbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(colours.size()), colours.data(), GL_STATIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -162,8 +155,8 @@ bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDis
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (3 * res > maxSize) {
-        error = "GL hemicube: " + std::to_string(3 * res) +
-                " rows exceed this GL's renderbuffer limit " + std::to_string(maxSize);
+        error = "GL hemicube: " + std::to_string(3 * res) + " rows exceed this GL's renderbuffer limit " +
+                std::to_string(maxSize);
         return false;
     }
     if (!ensureTarget(res, error)) return false;
@@ -179,8 +172,8 @@ bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDis
     glPushMatrix();
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-    glDisable(GL_DITHER);   // the ids must arrive bit-exact
-    glDisable(GL_LIGHTING); // colour = the id, not a lit colour
+    glDisable(GL_DITHER);      // the ids must arrive bit-exact
+    glDisable(GL_LIGHTING);    // colour = the id, not a lit colour
     glDisable(GL_BLEND);
     glDisable(GL_TEXTURE_2D);
     glDisable(GL_FOG);
@@ -242,22 +235,8 @@ bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDis
         // 4. View: rows right, up, −forward; the eye at the patch centre.
         const glm::dvec3 f = fs.forward, w = fs.up, rt = glm::cross(f, w);
         const glm::dvec3 o = frame.origin;
-        const double M[16] = {rt.x,
-                              w.x,
-                              -f.x,
-                              0,
-                              rt.y,
-                              w.y,
-                              -f.y,
-                              0,
-                              rt.z,
-                              w.z,
-                              -f.z,
-                              0,
-                              -glm::dot(rt, o),
-                              -glm::dot(w, o),
-                              glm::dot(f, o),
-                              1};
+        const double M[16] = {rt.x, w.x, -f.x, 0, rt.y, w.y, -f.y, 0, rt.z, w.z, -f.z, 0,
+                              -glm::dot(rt, o), -glm::dot(w, o), glm::dot(f, o), 1};
         glMatrixMode(GL_MODELVIEW);
         glLoadMatrixd(M);
         // 5. Front faces in their item colours, back faces in "nothing": a patch seen

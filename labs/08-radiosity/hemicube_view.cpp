@@ -13,16 +13,11 @@ glm::ivec2 unfoldedCore(int res, rad::HemicubeFace f, int col, int row) {
     // A side's row 0 is its horizon: the outer edge of the cross; its last row touches
     // the top face. Columns follow the direction of s in core's layout table.
     switch (f) {
-    case rad::HemicubeFace::Top:
-        return {h + col, h + row};
-    case rad::HemicubeFace::PosV:
-        return {h + col, last - row}; // v + s·u + z·n
-    case rad::HemicubeFace::NegV:
-        return {h + (res - 1 - col), row}; // −v − s·u + z·n
-    case rad::HemicubeFace::PosU:
-        return {last - row, h + (res - 1 - col)}; // u − s·v + z·n
-    default:
-        return {row, h + col}; // −u + s·v + z·n
+    case rad::HemicubeFace::Top: return {h + col, h + row};
+    case rad::HemicubeFace::PosV: return {h + col, last - row};           // v + s·u + z·n
+    case rad::HemicubeFace::NegV: return {h + (res - 1 - col), row};      // −v − s·u + z·n
+    case rad::HemicubeFace::PosU: return {last - row, h + (res - 1 - col)}; // u − s·v + z·n
+    default: return {row, h + col};                                        // −u + s·v + z·n
     }
 }
 
@@ -40,8 +35,7 @@ Image unfoldHemicube(const rad::ItemBuffer& items, const std::vector<glm::vec3>&
     Image img(size, size, 3);
     auto toByte = [](float x) { return uint8_t(std::clamp(x, 0.0f, 1.0f) * 255.0f + 0.5f); };
     const uint8_t bg[3] = {toByte(background.x), toByte(background.y), toByte(background.z)};
-    for (size_t i = 0; i < img.data.size(); i += 3)
-        std::copy(bg, bg + 3, &img.data[i]);
+    for (size_t i = 0; i < img.data.size(); i += 3) std::copy(bg, bg + 3, &img.data[i]);
     for (int f = 0; f < rad::kHemicubeFaces; ++f) {
         const auto face = rad::HemicubeFace(f);
         const int w = rad::faceWidth(res, face), hgt = rad::faceHeight(res, face);

@@ -15,8 +15,7 @@ void PatchView::setMesh(const rad::PatchMesh& mesh) {
         if (!p.outline.empty())
             outlines_.push_back(p.outline);
         else
-            outlines_.push_back(
-                std::vector<int>(p.corners.begin(), p.corners.begin() + p.cornerCount));
+            outlines_.push_back(std::vector<int>(p.corners.begin(), p.corners.begin() + p.cornerCount));
     }
 }
 
@@ -112,8 +111,7 @@ void PatchView::hemicubeGeometry(std::vector<glm::vec3>& vertices,
     vertices.reserve(tris_.size() * 3);
     items.reserve(tris_.size());
     for (size_t t = 0; t < tris_.size(); ++t) {
-        for (int k = 0; k < 3; ++k)
-            vertices.push_back(positions_[size_t(tris_[t][size_t(k)])]);
+        for (int k = 0; k < 3; ++k) vertices.push_back(positions_[size_t(tris_[t][size_t(k)])]);
         items.push_back(uint32_t(owner_[t]));
     }
 }

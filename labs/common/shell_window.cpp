@@ -297,18 +297,30 @@ bool uiScaleKey(unsigned char c, int mods) {
     return true;
 }
 
-void pollKeys(int timer);
+// What the X reader does (x_keyboard.h): typed text to ImGui, lab keys to the lab unless a
+// text field has the keyboard.
+void xText(unsigned c) {
+    g->input.character(c);
+    changed();
+}
+void xLabKey(int c) {
+    if (!ImGui::GetIO().WantCaptureKeyboard)
+        labKey(c);
+    else
+        changed();
+}
 
 void keyboard(unsigned char c, int, int) {
+    // The same press read from X first (and what came before it): its group decides. Under a
+    // non-Latin layout the X reader sends the key the US layout has there; GLUT's character for
+    // it ('.' where US has '/') would act a second time, or as another key.
+    const bool latin = g->xkb.glutCharacter(xText, xLabKey);
     const int mods = glutGetModifiers();
     g->input.keyboard(c, true, mods);
     changed();
     if (uiScaleKey(c, mods)) return;
     if (ImGui::GetIO().WantCaptureKeyboard) return;
-    // Under a non-Latin layout the X reader sends the key the US layout has there (x_keyboard.h);
-    // GLUT's character for it ('.' where US has '/') would act a second time, or as another key.
-    pollKeys(-1); // this same press, read from X: its group decides
-    if (c >= 0x20 && c < 0x7f && !g->xkb.lastPressLatin()) return;
+    if (c >= 0x20 && c < 0x7f && !latin) return;
     labKey(c);
 }
 
@@ -316,20 +328,9 @@ void keyboard(unsigned char c, int, int) {
 // (a wake-up every 20 ms costs no measurable CPU while idle).
 constexpr unsigned kKeyPollMs = 20;
 
-// timer >= 0: called by the GLUT timer (which is re-armed); -1: from the keyboard callback.
-void pollKeys(int timer) {
-    g->xkb.poll(
-        [](unsigned c) {
-            g->input.character(c);
-            changed();
-        },
-        [](int c) {
-            if (!ImGui::GetIO().WantCaptureKeyboard)
-                labKey(c);
-            else
-                changed();
-        });
-    if (timer >= 0) glutTimerFunc(kKeyPollMs, pollKeys, 0);
+void pollKeys(int) {
+    g->xkb.poll(xText, xLabKey);
+    glutTimerFunc(kKeyPollMs, pollKeys, 0);
 }
 
 void keyboardUp(unsigned char c, int, int) {

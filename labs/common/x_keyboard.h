@@ -8,10 +8,15 @@
 //     Latin-1 ones, so each character arrives once;
 //   - a press in a non-Latin group (layout) is the lab key the US layout has at that physical
 //     key and shift level (group 1's keysym at the same keycode), and GLUT's own character for
-//     it is ignored (lastPressLatin() false), so each key acts once. The group is the one in
-//     the event itself (as in XLookupString), not the keyboard's state when we get to it.
-//     The X server writes a press to every client that selected it in one go, so when GLUT
-//     reports a character, poll() finds the same press on this connection.
+//     it is ignored, so each key acts once. The group is the one in the event itself (as in
+//     XLookupString), not the keyboard's state when we get to it.
+// Order: the X server writes a press to every client that selected it in one go, so when GLUT
+// reports a character, read() finds the same press on this connection. Each press is queued
+// here in X's order, with a marker where GLUT will report a character (XLookupString gives one,
+// as in freeglut); what comes before a marker is only done once GLUT has reported it, so keys
+// act in the order they were pressed even when they come faster than frames.
+#include <chrono>
+#include <deque>
 #include <functional>
 
 namespace wb {
@@ -27,17 +32,27 @@ class XKeyboard {
     // False when X or its keyboard extension is not there (then GLUT alone is used, as before).
     bool open(const char* displayName, unsigned long window);
 
-    // Reads the pending key events: text(c) for a typed character beyond Latin-1, labKey(c) for a
-    // press in a non-Latin group, with `c` the US layout's ASCII character at that key.
+    // Reads the pending key events and does what is due, in order, up to the first press GLUT
+    // has yet to report: text(c) for a typed character beyond Latin-1, labKey(c) for a press in
+    // a non-Latin group, with `c` the US layout's ASCII character at that key.
     void poll(const std::function<void(unsigned)>& text, const std::function<void(int)>& labKey);
 
-    // True when the last press poll() read was in the first group (the Latin layout), or when
-    // there is no X reader: GLUT's characters are then the lab keys.
-    bool lastPressLatin() const { return lastGroup_ == 0; }
+    // GLUT reports a character: does what came before its press (as poll()) and returns true
+    // when that press was in the first group (the Latin layout), or when there is no X reader:
+    // the character is then the lab key; false: the X side has acted for it.
+    bool glutCharacter(const std::function<void(unsigned)>& text,
+                       const std::function<void(int)>& labKey);
 
   private:
+    struct Action {
+        enum Kind { Text, LabKey, GlutCharacter } kind;
+        unsigned value; // Text: the character; LabKey: the ASCII key; GlutCharacter: the group
+        std::chrono::steady_clock::time_point when;
+    };
+    void read();
+    void run(const std::function<void(unsigned)>& text, const std::function<void(int)>& labKey);
     void* display_ = nullptr; // Display*, kept out of this header (X11 macros)
-    unsigned lastGroup_ = 0;
+    std::deque<Action> queue_;
 };
 
 } // namespace wb

@@ -78,5 +78,12 @@ echo "keys:     $keys"
 echo "typed:    $(for ((k = 0; k < ${#keys}; k++)); do printf '%s ' "$(keysym "${keys:k:1}")"; done)"
 echo "expected: $want"
 echo "received: $got"
-[ "$want" == "$got" ] || { echo "FAIL: the lab did not get the US keys once each"; exit 1; }
+if [ "$want" != "$got" ]; then
+  # Each key exactly once is what must hold; the order may differ when xdotool's presses come
+  # faster than a loaded machine draws frames (GLUT and the X reader are two connections).
+  sorted() { tr ' ' '\n' | sort -n | tr '\n' ' '; }
+  [ "$(echo "$want" | sorted)" == "$(echo "$got" | sorted)" ] ||
+    { echo "FAIL: the lab did not get the US keys once each"; exit 1; }
+  echo "note: the same keys once each, in another order"
+fi
 echo "ok: ${#keys} keys on the Russian layout"
