@@ -289,13 +289,19 @@ std::string usageText(const std::string& program, const Lab& lab) {
     for (const auto& o : lab.options())
         flag("--" + o.name + (o.argument.empty() ? "" : " " + o.argument), o.what);
     s << "\n" << tr("Keys:") << "\n";
+    // Padded by characters, not bytes: "← →" and "перетаскивание" are UTF-8.
+    auto key = [&s](const std::string& name, const std::string& what) {
+        size_t width = 0;
+        for (unsigned char c : name)
+            width += (c & 0xC0) != 0x80;
+        s << "  " << name << std::string(width < 10 ? 10 - width : 1, ' ') << what << "\n";
+    };
     for (const auto& k : lab.keys())
-        s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what
-          << "\n";
+        key(k.key, k.what);
     if (!fills) {
-        s << "  h         " << tr("hide/show the panel") << "\n";
-        s << "  +/-       " << tr("zoom (also the wheel)") << "\n";
-        s << "  " << tr("drag") << std::string(8, ' ') << tr("rotate the scene") << "\n";
+        key("h", tr("hide/show the panel"));
+        key("+/-", tr("zoom (also the wheel)"));
+        key(tr("drag"), tr("rotate the scene"));
     }
     s << "  Ctrl+= / Ctrl+-  " << tr("larger / smaller panel text") << "\n";
     s << "  Esc       " << tr("quit") << "\n";
