@@ -21,6 +21,11 @@ void RadiosityLab::gui() {
         ImGui::TextWrapped("%s", message_.c_str());
         return;
     }
+    // The shell lays the panel out before draw() (which takes the solver's snapshot) and,
+    // drawing on change only, gives a run one more frame after it ends: without this the
+    // panel kept the last-but-one snapshot ("iterations 303, residual 7.5e-2" after a run that
+    // ended at 1198 steps, 1e-3) until the mouse moved. CPU only: colours and counters.
+    updateColours();
     const rad::FormFactors& ff = *model_->ff;
     ImGui::TextWrapped("%s", model_->scene.name.c_str());
     if (!message_.empty()) ImGui::TextWrapped("note: %s", message_.c_str());
