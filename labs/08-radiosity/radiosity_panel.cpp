@@ -23,6 +23,11 @@ void RadiosityLab::gui() {
         ImGui::TextWrapped("%s", message_.c_str());
         return;
     }
+    // The shell lays the panel out before draw() (which takes the solver's snapshot) and,
+    // drawing on change only, gives a run one more frame after it ends: without this the
+    // panel kept the last-but-one snapshot ("iterations 303, residual 7.5e-2" after a run that
+    // ended at 1198 steps, 1e-3) until the mouse moved. CPU only: colours and counters.
+    updateColours();
     const rad::FormFactors& ff = *model_->ff;
     ImGui::TextWrapped("%s", tr(model_->scene.name.c_str()));
     if (!message_.empty()) ImGui::TextWrapped(tr("note: %s"), message_.c_str());
@@ -85,10 +90,15 @@ void RadiosityLab::gui() {
         // (docs/bench/radiosity.md, "Lab 08 defaults": block faces 10-30% off at 0.31 m in the
         // Cornell box, ~1-3% at 0.10 m).
         float shooter = float(s.shooterEdge);
-        // The label above a full-width slider: beside it, a longer language ran past the edge.
-        ImGui::TextUnformatted(wb::tr("shooting patch, m"));
-        ImGui::SetNextItemWidth(-FLT_MIN);
-        ImGui::SliderFloat("##shooter", &shooter, 0.0f, 1.0f, "%.2f");
+        // The longest slider label of the panel: ImGui's default item width (65% of the
+        // panel) left it 4 px past the edge on a 1280x800 screen at UI scale 1.5 (shell's
+        // --check-panel screens). The slider takes what the label leaves, in any language.
+        const char* shooterLabel = wb::tr("shooting patch, m");
+        ImGui::SetNextItemWidth(std::min(ImGui::CalcItemWidth(),
+                                         ImGui::GetContentRegionAvail().x -
+                                             ImGui::CalcTextSize(shooterLabel).x -
+                                             ImGui::GetStyle().ItemInnerSpacing.x));
+        ImGui::SliderFloat(shooterLabel, &shooter, 0.0f, 1.0f, "%.2f");
         if (ImGui::IsItemDeactivatedAfterEdit()) {
             shooterOption_ = double(shooter);
             s.shooterEdge = double(shooter);

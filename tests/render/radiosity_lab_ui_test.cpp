@@ -60,9 +60,14 @@ TEST_CASE("lab 08: a headless render is solved unless --steps 0 says otherwise",
 
 // Issue 19 item 9: the white back wall read mustard (184,154,89) with a fixed exposure and
 // no white balance. With the light's white balance and auto exposure it reads as a light,
-// near-neutral grey. Bounds: channels within 0.08 of each other (about 20 of 255 levels; the
-// red and green walls' bleeding tints its sides) and a mean above 0.55 (sRGB 140) — the
-// mustard wall fails both (spread 0.37).
+// near-neutral grey. Bounds: channels within 0.10 of each other and a mean above 0.55 (sRGB
+// 140) — the mustard wall fails both (spread 0.37). Where 0.10 comes from: the converged
+// answer is not neutral, the white paint reflects less blue and every bounce compounds it.
+// Cycles' back wall (docs/bench/radiosity.md, B = 0.1695, 0.1121, 0.0315 under the light's
+// 17.0, 11.8, 4.0), white-balanced and sRGB-encoded at this exposure, reads 0.823 0.805
+// 0.740: spread 0.083. The merged lab (lab08phys's mesh, 0.1 m groups) reads 0.823 0.804
+// 0.740, the reference to 0.001; lab08ui alone was under 0.08 only by being further from
+// it. 0.10 = the reference's 0.083 + ~4 levels for the test's coarse 0.1 m mesh.
 TEST_CASE("lab 08: the white back wall displays white, not mustard", "[gl]") {
     auto lab = smallCornell();
     wb::test::renderLab(*lab, kW, kH);
@@ -78,7 +83,7 @@ TEST_CASE("lab 08: the white back wall displays white, not mustard", "[gl]") {
     REQUIRE(n > 0);
     const glm::vec3 mean = sum / float(n);
     INFO("back wall mean sRGB " << mean.r << " " << mean.g << " " << mean.b);
-    CHECK(std::max({mean.r, mean.g, mean.b}) - std::min({mean.r, mean.g, mean.b}) < 0.08f);
+    CHECK(std::max({mean.r, mean.g, mean.b}) - std::min({mean.r, mean.g, mean.b}) < 0.10f);
     CHECK((mean.r + mean.g + mean.b) / 3.0f > 0.55f);
 }
 
