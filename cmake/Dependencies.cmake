@@ -13,6 +13,9 @@ pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 find_library(GLU_LIBRARY GLU REQUIRED)
 # libstb-dev ships stb as a shared library (libstb.so: stb_image, stb_image_write, stb_truetype).
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# The window path reads key presses from X itself (labs/common/x_keyboard.h, issue 17).
+pkg_check_modules(X11 REQUIRED IMPORTED_TARGET x11)
+pkg_check_modules(XKBCOMMON REQUIRED IMPORTED_TARGET xkbcommon)
 
 # Dear ImGui: Debian ships libimgui.a and headers; the GLUT and OpenGL2 backends
 # come as sources in the package's doc folder and are compiled here.

@@ -9,6 +9,7 @@ pkgs=(
   libosmesa6-dev libglu1-mesa-dev libstb-dev libtinyobjloader-dev libtbb-dev
   libcli11-dev fonts-dejavu-core libeigen3-dev
   xvfb xauth imagemagick dpkg-dev
+  gettext libx11-dev libxkbcommon-dev x11-xkb-utils xdotool
 )
 # Extra packages asked for by the caller (e.g. CI wants clang for the fuzzers; the bench
 # plots' scripts/plot/plot.sh asks for gnuplot-nox, scripts/bench/radiosity_reference.sh for

@@ -17,18 +17,18 @@ namespace {
 
 std::string sizeText(std::size_t bytes) {
     if (bytes >= (std::size_t(1) << 20) && bytes % (std::size_t(1) << 20) == 0)
-        return std::to_string(bytes >> 20) + " MB";
-    return std::to_string(bytes) + " bytes";
+        return trf("%zu MB", bytes >> 20);
+    return trf("%zu bytes", bytes);
 }
 
 // Why `st` is not a regular file, or nullptr.
 const char* notRegular(const struct stat& st) {
     if (S_ISREG(st.st_mode)) return nullptr;
-    if (S_ISDIR(st.st_mode)) return "is a directory, not a file";
-    if (S_ISFIFO(st.st_mode)) return "is a FIFO (named pipe), not a regular file";
-    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "is a device, not a regular file";
-    if (S_ISSOCK(st.st_mode)) return "is a socket, not a regular file";
-    return "is not a regular file";
+    if (S_ISDIR(st.st_mode)) return tr("is a directory, not a file");
+    if (S_ISFIFO(st.st_mode)) return tr("is a FIFO (named pipe), not a regular file");
+    if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return tr("is a device, not a regular file");
+    if (S_ISSOCK(st.st_mode)) return tr("is a socket, not a regular file");
+    return tr("is not a regular file");
 }
 
 // Closes the descriptor on every path out of readRegularFile.
@@ -48,13 +48,13 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     // sequences or newlines (issue 20 point 16).
     const std::string shown = escapeForMessage(path, 4096);
     if (path.find('\0') != std::string::npos) {
-        error = escapeForMessage(path, 200) + ": the path contains a NUL byte";
+        error = escapeForMessage(path, 200) + ": " + tr("the path contains a NUL byte");
         return false;
     }
     // 1. stat first: a FIFO is refused before open() could block on it.
     struct stat st {};
     if (::stat(path.c_str(), &st) != 0) {
-        error = shown + ": cannot open the file (" + std::strerror(errno) + ")";
+        error = shown + ": " + trf("cannot open the file (%s)", std::strerror(errno));
         return false;
     }
     if (const char* why = notRegular(st)) {
@@ -65,11 +65,11 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     Fd f;
     f.fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (f.fd < 0) {
-        error = shown + ": cannot open the file (" + std::strerror(errno) + ")";
+        error = shown + ": " + trf("cannot open the file (%s)", std::strerror(errno));
         return false;
     }
     if (::fstat(f.fd, &st) != 0) {
-        error = shown + ": cannot stat the file (" + std::strerror(errno) + ")";
+        error = shown + ": " + trf("cannot stat the file (%s)", std::strerror(errno));
         return false;
     }
     if (const char* why = notRegular(st)) {
@@ -77,7 +77,8 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
         return false;
     }
     if (st.st_size < 0 || std::size_t(st.st_size) > maxBytes) {
-        error = shown + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
+        error = shown + ": " +
+                trf("file larger than %s (the limit for this file)", sizeText(maxBytes).c_str());
         return false;
     }
     // 3. Read at most maxBytes + 1: a file that grows while read is still caught. Once
@@ -91,7 +92,7 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
             const ssize_t n = ::read(f.fd, dst, cap);
             if (n >= 0) return n;
             if (errno == EINTR) continue;
-            error = shown + ": read error (" + std::strerror(errno) + ")";
+            error = shown + ": " + trf("read error (%s)", std::strerror(errno));
             out.clear();
             return -1;
         }
@@ -115,7 +116,8 @@ bool readRegularFile(const std::string& path, std::size_t maxBytes, std::string&
     }
     out.resize(have);
     if (have > maxBytes) {
-        error = shown + ": file larger than " + sizeText(maxBytes) + " (the limit for this file)";
+        error = shown + ": " +
+                trf("file larger than %s (the limit for this file)", sizeText(maxBytes).c_str());
         out.clear();
         return false;
     }

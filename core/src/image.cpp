@@ -2,6 +2,7 @@
 
 #include "core/file_read.h"
 
+#include "core/i18n.h"
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -48,8 +49,8 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
     };
     if (img.width <= 0 || img.height <= 0 || img.channels < 1 || img.channels > 4 ||
         img.data.size() != size_t(img.width) * size_t(img.height) * size_t(img.channels))
-        return fail("refusing to write an empty or inconsistent image");
-    if (path.empty()) return fail("empty file name");
+        return fail(tr("refusing to write an empty or inconsistent image"));
+    if (path.empty()) return fail(tr("empty file name"));
 
     // 1. Encode in memory: stbi_write_png ignores fwrite's result (a full disk or a
     //    read-only /proc file "succeeds"), so the bytes are written below, every call checked.
@@ -61,7 +62,7 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
             out->insert(out->end(), p, p + size);
         },
         &png, img.width, img.height, img.channels, img.data.data(), img.width * img.channels);
-    if (!encoded || png.empty()) return fail("cannot encode PNG");
+    if (!encoded || png.empty()) return fail(tr("cannot encode PNG"));
 
     // 2. One rule for every output (core/file_read.h, issue 20 points 1 and 11): a FIFO,
     //    device, socket or directory is refused before anything is opened; a symlink is
@@ -90,7 +91,7 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
     std::vector<char> name(tmp.begin(), tmp.end());
     name.push_back('\0');
     const int fd = ::mkstemp(name.data());
-    if (fd < 0) return fail(sysError("cannot create a temporary file in " + dir));
+    if (fd < 0) return fail(sysError(trf("cannot create a temporary file in %s", dir.c_str())));
     tmp = name.data();
     auto abandon = [&](const std::string& msg) {
         const int savedErrno = errno;
@@ -108,20 +109,20 @@ bool writePng(const std::string& path, const Image& img, std::string* error) {
         ::umask(mask);
         mode = 0666 & ~mask;
     }
-    if (::fchmod(fd, mode) != 0) return abandon("cannot set the mode of " + tmp);
-    if (!writeAll(fd, png)) return abandon("write failed");
-    if (::fsync(fd) != 0) return abandon("write failed on flush");
+    if (::fchmod(fd, mode) != 0) return abandon(trf("cannot set the mode of %s", tmp.c_str()));
+    if (!writeAll(fd, png)) return abandon(tr("write failed"));
+    if (::fsync(fd) != 0) return abandon(tr("write failed on flush"));
     if (::close(fd) != 0) {
         const int savedErrno = errno;
         ::unlink(tmp.c_str());
         errno = savedErrno;
-        return fail(sysError("write failed on close"));
+        return fail(sysError(tr("write failed on close")));
     }
     if (::rename(tmp.c_str(), target.c_str()) != 0) {
         const int savedErrno = errno;
         ::unlink(tmp.c_str());
         errno = savedErrno;
-        return fail(sysError("cannot rename " + tmp + " to the real name"));
+        return fail(sysError(trf("cannot rename %s to the real name", tmp.c_str())));
     }
     return true;
 }
@@ -138,21 +139,19 @@ bool readImage(const std::string& path, Image& img, int channels, std::string* e
         return false;
     }
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) { // stb takes an int length
-        if (error) *error = path + ": file too large for the image reader";
+        if (error) *error = path + ": " + tr("file too large for the image reader");
         return false;
     }
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int len = int(bytes.size());
     int w = 0, h = 0, c = 0;
     if (stbi_info_from_memory(data, len, &w, &h, &c) && (long long)w * h > kMaxPixels) {
-        if (error)
-            *error = path + ": image " + std::to_string(w) + "x" + std::to_string(h) +
-                     " larger than 16384x16384 pixels";
+        if (error) *error = path + ": " + trf("image %dx%d larger than 16384x16384 pixels", w, h);
         return false;
     }
     unsigned char* pixels = stbi_load_from_memory(data, len, &w, &h, &c, channels);
     if (!pixels) {
-        if (error) *error = path + ": cannot read image (" + stbi_failure_reason() + ")";
+        if (error) *error = path + ": " + trf("cannot read image (%s)", stbi_failure_reason());
         return false;
     }
     int outC = channels ? channels : c;

@@ -7,6 +7,8 @@
 #include "core/i18n.h"
 #include "exercises.h"
 
+#include "core/i18n.h"
+
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
 
@@ -141,15 +143,15 @@ class AffineLab : public Lab {
                 exDiff_ = std::max(exDiff_, std::abs(exComposite_[c][r] - exClosed_[c][r]));
     }
 
-    std::string title() const override { return "Lab 01 - affine maps"; }
+    std::string title() const override { return tr("Lab 01 - affine maps"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "mirror image in the line / plane"},
-                {"2", "shadow from a light at infinity along l"},
-                {"3", "shadow from a point light S"},
-                {"v", "2D view / 3D view"},
-                {"r", "new random line through K, L (next seed)"},
-                {"Left Right", "turn l (mode 2) / move S (mode 3)"},
-                {"Up Down", "move S (mode 3) / tilt l (3D, mode 2)"},
+        return {{"1", tr("mirror image in the line / plane")},
+                {"2", tr("shadow from a light at infinity along l")},
+                {"3", tr("shadow from a point light S")},
+                {"v", tr("2D view / 3D view")},
+                {"r", tr("new random line through K, L (next seed)")},
+                {tr("Left Right"), tr("turn l (mode 2) / move S (mode 3)")},
+                {tr("Up Down"), tr("move S (mode 3) / tilt l (3D, mode 2)")},
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
@@ -222,29 +224,30 @@ class AffineLab : public Lab {
         AffineState& s = *s_;
         ex_.gui();
         int mode = int(s.mode);
-        ImGui::RadioButton("1 mirror image", &mode, 1);
-        ImGui::RadioButton("2 shadow, light at infinity along l", &mode, 2);
-        ImGui::RadioButton("3 shadow, point light S", &mode, 3);
+        ImGui::RadioButton(tr("1 mirror image"), &mode, 1);
+        ImGui::RadioButton(tr("2 shadow, light at infinity along l"), &mode, 2);
+        ImGui::RadioButton(tr("3 shadow, point light S"), &mode, 3);
         s.mode = AffineMode(mode);
-        ImGui::Checkbox("3D view (v)", &s.view3d);
+        ImGui::Checkbox(tr("3D view (v)"), &s.view3d);
         if (!s.view3d) {
             int seed = int(s.seed);
-            if (ImGui::InputInt("seed (r)", &seed) && seed >= 0) reseed(s, unsigned(seed));
+            if (ImGui::InputInt(tr("seed (r)"), &seed) && seed >= 0) reseed(s, unsigned(seed));
             ImGui::TextWrapped("K = (%.3f, %.3f)  L = (%.3f, %.3f)", s.k.x, s.k.y, s.l.x, s.l.y);
             const Line2 line = affineLine(s);
-            ImGui::TextWrapped("line: %.4f x + %.4f y + %.4f = 0", line.a, line.b, line.c);
+            ImGui::TextWrapped(tr("line: %.4f x + %.4f y + %.4f = 0"), line.a, line.b, line.c);
             float angle = float(s.lightAngle);
-            if (ImGui::SliderFloat("angle of l (deg)", &angle, -85.f, 85.f)) s.lightAngle = angle;
+            if (ImGui::SliderFloat(tr("angle of l (deg)"), &angle, -85.f, 85.f))
+                s.lightAngle = angle;
             const glm::dvec2 l = affineLightDir(s);
             ImGui::Text("l = (%.3f, %.3f)", l.x, l.y);
             double sxy[2] = {s.light.x, s.light.y};
             if (ImGui::InputScalarN("S", ImGuiDataType_Double, sxy, 2)) s.light = {sxy[0], sxy[1]};
             if (kHaveReference) {
                 const glm::dmat3 m = affineMatrix2d(s);
-                ImGui::TextWrapped("M (3x3), applied as M [P1 ... P%zu], then / w:",
+                ImGui::TextWrapped(tr("M (3x3), applied as M [P1 ... P%zu], then / w:"),
                                    affinePolygon().size());
                 if (s.mode == AffineMode::ShadowPoint)
-                    ImGui::TextWrapped("(homogeneous: any non-zero multiple is the same map)");
+                    ImGui::TextWrapped(tr("(homogeneous: any non-zero multiple is the same map)"));
                 matrix(glm::value_ptr(m), 3);
             }
             if (ex_.on()) {
@@ -253,11 +256,11 @@ class AffineLab : public Lab {
                                    mine ? tr("your M:") : tr("your M: none (not done or failing)"));
                 if (mine) matrix(glm::value_ptr(*mine), 3);
             }
-            ImGui::TextWrapped("vertices at infinity: %zu, behind the light: %zu", lastAtInfinity_,
-                               lastBehind_);
+            ImGui::TextWrapped(tr("vertices at infinity: %zu, behind the light: %zu"),
+                               lastAtInfinity_, lastBehind_);
         } else {
             double pl[4] = {s.plane.n.x, s.plane.n.y, s.plane.n.z, s.plane.d};
-            if (ImGui::InputScalarN("plane A B C D", ImGuiDataType_Double, pl, 4) &&
+            if (ImGui::InputScalarN(tr("plane A B C D"), ImGuiDataType_Double, pl, 4) &&
                 (pl[0] != 0 || pl[1] != 0 || pl[2] != 0))
                 s.plane = {{pl[0], pl[1], pl[2]}, pl[3]};
             double sl[3] = {s.light3.x, s.light3.y, s.light3.z};
@@ -268,17 +271,17 @@ class AffineLab : public Lab {
                 (ld[0] != 0 || ld[1] != 0 || ld[2] != 0))
                 s.lightDir3 = {ld[0], ld[1], ld[2]};
             const glm::dmat4 m = affineMatrix3d(s);
-            ImGui::TextWrapped("M (4x4), given to glMultMatrixd:");
+            ImGui::TextWrapped(tr("M (4x4), given to glMultMatrixd:"));
             matrix(glm::value_ptr(m), 4);
         }
         if (!kHaveReference) return;
         ImGui::Separator();
-        ImGui::TextWrapped("Exercise 1.1: mirror in 3x - 2y + 1 = 0");
-        ImGui::TextWrapped("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):");
+        ImGui::TextWrapped(tr("Exercise 1.1: mirror in 3x - 2y + 1 = 0"));
+        ImGui::TextWrapped(tr("(1) T(0,1/2) R(phi) Mx R(-phi) T(0,-1/2), phi = atan(3/2):"));
         matrix(glm::value_ptr(exComposite_), 3);
-        ImGui::TextWrapped("(2) closed form I - 2 n (n, .)/(n, n):");
+        ImGui::TextWrapped(tr("(2) closed form I - 2 n (n, .)/(n, n):"));
         matrix(glm::value_ptr(exClosed_), 3);
-        ImGui::TextWrapped("max |(1) - (2)| = %.3g", exDiff_);
+        ImGui::TextWrapped(tr("max |(1) - (2)| = %.3g"), exDiff_);
     }
 
     // A matrix in the panel's monospaced font, so its columns line up.

@@ -5,6 +5,9 @@
 #include "core/i18n.h"
 #include "exercises.h"
 
+#include "common/panel.h"
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -19,34 +22,34 @@ namespace wb {
 const char* comboName(int combo) {
     switch (combo) {
     case 1:
-        return "1: specular material + specular light";
+        return N_("1: specular material + specular light");
     case 2:
-        return "2: specular material + diffuse light";
+        return N_("2: specular material + diffuse light");
     case 3:
-        return "3: diffuse material + specular light";
+        return N_("3: diffuse material + specular light");
     default:
-        return "4: diffuse material + diffuse light";
+        return N_("4: diffuse material + diffuse light");
     }
 }
 
 const char* comboLookFor(int combo) {
     switch (combo) {
     case 1:
-        return "Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
-               "so elsewhere each cube shows its ambient term alone. The left cube's front "
-               "face turns towards the half-vector as a whole; the right cube's corner "
-               "normals catch it only faintly, near one corner.";
+        return N_("Look for the grey-white specular reflection: the light has only GL_SPECULAR, "
+                  "so elsewhere each cube shows its ambient term alone. The left cube's front "
+                  "face turns towards the half-vector as a whole; the right cube's corner "
+                  "normals catch it only faintly, near one corner.");
     case 2:
-        return "Look for faces shaded by their angle to the light, and for the missing "
-               "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
-               "its dark green diffuse part (0.2) shows.";
+        return N_("Look for faces shaded by their angle to the light, and for the missing "
+                  "highlight: the material is shiny, but the light has no GL_SPECULAR, so only "
+                  "its dark green diffuse part (0.2) shows.");
     case 3:
-        return "Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
-               "light with only GL_SPECULAR reflects none of it; every face shows the same "
-               "ambient colour.";
+        return N_("Look for flat, unlit silhouettes: a matte material (no GL_SPECULAR) under a "
+                  "light with only GL_SPECULAR reflects none of it; every face shows the same "
+                  "ambient colour.");
     default:
-        return "Look for bright green faces turned to the light and darker ones turned away: "
-               "matte material, diffuse light, Lambert's cosine and no highlight anywhere.";
+        return N_("Look for bright green faces turned to the light and darker ones turned away: "
+                  "matte material, diffuse light, Lambert's cosine and no highlight anywhere.");
     }
 }
 
@@ -237,26 +240,26 @@ class LightingLab : public Lab {
   public:
     // 'e' is emission here, so the exercises are on 'E'.
     explicit LightingLab(LightingState* s) : s_(s ? s : &own_), ex_(wbExercises_lab02(), 'E') {}
-    std::string title() const override { return "Lab 02 - Phong lighting"; }
+    std::string title() const override { return tr("Lab 02 - Phong lighting"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "specular material + specular light"},
-                {"2", "specular material + diffuse light"},
-                {"3", "diffuse material + specular light"},
-                {"4", "diffuse material + diffuse light"},
-                {"5", "all four combinations side by side (2x2)"},
-                {"a", "global ambient on/off"},
-                {"v", "local / infinite viewer"},
-                {"e", "emission on/off"},
-                {"s", "smooth / flat shading"},
-                {"g", "vertex (Gouraud) / per-fragment GLSL Phong"},
-                {"[ ]", "face grid N down / up"},
-                {"w", "positional / directional light"},
-                {"t", "spot on/off"},
-                {"k", "attenuation on/off"},
-                {"m", "light marker on/off"},
-                {"b", "blocker between light and cube"},
-                {"arrows PgUp PgDn", "move the light"},
-                {", .", "spin the cubes"},
+        return {{"1", tr("specular material + specular light")},
+                {"2", tr("specular material + diffuse light")},
+                {"3", tr("diffuse material + specular light")},
+                {"4", tr("diffuse material + diffuse light")},
+                {"5", tr("all four combinations side by side (2x2)")},
+                {"a", tr("global ambient on/off")},
+                {"v", tr("local / infinite viewer")},
+                {"e", tr("emission on/off")},
+                {"s", tr("smooth / flat shading")},
+                {"g", tr("vertex (Gouraud) / per-fragment GLSL Phong")},
+                {"[ ]", tr("face grid N down / up")},
+                {"w", tr("positional / directional light")},
+                {"t", tr("spot on/off")},
+                {"k", tr("attenuation on/off")},
+                {"m", tr("light marker on/off")},
+                {"b", tr("blocker between light and cube")},
+                {tr("arrows PgUp PgDn"), tr("move the light")},
+                {", .", tr("spin the cubes")},
                 ex_.keyHelp()};
     }
     bool busy() const override { return ex_.busy(); }
@@ -580,8 +583,8 @@ bool LightingLab::key(int k) {
 void LightingLab::gui() {
     LightingState& s = *s_;
     ex_.gui();
-    ImGui::TextWrapped("Left cube: normals perpendicular to the faces.");
-    ImGui::TextWrapped("Right cube: normals from the cube centre through the vertex.");
+    ImGui::TextWrapped(tr("Left cube: normals perpendicular to the faces."));
+    ImGui::TextWrapped(tr("Right cube: normals from the cube centre through the vertex."));
     ImGui::Separator();
     for (int c = 1; c <= 4; ++c) {
         if (c > 1) ImGui::SameLine();
@@ -591,59 +594,67 @@ void LightingLab::gui() {
     ImGui::SameLine();
     ImGui::Checkbox("2x2 (5)", &s.compareAll);
     if (s.compareAll) {
-        ImGui::TextWrapped("All four side by side, numbered as the keys: 1 2 on top, 3 4 below.");
+        ImGui::TextWrapped(
+            tr("All four side by side, numbered as the keys: 1 2 on top, 3 4 below."));
         for (int c = 1; c <= 4; ++c)
-            ImGui::TextWrapped("%s", comboName(c));
+            ImGui::TextWrapped("%s", tr(comboName(c)));
     } else {
-        ImGui::TextWrapped("%s", comboName(s.combo));
-        ImGui::TextWrapped("%s", comboLookFor(s.combo));
+        ImGui::TextWrapped("%s", tr(comboName(s.combo)));
+        ImGui::TextWrapped("%s", tr(comboLookFor(s.combo)));
     }
-    ImGui::TextWrapped("A specular light only feeds GL_SPECULAR reflection and a diffuse light "
-                       "only GL_DIFFUSE.");
+    ImGui::TextWrapped(tr("A specular light only feeds GL_SPECULAR reflection and a diffuse light "
+                          "only GL_DIFFUSE."));
     ImGui::Separator();
-    ImGui::Checkbox("global ambient (a)", &s.globalAmbientOn);
+    ImGui::Checkbox(tr("global ambient (a)"), &s.globalAmbientOn);
     ImGui::SameLine();
     ImGui::ColorEdit3("##ambient", &s.globalAmbient.x, ImGuiColorEditFlags_NoInputs);
-    ImGui::Checkbox("local viewer (v)", &s.localViewer);
-    ImGui::Checkbox("emission (e)", &s.emissionOn);
+    ImGui::Checkbox(tr("local viewer (v)"), &s.localViewer);
+    ImGui::Checkbox(tr("emission (e)"), &s.emissionOn);
     ImGui::SameLine();
     ImGui::ColorEdit3("##emission", &s.emission.x, ImGuiColorEditFlags_NoInputs);
-    ImGui::Checkbox("smooth shading (s)", &s.smooth);
+    ImGui::Checkbox(tr("smooth shading (s)"), &s.smooth);
     bool glsl = s.shading == FaceShading::PhongGlsl;
-    if (ImGui::Checkbox("per-fragment GLSL Phong (g)", &glsl))
+    if (ImGui::Checkbox(tr("per-fragment GLSL Phong (g)"), &glsl))
         s.shading = glsl ? FaceShading::PhongGlsl : FaceShading::Gouraud;
-    if (!programError_.empty()) ImGui::TextWrapped("shader: %s", programError_.c_str());
-    ImGui::SliderInt("face grid N ([ ])", &s.subdivisions, 1, 64);
+    if (!programError_.empty()) ImGui::TextWrapped(tr("shader: %s"), programError_.c_str());
+    ImGui::SliderInt(tr("face grid N ([ ])"), &s.subdivisions, 1, 64);
     ImGui::Separator();
     bool positional = s.lightPos.w != 0.0f;
-    if (ImGui::Checkbox("positional light (w)", &positional))
+    if (ImGui::Checkbox(tr("positional light (w)"), &positional))
         s.lightPos.w = positional ? 1.0f : 0.0f;
-    ImGui::DragFloat3("light position", &s.lightPos.x, 0.05f);
-    ImGui::ColorEdit3("light colour", &s.lightColor.x);
-    ImGui::DragFloat3("kc kl kq (k)", &s.attenuation.x, 0.01f, 0.0f, 10.0f);
-    ImGui::Checkbox("spot (t)", &s.spotOn);
-    ImGui::DragFloat3("spot aims at", &s.spotTarget.x, 0.05f);
-    ImGui::SliderFloat("spot cutoff", &s.spotCutoff, 0.0f, 90.0f);
-    ImGui::SliderFloat("spot exponent", &s.spotExponent, 0.0f, 128.0f);
-    ImGui::Checkbox("light marker (m)", &s.showMarker);
-    ImGui::SameLine();
-    ImGui::Checkbox("blocker (b)", &s.showBlocker);
-    ImGui::SliderFloat("camera tilt", &s.tilt, -90.0f, 90.0f);
+    ImGui::DragFloat3(tr("light position"), &s.lightPos.x, 0.05f);
+    ImGui::ColorEdit3(tr("light colour"), &s.lightColor.x);
+    ImGui::DragFloat3(tr("kc kl kq (k)"), &s.attenuation.x, 0.01f, 0.0f, 10.0f);
+    ImGui::Checkbox(tr("spot (t)"), &s.spotOn);
+    ImGui::DragFloat3(tr("spot aims at"), &s.spotTarget.x, 0.05f);
+    ImGui::SliderFloat(tr("spot cutoff"), &s.spotCutoff, 0.0f, 90.0f);
+    ImGui::SliderFloat(tr("spot exponent"), &s.spotExponent, 0.0f, 128.0f);
+    ImGui::Checkbox(tr("light marker (m)"), &s.showMarker);
+    sameLineIfFits(tr("blocker (b)"));
+    ImGui::Checkbox(tr("blocker (b)"), &s.showBlocker);
+    ImGui::SliderFloat(tr("camera tilt"), &s.tilt, -90.0f, 90.0f);
     ImGui::Separator();
-    ImGui::TextWrapped("The light itself is invisible: hide the marker (m) and nothing shows where "
-                       "it is. The blocker (b) casts no shadow: GL lighting never asks whether "
-                       "anything lies between a vertex and the light.");
-    ImGui::TextWrapped("Highlight inside a face: with 4 vertices Gouraud only interpolates the "
-                       "vertex colours, so the brightest point is always a corner; split the face "
-                       "(N > 1) or use GLSL Phong on the right cube.");
-    ImGui::TextWrapped("Infinite viewer: every vertex sees the eye along +z, so h is the same for "
-                       "a whole flat face; the highlight needs normals that vary across the face "
-                       "(the right cube, N > 1).");
-    ImGui::TextWrapped("Local viewer: the direction to the eye changes across the face, so h "
-                       "changes too and even the flat-normal left cube can show a highlight inside "
-                       "a large subdivided face.");
-    if (s.spotOn && s.lightPos.w == 0.0f)
-        ImGui::TextColored(ImVec4(1, 0.6f, 0.3f, 1), "a directional light has no spot cone");
+    ImGui::TextWrapped(
+        tr("The light itself is invisible: hide the marker (m) and nothing shows where "
+           "it is. The blocker (b) casts no shadow: GL lighting never asks whether "
+           "anything lies between a vertex and the light."));
+    ImGui::TextWrapped(
+        tr("Highlight inside a face: with 4 vertices Gouraud only interpolates the "
+           "vertex colours, so the brightest point is always a corner; split the face "
+           "(N > 1) or use GLSL Phong on the right cube."));
+    ImGui::TextWrapped(
+        tr("Infinite viewer: every vertex sees the eye along +z, so h is the same for "
+           "a whole flat face; the highlight needs normals that vary across the face "
+           "(the right cube, N > 1)."));
+    ImGui::TextWrapped(
+        tr("Local viewer: the direction to the eye changes across the face, so h "
+           "changes too and even the flat-normal left cube can show a highlight inside "
+           "a large subdivided face."));
+    if (s.spotOn && s.lightPos.w == 0.0f) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.6f, 0.3f, 1));
+        ImGui::TextWrapped("%s", tr("a directional light has no spot cone"));
+        ImGui::PopStyleColor();
+    }
 }
 
 } // namespace

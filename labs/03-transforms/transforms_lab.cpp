@@ -8,6 +8,9 @@
 #include "common/gl_util.h"
 #include "core/teapot.h"
 
+#include "common/panel.h"
+#include "core/i18n.h"
+
 #include <glm/glm.hpp>
 #include <imgui.h>
 
@@ -334,18 +337,18 @@ class TransformsLab : public Lab {
     bool busy() const override { return ex_.busy(); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
-    std::string title() const override { return "Lab 03 - transforms and projections"; }
+    std::string title() const override { return tr("Lab 03 - transforms and projections"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"1 2 3", "glOrtho / gluPerspective / glFrustum"},
-                {"z x", "camera in / out (gluLookAt)"},
-                {"n N", "near plane -/+ 0.5"},
-                {"b B", "far plane -/+ 2"},
-                {"r", "new random placement"},
-                {"c", "classroom / single table"},
-                {"m", "mirror image in the blackboard wall"},
-                {"w", "glFrontFace(GL_CW) for the mirror"},
-                {"l", "mirrored light position"},
-                {"t", "top view onto the wall"},
+        return {{"1 2 3", tr("glOrtho / gluPerspective / glFrustum")},
+                {"z x", tr("camera in / out (gluLookAt)")},
+                {"n N", tr("near plane -/+ 0.5")},
+                {"b B", tr("far plane -/+ 2")},
+                {"r", tr("new random placement")},
+                {"c", tr("classroom / single table")},
+                {"m", tr("mirror image in the blackboard wall")},
+                {"w", tr("glFrontFace(GL_CW) for the mirror")},
+                {"l", tr("mirrored light position")},
+                {"t", tr("top view onto the wall")},
                 ex_.keyHelp()};
     }
     void init() override { placedSeed_ = s_->seed + 1; } // forces a placement on first draw
@@ -377,7 +380,8 @@ void TransformsLab::project(const View& view) {
         break;
     }
     case Projection::Perspective:
-        if (!exerciseProjection(ex_, std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear, s.zFar))
+        if (!exerciseProjection(ex_, std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear,
+                                s.zFar))
             gluPerspective(std::min(170.0, double(s.fovy) / zoom), aspect, s.zNear, s.zFar);
         break;
     case Projection::Frustum:
@@ -549,48 +553,50 @@ void TransformsLab::gui() {
     TransformsState& s = *s_;
     ex_.gui();
     int proj = int(s.projection);
-    ImGui::RadioButton("glOrtho (1)", &proj, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("gluPerspective (2)", &proj, 1);
-    ImGui::SameLine();
-    ImGui::RadioButton("glFrustum (3)", &proj, 2);
+    ImGui::RadioButton(tr("glOrtho (1)"), &proj, 0);
+    sameLineIfFits(tr("gluPerspective (2)"));
+    ImGui::RadioButton(tr("gluPerspective (2)"), &proj, 1);
+    sameLineIfFits(tr("glFrustum (3)"));
+    ImGui::RadioButton(tr("glFrustum (3)"), &proj, 2);
     s.projection = Projection(proj);
     switch (s.projection) {
     case Projection::Ortho:
-        ImGui::SliderFloat("half height", &s.orthoHalfHeight, 0.5f, 20.0f);
+        ImGui::SliderFloat(tr("half height"), &s.orthoHalfHeight, 0.5f, 20.0f);
         break;
     case Projection::Perspective:
-        ImGui::SliderFloat("fovy", &s.fovy, 5.0f, 150.0f);
+        ImGui::SliderFloat(tr("fovy"), &s.fovy, 5.0f, 150.0f);
         break;
     case Projection::Frustum:
-        ImGui::TextUnformatted("glFrustum left, right, bottom, top:");
+        ImGui::TextUnformatted(tr("glFrustum left, right, bottom, top:"));
         ImGui::SetNextItemWidth(-FLT_MIN);
         ImGui::DragFloat4("##frustum", s.frustum, 0.01f);
         break;
     }
-    ImGui::DragFloat("near (n N)", &s.zNear, 0.05f, 0.01f, s.zFar - 0.01f);
-    ImGui::DragFloat("far (b B)", &s.zFar, 0.25f, s.zNear + 0.01f, 200.0f);
-    ImGui::TextWrapped("Anything nearer than `near` or farther than `far` is clipped: raise near "
-                       "until the front tables are cut open, lower far until the board vanishes.");
+    ImGui::DragFloat(tr("near (n N)"), &s.zNear, 0.05f, 0.01f, s.zFar - 0.01f);
+    ImGui::DragFloat(tr("far (b B)"), &s.zFar, 0.25f, s.zNear + 0.01f, 200.0f);
+    ImGui::TextWrapped(
+        tr("Anything nearer than `near` or farther than `far` is clipped: raise near "
+           "until the front tables are cut open, lower far until the board vanishes."));
     ImGui::Separator();
     // Long labels sit above full-width sliders, so a narrow or scaled panel never cuts them.
-    ImGui::TextUnformatted("camera distance (z x), elevation:");
+    ImGui::TextUnformatted(tr("camera distance (z x), elevation:"));
     ImGui::SetNextItemWidth(-FLT_MIN);
-    ImGui::SliderFloat("##distance", &s.distance, 1.0f, 60.0f, "distance %.1f");
+    ImGui::SliderFloat("##distance", &s.distance, 1.0f, 60.0f, tr("distance %.1f"));
     ImGui::SetNextItemWidth(-FLT_MIN);
-    ImGui::SliderFloat("##elevation", &s.elevation, -89.0f, 89.0f, "elevation %.0f deg");
-    ImGui::Checkbox("top view (t)", &s.topView);
+    ImGui::SliderFloat("##elevation", &s.elevation, -89.0f, 89.0f, tr("elevation %.0f deg"));
+    ImGui::Checkbox(tr("top view (t)"), &s.topView);
     ImGui::Separator();
-    ImGui::Checkbox("classroom (c)", &s.classroom);
+    ImGui::Checkbox(tr("classroom (c)"), &s.classroom);
     int seed = int(s.seed);
-    if (ImGui::InputInt("seed (r)", &seed)) s.seed = unsigned(std::max(seed, 0));
-    ImGui::Checkbox("mirror in the blackboard wall (m)", &s.mirror);
-    ImGui::Checkbox("glFrontFace(GL_CW) in the mirror (w)", &s.mirrorFrontFace);
-    ImGui::Checkbox("mirrored light position (l)", &s.mirrorLight);
-    ImGui::TextWrapped("Mirror: glTranslatef(0,0,wall) glScalef(1,1,-1) glTranslatef(0,0,-wall). "
-                       "The flip reverses the winding, so front faces become clockwise; the light "
-                       "is re-sent under the same matrix so the mirrored room is lit from the "
-                       "mirrored side.");
+    if (ImGui::InputInt(tr("seed (r)"), &seed)) s.seed = unsigned(std::max(seed, 0));
+    ImGui::Checkbox(tr("mirror in the blackboard wall (m)"), &s.mirror);
+    ImGui::Checkbox(tr("glFrontFace(GL_CW) (w)"), &s.mirrorFrontFace); // under "mirror"
+    ImGui::Checkbox(tr("mirrored light position (l)"), &s.mirrorLight);
+    ImGui::TextWrapped(
+        tr("Mirror: glTranslatef(0,0,wall) glScalef(1,1,-1) glTranslatef(0,0,-wall). "
+           "The flip reverses the winding, so front faces become clockwise; the light "
+           "is re-sent under the same matrix so the mirrored room is lit from the "
+           "mirrored side."));
 }
 
 } // namespace

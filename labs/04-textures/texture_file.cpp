@@ -1,5 +1,6 @@
 #include "texture_file.h"
 
+#include "core/i18n.h"
 #include <stb_image.h>
 
 namespace wb {
@@ -34,13 +35,14 @@ bool loadTextureImage(const std::string& path, Image& out, std::string& message)
     }
     if (ok && (img.width < 1 || img.height < 1 || img.width > kMaxTextureSide ||
                img.height > kMaxTextureSide)) {
-        err = path + ": " + std::to_string(img.width) + "x" + std::to_string(img.height) +
-              " is not a usable texture size (1.." + std::to_string(kMaxTextureSide) + ")";
+        err = trf("%s: %dx%d is not a usable texture size (1..%d)", path.c_str(), img.width,
+                  img.height, kMaxTextureSide);
         ok = false;
     }
     if (!ok) {
         out = checkerboard(64, 64, 8);
-        message = (err.empty() ? path + ": cannot read" : err) + "; using a checkerboard instead";
+        message = err.empty() ? trf("%s: cannot read; using a checkerboard instead", path.c_str())
+                              : trf("%s; using a checkerboard instead", err.c_str());
         return false;
     }
     out = std::move(img);

@@ -12,6 +12,9 @@
 #include "environment.h"
 #include "texture_file.h"
 
+#include "common/panel.h"
+#include "core/i18n.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
@@ -92,25 +95,25 @@ class TexturesLab : public Lab {
     bool busy() const override { return ex_.busy(); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
-    std::string title() const override { return "Lab 04 - textures"; }
+    std::string title() const override { return tr("Lab 04 - textures"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"0", "overview: mirror object, textured sphere and torus"},
-                {"1", "flat textured object (wrap and filter show here)"},
-                {"2", "hand-made sphere"},
-                {"3", "hand-made torus"},
-                {"4", "mirror object: GL_SPHERE_MAP texgen"},
-                {"w", "GL_REPEAT / GL_CLAMP"},
-                {"f", "filter: nearest / linear / mipmaps"},
-                {"t", "texture: bricks / uv grid"},
-                {"5", "bump-mapped torus (GLSL, section 1.5.2)"},
-                {"k", "bump mapping on/off (smooth torus, same shader)"},
-                {"o", "mirror object: sphere / torus"},
-                {"b", "background room on/off"},
-                {"Left/Right/Up/Down", "spin the object"},
+        return {{"0", tr("overview: mirror object, textured sphere and torus")},
+                {"1", tr("flat textured object (wrap and filter show here)")},
+                {"2", tr("hand-made sphere")},
+                {"3", tr("hand-made torus")},
+                {"4", tr("mirror object: GL_SPHERE_MAP texgen")},
+                {"w", tr("GL_REPEAT / GL_CLAMP")},
+                {"f", tr("filter: nearest / linear / mipmaps")},
+                {"t", tr("texture: bricks / uv grid")},
+                {"5", tr("bump-mapped torus (GLSL, section 1.5.2)")},
+                {"k", tr("bump mapping on/off (smooth torus, same shader)")},
+                {"o", tr("mirror object: sphere / torus")},
+                {"b", tr("background room on/off")},
+                {tr("Left/Right/Up/Down"), tr("spin the object")},
                 ex_.keyHelp()};
     }
     std::vector<OptionHelp> options() const override {
-        return {{"texture", "FILE", "image for the flat object instead of bricks.png"}};
+        return {{"texture", tr("FILE"), tr("image for the flat object instead of bricks.png")}};
     }
     bool setOption(const std::string& name, const std::string& value, std::string& error) override {
         if (name != "texture") return Lab::setOption(name, value, error);
@@ -132,7 +135,7 @@ class TexturesLab : public Lab {
             Image img;
             std::string msg;
             if (!loadTextureImage(path, img, msg)) {
-                std::fprintf(stderr, "lab04: %s\n", msg.c_str());
+                std::fprintf(stderr, tr("lab04: %s\n"), msg.c_str());
                 s_->message += msg + "\n";
             }
             upload(textures_[i], img);
@@ -144,8 +147,8 @@ class TexturesLab : public Lab {
         std::string err;
         bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
         if (!bumpProgram_) {
-            std::fprintf(stderr, "lab04: %s\n", err.c_str());
-            s_->message += err + " (scene 5 falls back to the fixed-function torus)\n";
+            std::fprintf(stderr, tr("lab04: %s\n"), err.c_str());
+            s_->message += err + tr(" (scene 5 falls back to the fixed-function torus)") + "\n";
         }
         room_ = toGl(makeSphere(30.0, 64, 32));
     }
@@ -259,40 +262,48 @@ class TexturesLab : public Lab {
     void gui() override {
         ex_.gui();
         int scene = int(s_->scene);
-        ImGui::Text("Scene (0-5)");
-        ImGui::RadioButton("all", &scene, 0);
-        ImGui::SameLine();
-        ImGui::RadioButton("flat", &scene, 1);
-        ImGui::SameLine();
-        ImGui::RadioButton("sphere", &scene, 2);
-        ImGui::SameLine();
-        ImGui::RadioButton("torus", &scene, 3);
-        ImGui::SameLine();
-        ImGui::RadioButton("mirror", &scene, 4);
-        ImGui::SameLine();
-        ImGui::RadioButton("bump", &scene, 5);
+        ImGui::Text(tr("Scene (0-5)"));
+        ImGui::RadioButton(tr("all"), &scene, 0);
+        sameLineIfFits(tr("flat"));
+        ImGui::RadioButton(tr("flat"), &scene, 1);
+        sameLineIfFits(tr("sphere"));
+        ImGui::RadioButton(tr("sphere"), &scene, 2);
+        sameLineIfFits(tr("torus"));
+        ImGui::RadioButton(tr("torus"), &scene, 3);
+        sameLineIfFits(tr("mirror"));
+        ImGui::RadioButton(tr("mirror"), &scene, 4);
+        sameLineIfFits(tr("bump"));
+        ImGui::RadioButton(tr("bump"), &scene, 5);
         s_->scene = TextureScene(scene);
-        ImGui::Checkbox("GL_REPEAT (w; off = GL_CLAMP)", &s_->repeat);
+        ImGui::Checkbox(tr("GL_REPEAT (w; off = GL_CLAMP)"), &s_->repeat);
         int filter = int(s_->filter);
-        ImGui::Combo("filter (f)", &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
+        // Wide enough for its longest value whatever the label's language leaves it.
+        ImGui::SetNextItemWidth(
+            std::max(ImGui::CalcItemWidth(), ImGui::CalcTextSize("GL_LINEAR_MIPMAP_LINEAR").x +
+                                                 ImGui::GetFrameHeight() +
+                                                 2.0f * ImGui::GetStyle().FramePadding.x));
+        ImGui::Combo(tr("filter (f)"), &filter, "GL_NEAREST\0GL_LINEAR\0GL_LINEAR_MIPMAP_LINEAR\0");
         s_->filter = TextureFilter(filter);
-        ImGui::Combo("texture (t)", &s_->texture, "bricks\0uv grid\0");
+        // A Combo takes its items as one string of NUL-separated names: translated one by one.
+        const char* textures[] = {tr("bricks"), tr("uv grid")};
+        ImGui::Combo(tr("texture (t)"), &s_->texture, textures, 2);
         if (s_->scene == TextureScene::Overview)
             ImGui::TextWrapped("%s", s_->texture == 0
                                          ? wb::tr("overview: t swaps the textures of the sphere "
                                                   "(uv grid) and the torus (bricks)")
                                          : wb::tr("overview: t swaps the textures of the sphere "
                                                   "(bricks) and the torus (uv grid)"));
-        ImGui::Checkbox("mirror torus (o; off = sphere)", &s_->mirrorTorus);
-        ImGui::Checkbox("background room (b)", &s_->background);
-        ImGui::Checkbox("bump mapping (k)", &s_->bump);
+        ImGui::Checkbox(tr("mirror torus (o; off = sphere)"), &s_->mirrorTorus);
+        ImGui::Checkbox(tr("background room (b)"), &s_->background);
+        ImGui::Checkbox(tr("bump mapping (k)"), &s_->bump);
         float depth = float(s_->bumpDepth);
-        if (ImGui::SliderFloat("bump depth", &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
+        if (ImGui::SliderFloat(tr("bump depth"), &depth, 0.0f, 0.15f)) s_->bumpDepth = depth;
         float spin[2] = {float(s_->spinX), float(s_->spinY)};
-        if (ImGui::DragFloat2("spin x, y (arrows)", spin)) s_->spinX = spin[0], s_->spinY = spin[1];
-        ImGui::Text("sphere map rebuilt %d times (once per new view)", s_->sphereMapBuilds);
-        ImGui::TextWrapped("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
-                           "pole vertices take s at their slice's middle.");
+        if (ImGui::DragFloat2(tr("spin (arrows)"), spin)) s_->spinX = spin[0], s_->spinY = spin[1];
+        ImGui::TextWrapped(tr("sphere map rebuilt %d times (once per new view)"),
+                           s_->sphereMapBuilds);
+        ImGui::TextWrapped(tr("Sphere and torus: seam at s = 0/1 has twin vertices; the sphere's "
+                              "pole vertices take s at their slice's middle."));
         if (!s_->message.empty())
             ImGui::TextColored(ImVec4(1, 0.3f, 0.3f, 1), "%s", s_->message.c_str());
     }
@@ -378,8 +389,8 @@ class TexturesLab : public Lab {
         setLight();
         // Your sphere / torus (e), the reference's as a ghost wireframe; else the lab's.
         const bool mine = (&mesh == &sphere_ && drawExerciseMesh(ex_, false, 1.2, 0, 48, 24)) ||
-                          (&mesh == &torus_ && drawExerciseMesh(ex_, true, kBumpTorusMajor,
-                                                                kBumpTorusMinor, 64, 32));
+                          (&mesh == &torus_ &&
+                           drawExerciseMesh(ex_, true, kBumpTorusMajor, kBumpTorusMinor, 64, 32));
         if (!mine) drawMesh(mesh);
         glDisable(GL_LIGHTING);
     }

@@ -130,8 +130,9 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
     if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
     const glm::dmat4 g = unpack(got);
     if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
-        return Verdict::fail(tr("transposed: OpenGL reads m[column][row]; M[c][r] = (pi·L)delta_rc - "
-                                "L_r pi_c"));
+        return Verdict::fail(
+            tr("transposed: OpenGL reads m[column][row]; M[c][r] = (pi·L)delta_rc - "
+               "L_r pi_c"));
     bool zero = true;
     for (double v : got)
         zero = zero && v == 0;
@@ -212,10 +213,11 @@ Verdict ellipseCompare(const Values& in, const Values& /*expected*/, const Value
     // parameter angle (the affine image of a regular n-gon); any other spread, or a point
     // repeated, has less. 1e-9: the area's rounding.
     if (0.5 * area2 < areaMax * (1 - 1e-9) - 1e-12 * size * size)
-        return Verdict::fail(trf("the polygon covers %.9g of the %.9g the evenly spread %d points "
-                                 "cover: the points are not evenly spread in the angle, or one is "
-                                 "repeated (the step is 2pi/n, not 2pi/(n-1); radians, not degrees)",
-                                 0.5 * area2, areaMax, n));
+        return Verdict::fail(
+            trf("the polygon covers %.9g of the %.9g the evenly spread %d points "
+                "cover: the points are not evenly spread in the angle, or one is "
+                "repeated (the step is 2pi/n, not 2pi/(n-1); radians, not degrees)",
+                0.5 * area2, areaMax, n));
     return Verdict::pass();
 }
 

@@ -9,6 +9,8 @@
 #include "core/affine.h"
 #include "core/mesh.h"
 
+#include "core/i18n.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
@@ -95,16 +97,16 @@ class StencilLab : public Lab {
     bool busy() const override { return ex_.busy(); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
-    std::string title() const override { return "Lab 05 - stencil buffer"; }
+    std::string title() const override { return tr("Lab 05 - stencil buffer"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"s", "shadow on the stairs on/off"},
-                {"n", "naive shadow without stencil (leaks, double blending)"},
-                {"r", "rectangular mirror on/off"},
-                {"e", "elliptical mirror on/off"},
-                {"m", "show the raw stencil buffer (scene dimmed where 0)"},
-                {"Left/Right", "move the object along x"},
-                {"Up/Down", "move the object along z"},
-                {"PageUp/PageDown", "move the object up/down"},
+        return {{"s", tr("shadow on the stairs on/off")},
+                {"n", tr("naive shadow without stencil (leaks, double blending)")},
+                {"r", tr("rectangular mirror on/off")},
+                {"e", tr("elliptical mirror on/off")},
+                {"m", tr("show the raw stencil buffer (scene dimmed where 0)")},
+                {tr("Left/Right"), tr("move the object along x")},
+                {tr("Up/Down"), tr("move the object along z")},
+                {tr("PageUp/PageDown"), tr("move the object up/down")},
                 ex_.keyHelp()};
     }
 
@@ -204,25 +206,26 @@ class StencilLab : public Lab {
 
     void gui() override {
         ex_.gui();
-        ImGui::Checkbox("shadow (s)", &s_->shadow);
-        ImGui::Checkbox("naive shadow, no stencil (n)", &s_->naiveShadow);
-        ImGui::Checkbox("rectangular mirror (r)", &s_->rectMirror);
-        ImGui::Checkbox("elliptical mirror (e)", &s_->ellipseMirror);
-        ImGui::Checkbox("raw stencil buffer (m)", &s_->showMask);
+        ImGui::Checkbox(tr("shadow (s)"), &s_->shadow);
+        ImGui::Checkbox(tr("naive shadow, no stencil (n)"), &s_->naiveShadow);
+        ImGui::Checkbox(tr("rectangular mirror (r)"), &s_->rectMirror);
+        ImGui::Checkbox(tr("elliptical mirror (e)"), &s_->ellipseMirror);
+        ImGui::Checkbox(tr("raw stencil buffer (m)"), &s_->showMask);
         float p[3] = {float(s_->object.x), float(s_->object.y), float(s_->object.z)};
         // The label above its widget: beside a three-field drag it would not fit the panel.
-        ImGui::TextUnformatted("object x, y, z (arrows, PgUp/PgDn)");
+        ImGui::TextUnformatted(tr("object x, y, z (arrows, PgUp/PgDn)"));
         ImGui::SetNextItemWidth(-1.0f);
         if (ImGui::DragFloat3("##object", p, 0.02f)) {
             s_->object = glm::dvec3(p[0], p[1], p[2]);
             clampObject();
         }
-        ImGui::SliderInt("steps", &s_->steps, 1, 6);
-        ImGui::Text("shadow: %d clipped triangles", s_->shadowTriangles);
-        ImGui::TextWrapped("Stencil bits 0-4: receiver (3 floor, 4 wall, 5 stairs' side, 6+2i "
-                           "tread i, 7+2i riser i); +32 rectangular mirror, +64 elliptical "
-                           "mirror (mixed in red / cyan in the mask view); +128 where the shadow "
-                           "was blended (darker).");
+        ImGui::SliderInt(tr("steps"), &s_->steps, 1, 6);
+        ImGui::Text(tr("shadow: %d clipped triangles"), s_->shadowTriangles);
+        ImGui::TextWrapped(
+            tr("Stencil bits 0-4: receiver (3 floor, 4 wall, 5 stairs' side, 6+2i "
+               "tread i, 7+2i riser i); +32 rectangular mirror, +64 elliptical "
+               "mirror (mixed in red / cyan in the mask view); +128 where the shadow "
+               "was blended (darker)."));
     }
 
   private:
@@ -464,8 +467,8 @@ class StencilLab : public Lab {
             glClipPlane(GL_CLIP_PLANE0, behind); // in world coordinates: modelview is the camera
             glEnable(GL_CLIP_PLANE0);
             glPushMatrix();
-            glMultMatrixd(glm::value_ptr(
-                exerciseReflection(ex_, mirrorPlaneEq, mirrorPlane(mirrorPlaneEq))));
+            glMultMatrixd(
+                glm::value_ptr(exerciseReflection(ex_, mirrorPlaneEq, mirrorPlane(mirrorPlaneEq))));
             glFrontFace(GL_CW);
             drawScene();
             if (s_->shadow && !s_->naiveShadow) {
@@ -596,7 +599,8 @@ class StencilLab : public Lab {
     // plane casts nothing on it), drawn through shadowPoint(plane, light).
     void drawFlattened(const Plane& plane, const std::vector<Triangle>& caster) {
         glPushMatrix();
-        glMultMatrixd(glm::value_ptr(exerciseShadow(ex_, plane, kLight, shadowPoint(plane, kLight))));
+        glMultMatrixd(
+            glm::value_ptr(exerciseShadow(ex_, plane, kLight, shadowPoint(plane, kLight))));
         glBegin(GL_TRIANGLES);
         for (const Triangle& t : caster) {
             const std::vector<glm::dvec3> poly = clipToPositive(t, plane);

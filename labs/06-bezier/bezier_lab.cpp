@@ -6,6 +6,9 @@
 #include "core/i18n.h"
 #include "core/teapot.h"
 
+#include "common/panel.h"
+#include "core/i18n.h"
+
 #include <glm/gtc/type_ptr.hpp>
 #include <imgui.h>
 
@@ -13,6 +16,7 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <tuple>
@@ -21,6 +25,8 @@ const wb::ex::LabExercises& wbExercises_lab06();
 
 namespace wb {
 namespace {
+
+std::string variantLabel(const std::string& english); // below, with the variants
 
 constexpr int kMinGrid = 2;
 constexpr int kMaxGrid = 256;
@@ -50,19 +56,19 @@ class BezierLab : public Lab {
     bool busy() const override { return ex_.busy(); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
-    std::string title() const override { return "Lab 06 - Bezier curves and patches"; }
+    std::string title() const override { return tr("Lab 06 - Bezier curves and patches"); }
     std::vector<KeyHelp> keys() const override {
-        return {{"1", "circle: two Bezier curves"},
-                {"2", "sphere: two Bezier patches"},
-                {"c", "control polygon / net"},
-                {"[", "grid halve"},
-                {"]", "grid double"},
-                {"a", "next approximation"},
-                {"w", "sphere wireframe"},
-                {"t", "true circle / sphere (grey)"},
-                {"n", "normals: GL_AUTO_NORMAL / core"},
-                {"3", "Utah teapot: Newell's 32 patches"},
-                {"z", "zoom on the spot GL leaves unlit"},
+        return {{"1", tr("circle: two Bezier curves")},
+                {"2", tr("sphere: two Bezier patches")},
+                {"c", tr("control polygon / net")},
+                {"[", tr("grid halve")},
+                {"]", tr("grid double")},
+                {"a", tr("next approximation")},
+                {"w", tr("sphere wireframe")},
+                {"t", tr("true circle / sphere (grey)")},
+                {"n", tr("normals: GL_AUTO_NORMAL / core")},
+                {"3", tr("Utah teapot: Newell's 32 patches")},
+                {"z", tr("zoom on the spot GL leaves unlit")},
                 ex_.keyHelp()};
     }
     void init() override {
@@ -550,73 +556,76 @@ void BezierLab::gui() {
     // The panel is narrow: one short item per line, numbers in monospaced tables.
     BezierLabState& s = *s_;
     ex_.gui();
-    ImGui::RadioButton("circle (1)", &s.shape, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("sphere (2)", &s.shape, 1);
-    ImGui::SameLine();
-    ImGui::RadioButton("teapot (3)", &s.shape, 2);
-    ImGui::Checkbox("control net (c)", &s.showControl);
+    ImGui::RadioButton(tr("circle (1)"), &s.shape, 0);
+    sameLineIfFits(tr("sphere (2)"));
+    ImGui::RadioButton(tr("sphere (2)"), &s.shape, 1);
+    sameLineIfFits(tr("teapot (3)"));
+    ImGui::RadioButton(tr("teapot (3)"), &s.shape, 2);
+    ImGui::Checkbox(tr("control net (c)"), &s.showControl);
     if (s.shape != 2) {
-        ImGui::SameLine();
-        ImGui::Checkbox("true shape (t)", &s.showTrue);
+        sameLineIfFits(tr("true shape (t)"));
+        ImGui::Checkbox(tr("true shape (t)"), &s.showTrue);
     }
     if (s.shape >= 1) {
-        ImGui::Checkbox("wireframe (w)", &s.wireframe);
-        ImGui::SameLine();
-        ImGui::Checkbox("core normals (n)", &s.coreNormals);
-        ImGui::Checkbox("zoom on the unlit spot (z)", &s.zoomInset);
+        ImGui::Checkbox(tr("wireframe (w)"), &s.wireframe);
+        sameLineIfFits(tr("core normals (n)"));
+        ImGui::Checkbox(tr("core normals (n)"), &s.coreNormals);
+        ImGui::Checkbox(tr("zoom on the unlit spot (z)"), &s.zoomInset);
         if (s.shape == 1)
-            ImGui::TextWrapped("At the 4 corners of each patch the boundary curves are tangent, "
-                               "du x dv = 0: GL_AUTO_NORMAL has no normal there, and the grid "
-                               "cells at the corner go dark (the inset, bottom left, magnifies "
-                               "the marked corner 30x). 'core normals' draws the grid from "
-                               "evalPatch, which takes the limit from inside the patch.");
+            ImGui::TextWrapped(tr("At the 4 corners of each patch the boundary curves are tangent, "
+                                  "du x dv = 0: GL_AUTO_NORMAL has no normal there, and the grid "
+                                  "cells at the corner go dark (the inset, bottom left, magnifies "
+                                  "the marked corner 30x). 'core normals' draws the grid from "
+                                  "evalPatch, which takes the limit from inside the patch."));
         else
-            ImGui::TextWrapped("Newell's teapot: 32 bicubic patches on 306 control points. At "
-                               "the lid's and the bottom's poles a row of the net is one point, "
-                               "du = 0: GL_AUTO_NORMAL has no normal there and the knob's top "
-                               "goes dark (inset); core's evalPatch takes the limit (n).");
+            ImGui::TextWrapped(tr("Newell's teapot: 32 bicubic patches on 306 control points. At "
+                                  "the lid's and the bottom's poles a row of the net is one point, "
+                                  "du = 0: GL_AUTO_NORMAL has no normal there and the knob's top "
+                                  "goes dark (inset); core's evalPatch takes the limit (n)."));
     }
-    ImGui::SliderInt("##grid", &s.grid, kMinGrid, kMaxGrid, "grid %d ([ ])");
+    ImGui::SliderInt("##grid", &s.grid, kMinGrid, kMaxGrid, tr("grid %d ([ ])"));
 
     if (s.shape != 2) {
         ImGui::Separator();
-        ImGui::TextWrapped("Control points (a) and the radial error of the exact Bezier shape:");
+        ImGui::TextWrapped(
+            tr("Control points (a) and the radial error of the exact Bezier shape:"));
     }
     if (s.shape == 0) {
         const auto& vs = bezierCircleVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            ImGui::RadioButton(v.name.c_str(), &s.circleVariant, i);
-            ImGui::Text("      max |r-1| = %.3g", v.error.maxError);
+            ImGui::RadioButton(variantLabel(v.name).c_str(), &s.circleVariant, i);
+            ImGui::Text(tr("      max |r-1| = %.3g"), v.error.maxError);
         }
     } else if (s.shape == 1) {
         const auto& vs = bezierSphereVariants();
         for (int i = 0; i < int(vs.size()); ++i) {
             const auto& v = vs[size_t(i)];
-            ImGui::RadioButton(v.name.c_str(), &s.sphereVariant, i);
-            ImGui::Text("      max |r-R|/R = %.3g", v.error.relative());
-            ImGui::Text("      r in [%.4f, %.4f]", v.error.minRadius, v.error.maxRadius);
+            ImGui::RadioButton(variantLabel(v.name).c_str(), &s.sphereVariant, i);
+            ImGui::Text(tr("      max |r-R|/R = %.3g"), v.error.relative());
+            ImGui::Text(tr("      r in [%.4f, %.4f]"), v.error.minRadius, v.error.maxRadius);
         }
-        ImGui::TextWrapped("R is the minimax radius (min+max)/2: the course's net names none.");
+        ImGui::TextWrapped(tr("R is the minimax radius (min+max)/2: the course's net names none."));
     }
 
     ImGui::Separator();
     if (medianMs() < 0) measureNow(); // a key just changed the grid: time it before showing
     const double ms = medianMs();
     s.shownMs = ms;
-    ImGui::Text("GL time per mesh, grid %d:", s.grid);
-    ImGui::Text("   %s", ms < 0 ? "(no GL context)" : fmt("%.3f ms", ms).c_str());
+    ImGui::Text(tr("GL time per mesh, grid %d:"), s.grid);
+    ImGui::Text("   %s", ms < 0 ? tr("(no GL context)") : trf("%.3f ms", ms).c_str());
     if (s.shape == 2) {
-        ImGui::TextWrapped("GL's evaluator (float) against core's de Casteljau (double) on "
-                           "the same grid, read back with GL_FEEDBACK; normals through "
-                           "lighting:");
+        ImGui::TextWrapped(tr("GL's evaluator (float) against core's de Casteljau (double) on "
+                              "the same grid, read back with GL_FEEDBACK; normals through "
+                              "lighting:"));
+        // Stretched to the panel: fixed-fit columns as wide as a long (translated) header ran
+        // past the panel's edge.
         if (ImGui::BeginTable("teapot", 4,
-                              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-            ImGui::TableSetupColumn("grid");
-            ImGui::TableSetupColumn("max |dp|");
-            ImGui::TableSetupColumn("max angle");
-            ImGui::TableSetupColumn("no GL n");
+                              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchProp)) {
+            ImGui::TableSetupColumn(tr("grid"));
+            ImGui::TableSetupColumn(tr("max |dp|"));
+            ImGui::TableSetupColumn(tr("max angle"));
+            ImGui::TableSetupColumn(tr("no GL n"));
             ImGui::TableHeadersRow();
             for (int n = 4; n <= 64; n *= 2) {
                 auto it = teapotGl_.find(n);
@@ -634,18 +643,19 @@ void BezierLab::gui() {
             }
             ImGui::EndTable();
         }
-        ImGui::TextWrapped("Angle in degrees where GL has a normal. 'no GL n': grid vertices "
-                           "on the poles (8 patches x (grid+1)), where core takes the limit.");
+        ImGui::TextWrapped(tr("Angle in degrees where GL has a normal. 'no GL n': grid vertices "
+                              "on the poles (8 patches x (grid+1)), where core takes the limit."));
         return;
     }
-    ImGui::TextWrapped("Speed against error: drawn line strip / triangles against the true shape "
-                       "(ms: median GL time seen at that grid; visit it with [ ]).");
+    ImGui::TextWrapped(
+        tr("Speed against error: drawn line strip / triangles against the true shape "
+           "(ms: median GL time seen at that grid; visit it with [ ])."));
     float logErr[7], msBars[7];
     int row = 0;
     if (ImGui::BeginTable("grid", 3, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupColumn("grid");
+        ImGui::TableSetupColumn(tr("grid"));
         ImGui::TableSetupColumn(s.shape == 0 ? "max |r-1|" : "max |r-R|/R");
-        ImGui::TableSetupColumn("ms/mesh");
+        ImGui::TableSetupColumn(tr("ms/mesh"));
         ImGui::TableHeadersRow();
         const int keep = s.grid;
         for (int n = 4; n <= kMaxGrid; n *= 2, ++row) {
@@ -670,16 +680,31 @@ void BezierLab::gui() {
     }
     // The error falls by 4x per doubling of the grid (second order) until the shape's own
     // error is reached: a straight line of slope -log10(4) in log-log, then flat.
-    ImGui::TextWrapped("log10 of the error against grid 4, 8, ... 256 (one step per doubling):");
+    ImGui::TextWrapped(
+        tr("log10 of the error against grid 4, 8, ... 256 (one step per doubling):"));
     const float lo = *std::min_element(logErr, logErr + row),
                 hi = *std::max_element(logErr, logErr + row);
     ImGui::PlotLines("##err", logErr, row, 0, fmt("%.1f .. %.1f", double(lo), double(hi)).c_str(),
                      std::floor(lo), std::ceil(hi),
                      ImVec2(ImGui::GetContentRegionAvail().x, 70.0f));
-    ImGui::TextWrapped("GL ms per mesh at the same grids (0: not visited yet):");
+    ImGui::TextWrapped(tr("GL ms per mesh at the same grids (0: not visited yet):"));
     ImGui::PlotHistogram("##ms", msBars, row, 0, nullptr, 0.0f, FLT_MAX,
                          ImVec2(ImGui::GetContentRegionAvail().x, 50.0f));
-    ImGui::TextWrapped("Full table: docs/bench/bezier.md (bin/bezier_bench).");
+    ImGui::TextWrapped(tr("Full table: docs/bench/bezier.md (bin/bezier_bench)."));
+}
+
+// A variant's name in the user's language: the cached variants keep their English names (the
+// tests and --help read them), each built from one of these patterns.
+std::string variantLabel(const std::string& english) {
+    int n = 0, m = 0;
+    double k = 0;
+    if (std::sscanf(english.c_str(), "%d arcs, fitted k = %lf", &n, &k) == 2)
+        return trf("%d arcs, fitted k = %.5f", n, k);
+    if (std::sscanf(english.c_str(), "%d arcs, k = 4/3 tan(pi/%d)", &n, &m) == 2)
+        return trf("%d arcs, k = 4/3 tan(pi/%d)", n, m);
+    if (std::sscanf(english.c_str(), "%d arcs, k = 4/3 (course", &n) == 1)
+        return trf("%d arcs, k = 4/3 (course)", n);
+    return tr(english.c_str()); // the sphere's nets (N_ where they are named)
 }
 
 } // namespace
@@ -709,7 +734,7 @@ const std::vector<SphereVariant>& bezierSphereVariants() {
     static const std::vector<SphereVariant> variants = [] {
         std::vector<SphereVariant> vs;
         for (int i = 0; i < 2; ++i) {
-            SphereVariant v{i == 0 ? "course net (lab 6)" : "fitted net",
+            SphereVariant v{i == 0 ? N_("course net (lab 6)") : N_("fitted net"),
                             sphereFromNet(i == 0 ? labHemisphereNet() : fitHemisphereNet()),
                             {}};
             v.error = patchesRadialError(v.patches, 0.0);

@@ -12,6 +12,7 @@
 #include "core/raytrace/sphere.h"
 #include "core/teapot.h"
 
+#include "core/i18n.h"
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -50,8 +51,8 @@ void buildSpheres(LabScene& s, int count) {
     s.camera.target = {0, 0, 0};
     s.camera.fovY = 45;
     s.model = ModelKind::Phong;
-    s.about = count == 1 ? "one sphere over a floor (the lab's timing experiment)"
-                         : "two spheres over a floor (the lab's timing experiment)";
+    s.about = count == 1 ? N_("one sphere over a floor (the lab's timing experiment)")
+                         : N_("two spheres over a floor (the lab's timing experiment)");
 }
 
 // Diffuse spheres lit from the eye (so no shadow is visible): the scene on which the
@@ -70,7 +71,7 @@ void buildDiffuse(LabScene& s) {
     m.colour = {0.3, 0.4, 0.9};
     sc.add(rt::Sphere({1.5, 0.4, -0.5}, 0.5), sc.addMaterial(m));
     s.model = ModelKind::Phong;
-    s.about = "diffuse spheres lit from the eye: raster and trace should agree";
+    s.about = N_("diffuse spheres lit from the eye: raster and trace should agree");
 }
 
 Material seedMaterial(const dvec3& colour255, double kr) {
@@ -110,10 +111,10 @@ void buildSeedPart1(LabScene& s, bool withRect1) {
     // 250 pixels, and the seed's screen points stay pixel corners: P(xs, ys) is pixel
     // (W/2 + 4·xs, H/2 − 4·ys), so P(50, 0) is traced with the seed's very ray.
     s.camera.screenPixel = 0.25;
-    s.about = withRect1 ? "seed 000 part 1: P(50,0) (pixel W/2+200, H/2) in the red "
-                          "rectangle's shadow: (10,117,10)"
-                        : "seed 000 part 1, red rectangle removed: P(50,0) (pixel W/2+200, "
-                          "H/2) lit: (50,197,50)";
+    s.about = withRect1 ? N_("seed 000 part 1: P(50,0) (pixel W/2+200, H/2) in the red "
+                             "rectangle's shadow: (10,117,10)")
+                        : N_("seed 000 part 1, red rectangle removed: P(50,0) (pixel W/2+200, "
+                             "H/2) lit: (50,197,50)");
 }
 
 // Seed 000 part 2: the green rectangle (kr 0.5) reflects the red one standing in x = 50.
@@ -127,7 +128,7 @@ void buildSeedPart2(LabScene& s) {
     sc.add(rt::Rectangle({50, 0, 20}, {50, 0, 70}, {50, 50, 20}), red);
     sc.add(rt::Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), green);
     seedCamera(s);
-    s.about = "seed 000 part 2: P(50,0) with the reflected ray (168,233,86)";
+    s.about = N_("seed 000 part 2: P(50,0) with the reflected ray (168,233,86)");
 }
 
 // Seed 000, figure 10: a glass cube (kr = kt = 0.3, index 1.5) over a mirror-ish rectangle.
@@ -150,7 +151,7 @@ void buildGlassCube(LabScene& s) {
     s.camera.up = {0, 0, 1};
     s.camera.fovY = 40;
     s.model = ModelKind::Course;
-    s.about = "seed 000 figure 10: glass cube (kr = kt = 0.3, n = 1.5) over a rectangle";
+    s.about = N_("seed 000 figure 10: glass cube (kr = kt = 0.3, n = 1.5) over a rectangle");
 }
 
 // Seed 001's scene: a table (box top, cylinder legs) with a glass (paraboloid cut by two
@@ -179,7 +180,7 @@ void buildTable(LabScene& s) {
     s.camera.up = {0, 0, 1};
     s.camera.fovY = 40;
     s.model = ModelKind::Phong;
-    s.about = "seed 001: table and glass (cut paraboloid, ellipsoid, cylinders, plane)";
+    s.about = N_("seed 001: table and glass (cut paraboloid, ellipsoid, cylinders, plane)");
 }
 
 // The Utah teapot (core/teapot: Newell's 32 Bezier patches) as 12×12-cell grids per patch,
@@ -206,8 +207,10 @@ void buildTeapot(LabScene& s) {
     s.camera.up = {0, 0, 1};
     s.camera.fovY = 38;
     s.model = ModelKind::Phong;
-    s.about = "the Utah teapot: Newell's 32 Bezier patches as " +
-              std::to_string(m.indices.size() / 3) + " smooth triangles (core/teapot)";
+    // Translated when the scene is built (the count is in it): it keeps that language.
+    s.about = trf("the Utah teapot: Newell's 32 Bezier patches as %zu smooth triangles "
+                  "(core/teapot)",
+                  m.indices.size() / 3);
 }
 
 // A scene of issue 6's readers and generators (phong model, the file's view).
@@ -253,12 +256,12 @@ std::vector<std::string> builtinSceneNames() {
 std::vector<std::string> warningLines(const LabScene& s) {
     std::vector<std::string> out;
     if (s.warningCount == 0) return out;
-    out.push_back(std::to_string(s.warningCount) +
-                  (s.warningCount == 1 ? " warning:" : " warnings:"));
+    out.push_back(s.warningCount == 1 ? trf("%zu warning:", size_t(s.warningCount))
+                                      : trf("%zu warnings:", size_t(s.warningCount)));
     for (const std::string& w : s.warnings)
         out.push_back("  " + w);
     if (s.warningCount > s.warnings.size())
-        out.push_back("  ... and " + std::to_string(s.warningCount - s.warnings.size()) + " more");
+        out.push_back(trf("  ... and %zu more", size_t(s.warningCount - s.warnings.size())));
     return out;
 }
 
@@ -288,19 +291,21 @@ bool loadLabScene(const std::string& name, LabScene& out, std::string& error) {
             buildTeapot(s);
         else if (int n = 0; sizeFactor(name, "balls:", n))
             fromSceneFile(s, rt::toScene(rt::spdBalls(n)),
-                          "SPD balls (sphereflake) size " + std::to_string(n) + ": " +
-                              std::to_string(rt::spdBallsSpheres(n)) + " spheres");
+                          trf("SPD balls (sphereflake) size %d: %lld spheres", n,
+                              (long long)rt::spdBallsSpheres(n)));
         else if (int m = 0; sizeFactor(name, "jacks:", m))
             fromSceneFile(s, rt::toScene(rt::spdJacks(m)),
-                          "SPD jacks size " + std::to_string(m) + ": " +
-                              std::to_string(rt::spdJacksCount(m)) + " jacks");
+                          trf("SPD jacks size %d: %lld jacks", m, (long long)rt::spdJacksCount(m)));
         else if (hasExtension(name, ".nff") || hasExtension(name, ".obj"))
-            fromSceneFile(s, rt::loadSceneFile(name), "file " + name);
+            fromSceneFile(s, rt::loadSceneFile(name), trf("file %s", name.c_str()));
         else {
-            error = "unknown scene '" + name + "' (one of:";
-            for (const auto& known : builtinSceneNames())
-                error += " " + known;
-            error += ", balls:N, jacks:N with N = 1..5, or a .nff / .obj file)";
+            std::string known;
+            for (const auto& k : builtinSceneNames())
+                known += " " + k;
+            error =
+                trf("unknown scene '%s' (one of:%s, balls:N, jacks:N with N = 1..5, or a .nff / "
+                    ".obj file)",
+                    name.c_str(), known.c_str());
             return false;
         }
     } catch (const std::exception& e) {
@@ -329,7 +334,7 @@ bool setAccel(LabScene& s, bool on) {
     } catch (const std::exception& e) {
         // The BVH refused to build (bad options, memory): said, and traced with the plain
         // loop (the same pictures, slower) rather than ending the lab.
-        std::fprintf(stderr, "lab07: no BVH: %s; tracing with the plain loop\n", e.what());
+        std::fprintf(stderr, tr("lab07: no BVH: %s; tracing with the plain loop\n"), e.what());
         s.accel.reset();
         s.accelSeconds = 0;
         return false;

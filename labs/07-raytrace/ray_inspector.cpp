@@ -12,6 +12,7 @@
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
+#include "core/i18n.h"
 #include <algorithm>
 #include <cstdio>
 #include <unordered_map>
@@ -19,25 +20,26 @@
 namespace wb {
 
 std::string primitiveKind(const rt::Primitive& p) {
-    if (dynamic_cast<const rt::Sphere*>(&p)) return "sphere";
-    if (dynamic_cast<const rt::Plane*>(&p)) return "plane";
-    if (dynamic_cast<const rt::Rectangle*>(&p)) return "rectangle";
-    if (dynamic_cast<const rt::SmoothTriangle*>(&p)) return "smooth triangle";
-    if (dynamic_cast<const rt::Triangle*>(&p)) return "triangle";
-    if (dynamic_cast<const rt::Box*>(&p)) return "box";
-    if (dynamic_cast<const rt::ConvexPolyhedron*>(&p)) return "polyhedron";
-    if (auto* c = dynamic_cast<const rt::Cone*>(&p)) return c->r0 == c->r1 ? "cylinder" : "cone";
+    if (dynamic_cast<const rt::Sphere*>(&p)) return N_("sphere");
+    if (dynamic_cast<const rt::Plane*>(&p)) return N_("plane");
+    if (dynamic_cast<const rt::Rectangle*>(&p)) return N_("rectangle");
+    if (dynamic_cast<const rt::SmoothTriangle*>(&p)) return N_("smooth triangle");
+    if (dynamic_cast<const rt::Triangle*>(&p)) return N_("triangle");
+    if (dynamic_cast<const rt::Box*>(&p)) return N_("box");
+    if (dynamic_cast<const rt::ConvexPolyhedron*>(&p)) return N_("polyhedron");
+    if (auto* c = dynamic_cast<const rt::Cone*>(&p))
+        return c->r0 == c->r1 ? N_("cylinder") : N_("cone");
     if (auto* q = dynamic_cast<const rt::Quadric*>(&p)) {
         switch (q->kind) {
         case rt::Quadric::Kind::Ellipsoid:
-            return "ellipsoid";
+            return N_("ellipsoid");
         case rt::Quadric::Kind::Paraboloid:
-            return "paraboloid";
+            return N_("paraboloid");
         case rt::Quadric::Kind::Hyperboloid:
-            return "hyperboloid";
+            return N_("hyperboloid");
         }
     }
-    return "primitive";
+    return N_("primitive");
 }
 
 namespace {
@@ -136,9 +138,9 @@ struct Inspector : rt::TraceObserver {
 
     void rayBegin(const rt::Ray& ray, rt::RayKind what) override {
         RayNode n;
-        n.kind = what == rt::RayKind::Primary     ? "primary"
-                 : what == rt::RayKind::Reflected ? "reflected"
-                                                  : "refracted";
+        n.kind = what == rt::RayKind::Primary     ? N_("primary") // tr() where shown
+                 : what == rt::RayKind::Reflected ? N_("reflected")
+                                                  : N_("refracted");
         n.parent = open.empty() ? -1 : open.back();
         n.ray = ray;
         open.push_back(int(tree.nodes.size()));
@@ -172,17 +174,19 @@ struct Inspector : rt::TraceObserver {
         switch (why) {
         case rt::SkipReason::DepthLimit:
             // Told once per child; one note for both.
-            if (note.find("depth limit") == std::string::npos) note += "depth limit reached; ";
+            if (note.find(tr("depth limit reached; ")) == std::string::npos)
+                note += tr("depth limit reached; ");
             break;
         case rt::SkipReason::BelowWeight:
-            note += child == rt::RayKind::Reflected ? "reflected ray below the weight cut-off; "
-                                                    : "transmitted ray below the weight cut-off; ";
+            note += child == rt::RayKind::Reflected
+                        ? tr("reflected ray below the weight cut-off; ")
+                        : tr("transmitted ray below the weight cut-off; ");
             break;
         case rt::SkipReason::TotalInternalReflection:
-            note += "total internal reflection (no transmitted ray); ";
+            note += tr("total internal reflection (no transmitted ray); ");
             break;
         case rt::SkipReason::RayBudget:
-            note += "ray budget per pixel used up; ";
+            note += tr("ray budget per pixel used up; ");
             break;
         }
     }
@@ -207,11 +211,6 @@ struct Inspector : rt::TraceObserver {
     }
 };
 
-std::string fmt(const char* f, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, a);
-    return buf;
-}
 std::string vec(const glm::dvec3& v) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "(%.3f, %.3f, %.3f)", v.x, v.y, v.z);
@@ -241,69 +240,72 @@ RayTree inspectRay(const LabScene& s, ModelKind model, const rt::TraceSettings& 
 }
 
 std::vector<std::string> describe(const RayTree& tree, const rt::Scene& scene) {
+    // Each line one translatable sentence (the kinds and primitive names are N_() English, shown
+    // through tr()); vectors and colours are numbers in every language.
     std::vector<std::string> out;
     const ModelKind k = tree.model;
+    auto c = [k](const rt::Color& col) { return colour(col, k); };
     for (size_t i = 0; i < tree.nodes.size(); ++i) {
         const RayNode& n = tree.nodes[i];
         std::string indent(size_t(n.ray.depth) * 2, ' ');
-        out.push_back(indent + "#" + std::to_string(i) + " " + n.kind + " ray from " +
-                      vec(n.ray.origin) + " dir " + vec(n.ray.direction) +
-                      fmt(" weight %.3f", n.ray.weight) + fmt(" n=%.2f", n.ray.medium.refract));
+        out.push_back(indent + trf("#%zu %s ray from %s dir %s weight %.3f n=%.2f", i,
+                                   tr(n.kind.c_str()), vec(n.ray.origin).c_str(),
+                                   vec(n.ray.direction).c_str(), n.ray.weight,
+                                   n.ray.medium.refract));
         indent += "  ";
         if (!n.hit) {
-            out.push_back(indent + "misses everything: background " + colour(n.colour, k));
+            out.push_back(indent + trf("misses everything: background %s", c(n.colour).c_str()));
             continue;
         }
-        out.push_back(indent + "hits " + n.primitiveKind + " #" + std::to_string(n.primitive) +
-                      fmt(" at t = %.3f", n.t) + " P = " + vec(n.point));
-        out.push_back(indent + "normal " + vec(n.normal) + fmt(" cos(V,N) = %.3f", n.cosVN) +
-                      (n.solid ? (n.entering ? " entering" : " leaving") : " (open surface)") +
-                      fmt(" u = %.3f", n.uv.x) + fmt(" v = %.3f", n.uv.y));
-        out.push_back(indent + "ambient " + colour(n.ambient, k));
+        out.push_back(indent + trf("hits %s #%lld at t = %.3f P = %s", tr(n.primitiveKind.c_str()),
+                                   (long long)n.primitive, n.t, vec(n.point).c_str()));
+        out.push_back(indent + trf("normal %s cos(V,N) = %.3f%s u = %.3f v = %.3f",
+                                   vec(n.normal).c_str(), n.cosVN,
+                                   n.solid ? (n.entering ? tr(" entering") : tr(" leaving"))
+                                           : tr(" (open surface)"),
+                                   n.uv.x, n.uv.y));
+        out.push_back(indent + trf("ambient %s", c(n.ambient).c_str()));
         for (const FeelerRecord& f : n.feelers) {
-            const rt::Light& l = scene.lights[size_t(f.light)];
-            std::string head = indent + "light " + std::to_string(f.light) +
-                               ": L = " + vec(f.toLight) + fmt(" dist %.2f", f.distance);
+            const std::string head =
+                indent + trf("light %lld: L = %s dist %.2f", (long long)f.light,
+                             vec(f.toLight).c_str(), f.distance);
             if (!f.facing) {
-                out.push_back(head + " behind the surface (no feeler)");
+                out.push_back(head + tr(" behind the surface (no feeler)"));
                 continue;
             }
-            out.push_back(head + fmt(" transmittance %.3f", f.transmittance));
+            out.push_back(head + trf(" transmittance %.3f", f.transmittance));
             for (const auto& b : f.blockers)
-                out.push_back(indent + "  blocked by " + b.kind + " #" +
-                              std::to_string(b.primitive) + fmt(" at t = %.2f", b.t) + " " +
-                              vec(b.point) + fmt(" kt %.2f", b.kt));
+                out.push_back(indent + trf("  blocked by %s #%lld at t = %.2f %s kt %.2f",
+                                           tr(b.kind.c_str()), (long long)b.primitive, b.t,
+                                           vec(b.point).c_str(), b.kt));
             if (k == ModelKind::Course) {
-                out.push_back(indent + fmt("  SH %.3f", f.sh) + fmt(" LN %.3f", f.ln) +
-                              fmt(" SH*LN*KD %.3f", f.diffuseFactor) + " diffuse " +
-                              colour(f.diffuse, k));
-                out.push_back(indent + "  n " + vec(f.halfVector) + fmt(" n.N %.3f", f.nn) +
-                              fmt(" ^P %.3f", f.nnp) + fmt(" SH*KS*NNP %.3f", f.specularFactor) +
-                              " specular " + colour(f.specular, k));
+                out.push_back(indent + trf("  SH %.3f LN %.3f SH*LN*KD %.3f diffuse %s", f.sh, f.ln,
+                                           f.diffuseFactor, c(f.diffuse).c_str()));
+                out.push_back(indent + trf("  n %s n.N %.3f ^P %.3f SH*KS*NNP %.3f specular %s",
+                                           vec(f.halfVector).c_str(), f.nn, f.nnp, f.specularFactor,
+                                           c(f.specular).c_str()));
             } else {
-                out.push_back(indent + "  diffuse " + colour(f.diffuse, k) + " specular " +
-                              colour(f.specular, k) + " light ambient " +
-                              colour(f.lightAmbient, k));
+                out.push_back(indent + trf("  diffuse %s specular %s light ambient %s",
+                                           c(f.diffuse).c_str(), c(f.specular).c_str(),
+                                           c(f.lightAmbient).c_str()));
             }
-            (void)l;
         }
-        out.push_back(indent + "direct " + colour(n.direct, k));
+        (void)scene;
+        out.push_back(indent + trf("direct %s", c(n.direct).c_str()));
         if (n.reflected >= 0)
-            out.push_back(indent + "+ reflected #" + std::to_string(n.reflected) + " " +
-                          colour(n.reflectedColour, k) + fmt(" x kr %.2f", n.kr));
+            out.push_back(indent + trf("+ reflected #%lld %s x kr %.2f", (long long)n.reflected,
+                                       c(n.reflectedColour).c_str(), n.kr));
         if (n.refracted >= 0)
-            out.push_back(indent + "+ transmitted #" + std::to_string(n.refracted) + " " +
-                          colour(n.refractedColour, k) + fmt(" x kt %.2f", n.kt));
+            out.push_back(indent + trf("+ transmitted #%lld %s x kt %.2f", (long long)n.refracted,
+                                       c(n.refractedColour).c_str(), n.kt));
         if (!n.childNote.empty()) out.push_back(indent + n.childNote);
         if (n.attenuation != 1.0)
-            out.push_back(indent + fmt("x attenuation exp(-atten t) = %.4f", n.attenuation));
-        out.push_back(indent + "= " + colour(n.colour, k));
+            out.push_back(indent + trf("x attenuation exp(-atten t) = %.4f", n.attenuation));
+        out.push_back(indent + "= " + c(n.colour));
     }
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "pixel RGB (%d, %d, %d); tracer says %s %s", tree.rgb[0],
-                  tree.rgb[1], tree.rgb[2], colour(tree.tracerColour, k).c_str(),
-                  tree.matchesTracer ? "(same)" : "(DIFFERS: inspector out of step)");
-    out.push_back(buf);
+    out.push_back(trf("pixel RGB (%d, %d, %d); tracer says %s %s", tree.rgb[0], tree.rgb[1],
+                      tree.rgb[2], c(tree.tracerColour).c_str(),
+                      tree.matchesTracer ? tr("(same)") : tr("(DIFFERS: inspector out of step)")));
     return out;
 }
 

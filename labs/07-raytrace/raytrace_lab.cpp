@@ -10,6 +10,9 @@
 #include "common/gl_util.h"
 #include "core/i18n.h"
 
+#include "common/panel.h"
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -55,26 +58,26 @@ class RaytraceLab : public Lab {
   public:
     RaytraceState s;
 
-    std::string title() const override { return "Lab 07 - ray tracing vs rasterization"; }
+    std::string title() const override { return tr("Lab 07 - ray tracing vs rasterization"); }
 
     std::vector<KeyHelp> keys() const override {
-        return {{"g", "OpenGL Phong rasterization"},
-                {"G", "ray traced (background, tile by tile)"},
-                {"Left/Right", "rotate about the vertical"},
-                {"Up/Down", "rotate up/down"},
-                {"f", "fixed function / per-fragment GLSL Phong"},
-                {"d", "difference heat map raster vs trace"},
-                {"m", "tracer model course / phong"},
-                {"b", "BVH on/off"},
-                {"x", "cancel the trace / the timing experiment"},
-                {"n", "next scene"},
-                {"N", "previous scene"},
-                {"[", "depth limit down"},
-                {"]", "depth limit up"},
-                {"r", "trace resolution 1, 1/2, 1/4"},
-                {"c", "clear the ray inspector"},
-                {"t", "run the timing experiment"},
-                {"click", "inspect the ray tree of a pixel"},
+        return {{"g", tr("OpenGL Phong rasterization")},
+                {"G", tr("ray traced (background, tile by tile)")},
+                {tr("Left/Right"), tr("rotate about the vertical")},
+                {tr("Up/Down"), tr("rotate up/down")},
+                {"f", tr("fixed function / per-fragment GLSL Phong")},
+                {"d", tr("difference heat map raster vs trace")},
+                {"m", tr("tracer model course / phong")},
+                {"b", tr("BVH on/off")},
+                {"x", tr("cancel the trace / the timing experiment")},
+                {"n", tr("next scene")},
+                {"N", tr("previous scene")},
+                {"[", tr("depth limit down")},
+                {"]", tr("depth limit up")},
+                {"r", tr("trace resolution 1, 1/2, 1/4")},
+                {"c", tr("clear the ray inspector")},
+                {"t", tr("run the timing experiment")},
+                {tr("click"), tr("inspect the ray tree of a pixel")},
                 ex_.keyHelp()};
     }
 
@@ -83,12 +86,12 @@ class RaytraceLab : public Lab {
         std::string names;
         for (const std::string& n : builtinSceneNames())
             if (n.find(':') == std::string::npos) names += n + " ";
-        return {{"scene", "FILE|NAME", names + "balls:N jacks:N (N = 1..5) or .nff/.obj"},
-                {"threads", "N", "trace threads (0 = all cores)"},
-                {"depth", "D", "tracer depth limit (0..20)"},
-                {"model", "course|phong", "tracer shading model (default: the scene's)"},
-                {"inspect", "X,Y", "inspect image pixel (X, Y) of the traced view"},
-                {"experiment", "", "run the timing experiment and print its table"}};
+        return {{"scene", tr("FILE|NAME"), names + tr("balls:N jacks:N (N = 1..5) or .nff/.obj")},
+                {"threads", "N", tr("trace threads (0 = all cores)")},
+                {"depth", "D", tr("tracer depth limit (0..20)")},
+                {"model", "course|phong", tr("tracer shading model (default: the scene's)")},
+                {"inspect", "X,Y", tr("inspect image pixel (X, Y) of the traced view")},
+                {"experiment", "", tr("run the timing experiment and print its table")}};
         // (--inspect prints the ray tree the panel shows on stdout.)
     }
 
@@ -96,8 +99,7 @@ class RaytraceLab : public Lab {
         // The shell's strict integer parser (digits only): strtol took " 5", "+5" and "-0".
         auto integer = [&](int lo, int hi, int& out) {
             if (cli::parseInt(value, lo, hi, out)) return true;
-            error = "expected an integer " + std::to_string(lo) + ".." + std::to_string(hi) +
-                    ", got '" + value + "'";
+            error = trf("expected an integer %d..%d, got '%s'", lo, hi, value.c_str());
             return false;
         };
         if (name == "scene") {
@@ -114,7 +116,7 @@ class RaytraceLab : public Lab {
         if (name == "depth") return integer(0, 20, s.maxDepth);
         if (name == "model") {
             if (value != "course" && value != "phong") {
-                error = "expected course or phong, got '" + value + "'";
+                error = trf("expected course or phong, got '%s'", value.c_str());
                 return false;
             }
             modelOption_ = value;
@@ -124,7 +126,7 @@ class RaytraceLab : public Lab {
             int x = 0, y = 0;
             char tail = 0;
             if (std::sscanf(value.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0) {
-                error = "expected X,Y (pixel of the traced image), got '" + value + "'";
+                error = trf("expected X,Y (pixel of the traced image), got '%s'", value.c_str());
                 return false;
             }
             pendingInspect_ = true;
@@ -137,7 +139,7 @@ class RaytraceLab : public Lab {
             printTimings_ = true;
             return true;
         }
-        error = "unknown option --" + name;
+        error = trf("unknown option --%s", name.c_str());
         return false;
     }
 
@@ -147,7 +149,7 @@ class RaytraceLab : public Lab {
             installScene(std::move(*optionScene_), s.sceneName);
             optionScene_.reset();
         } else if (!loadScene(s.sceneName, err)) {
-            std::fprintf(stderr, "lab07: %s\n", err.c_str());
+            std::fprintf(stderr, tr("lab07: %s\n"), err.c_str());
             loadScene("two-spheres", err);
             headlessFailed_ = true; // headless: the picture is not the one asked for, exit 1
         }
@@ -291,8 +293,8 @@ class RaytraceLab : public Lab {
         }
         st.fraction = std::min(done / cells, 1.0);
         if (e.next < e.scenes.size())
-            st.current = e.scenes[e.next] + (e.column ? ", no BVH" : ", BVH") + ", run " +
-                         std::to_string(e.run + 1);
+            st.current = e.scenes[e.next] + (e.column ? trf(", no BVH, run %d", e.run + 1)
+                                                      : trf(", BVH, run %d", e.run + 1));
         st.seconds = secondsSince(e.start);
         return st;
     }
@@ -370,13 +372,13 @@ class RaytraceLab : public Lab {
         if (!view.headless) return;
         // --inspect X,Y: the tree the panel shows, on stdout.
         if (!tree_) {
-            std::fprintf(stderr, "lab07: --inspect %d,%d is outside the %dx%d traced image\n",
+            std::fprintf(stderr, tr("lab07: --inspect %d,%d is outside the %dx%d traced image\n"),
                          inspectX_, inspectY_, tc.width, tc.height);
             headlessFailed_ = true;
             return;
         }
-        std::printf("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n", inspectedPixel_.x,
-                    inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y,
+        std::printf(tr("ray tree of pixel (%d, %d), screen (%g, %g), %s model:\n"),
+                    inspectedPixel_.x, inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y,
                     s.model == ModelKind::Course ? "course" : "phong");
         for (const std::string& l : treeLines_)
             std::printf("%s\n", l.c_str());
@@ -406,7 +408,7 @@ class RaytraceLab : public Lab {
     uint64_t meshGeneration_ = ~uint64_t(0);
     int meshW_ = 0, meshH_ = 0;
     float meshZoom_ = 0;
-    bool meshJustBuilt_ = false; // the last draw() rebuilt the mesh (see busy())
+    bool meshJustBuilt_ = false;               // the last draw() rebuilt the mesh (see busy())
     ex::ExerciseMode ex_{wbExercises_lab07()}; // e: seed 000's steps with your functions
     ExerciseTrace exTrace_;                    // the last picture traced with them
     GLuint program_ = 0;
@@ -457,19 +459,18 @@ class RaytraceLab : public Lab {
             std::fprintf(stderr, "\n");
         else if (st.finished)
             std::fprintf(stderr, "[########################################] 100%%\n");
-        std::printf("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n", scene_.name.c_str(),
-                    scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
+        std::printf(tr("%s: %zu primitives, load %.1f ms, BVH build %.1f ms\n"),
+                    scene_.name.c_str(), scene_.scene->primitives.size(), scene_.loadSeconds * 1e3,
                     scene_.accelSeconds * 1e3);
         std::printf(
-            "%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
-            "%lld rays; %.2f M rays/s\n",
+            tr("%dx%d, %d threads: trace %.1f ms; eye %lld, shadow %lld, reflection+refraction "
+               "%lld rays; %.2f M rays/s\n"),
             job_.camera().width, job_.camera().height, st.threads, st.seconds * 1e3, st.primaryRays,
             st.shadowRays, st.secondaryRays,
             st.seconds > 0 ? double(rays) / st.seconds / 1e6 : 0.0);
         if (st.nonFinitePixels) {
             // Written black, the picture would pass for fine: the shell writes nothing.
-            std::fprintf(stderr,
-                         "lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n",
+            std::fprintf(stderr, tr("lab07: %s: %lld non-finite pixels (NaN/Inf in the colour)\n"),
                          scene_.name.c_str(), st.nonFinitePixels);
             headlessFailed_ = true;
         }
@@ -906,7 +907,7 @@ void RaytraceLab::stepExperiment(const View& view) {
         if (e.next >= e.scenes.size()) {
             e.active = false;
             if (printTimings_) {
-                std::printf("%dx%d, %d threads (0 = all), best of up to %d traces\n",
+                std::printf(tr("%dx%d, %d threads (0 = all), best of up to %d traces\n"),
                             view.width / s.divisor, view.height / s.divisor, s.threads,
                             kExperimentRuns);
                 std::printf("%-12s %6s %8s %9s %9s %10s %8s %8s %7s\n", "scene", "prims", "tris",
@@ -924,8 +925,8 @@ void RaytraceLab::stepExperiment(const View& view) {
                                 r.raysPerSecond / 1e6,
                                 r.traceSeconds * 1000.0 / std::max(r.rasterMs, 1e-9));
                 }
-                std::printf("(~: estimated from the row above x objects, not run; ratio = BVH "
-                            "trace / raster)\n");
+                std::printf(tr("(~: estimated from the row above x objects, not run; ratio = BVH "
+                               "trace / raster)\n"));
                 std::fflush(stdout);
             }
             return;
@@ -936,7 +937,7 @@ void RaytraceLab::stepExperiment(const View& view) {
             std::string err;
             e.scene = LabScene{};
             if (!loadLabScene(e.scenes[e.next], e.scene, err)) {
-                std::fprintf(stderr, "lab07 experiment: %s\n", err.c_str());
+                std::fprintf(stderr, tr("lab07 experiment: %s\n"), err.c_str());
                 ++e.next;
                 return;
             }
@@ -988,8 +989,8 @@ void RaytraceLab::stepExperiment(const View& view) {
                     e.row.bruteEstimated = true;
                     if (view.headless)
                         std::fprintf(stderr,
-                                     "experiment: %s without the BVH: about %.0f s, "
-                                     "not run\n",
+                                     tr("experiment: %s without the BVH: about %.0f s, "
+                                        "not run\n"),
                                      e.row.scene.c_str(), estimate);
                     timings_.push_back(e.row);
                     e.column = 0;
@@ -1030,7 +1031,7 @@ void RaytraceLab::stepExperiment(const View& view) {
         return;
     }
     if (view.headless)
-        std::fprintf(stderr, "experiment: %-10s %-7s %8.3f s (%d run%s)\n", e.row.scene.c_str(),
+        std::fprintf(stderr, tr("experiment: %-10s %-7s %8.3f s (%d run%s)\n"), e.row.scene.c_str(),
                      brute ? "no BVH" : "BVH", best, e.run, e.run > 1 ? "s" : "");
     e.tracing = false;
     if (!brute) {
@@ -1125,8 +1126,8 @@ void heatBar() {
         dl->AddText(ImVec2(x, q.y + 2), ImGui::GetColorU32(ImGuiCol_Text), labels[i]);
     }
     ImGui::Dummy(ImVec2(w, ImGui::GetTextLineHeight() + 4));
-    wrapText("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
-             "yellow at 64 and above (also under the picture)");
+    wrapText(tr("max channel difference |raster - trace|, levels of 255: black 0, blue, red, "
+                "yellow at 64 and above (also under the picture)"));
 }
 
 // The timing experiment as a plot: trace time per scene on a log scale, BVH and no BVH.
@@ -1149,10 +1150,10 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     lo = std::floor(lo);
     hi = std::max(std::ceil(hi), lo + 1);
     const ImU32 yellow = IM_COL32(255, 220, 60, 255), cyan = IM_COL32(80, 220, 255, 255);
-    ImGui::TextUnformatted("trace time per scene (log scale):");
-    ImGui::TextColored(ImColor(yellow), "-- BVH");
+    ImGui::TextUnformatted(tr("trace time per scene (log scale):"));
+    ImGui::TextColored(ImColor(yellow), tr("-- BVH"));
     ImGui::SameLine();
-    ImGui::TextColored(ImColor(cyan), "-- no BVH (brute force)");
+    ImGui::TextColored(ImColor(cyan), tr("-- no BVH (brute force)"));
     // Tall enough for a label above each decade line and one below the top line with room
     // between them at any UI scale (a fixed 120 px put "10 ms" over "100 ms").
     const float th = ImGui::GetTextLineHeight();
@@ -1189,12 +1190,12 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     for (int d = int(lo); d <= int(hi); ++d) {
         const float y = yOf(float(d));
         dl->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(255, 255, 255, 40));
-        char label[16];
+        char label[32];
         const double ms = std::pow(10.0, d);
         if (ms >= 1000)
-            std::snprintf(label, sizeof label, "%g s", ms / 1000);
+            std::snprintf(label, sizeof label, tr("%g s"), ms / 1000);
         else
-            std::snprintf(label, sizeof label, "%g ms", ms);
+            std::snprintf(label, sizeof label, tr("%g ms"), ms);
         // Above its line, except the top one (below it, inside the frame): with the height
         // above, a decade holds two labels and never overlaps its neighbours'.
         const float ty = d == int(hi) ? y + 1 : y - th - 1;
@@ -1204,7 +1205,7 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     std::string xs = "x: ";
     for (size_t i = 0; i < bvh.size(); ++i)
         xs += rows[i].scene + (i + 1 < bvh.size() ? ", " : "");
-    wrapText(xs + " (objects grow left to right)");
+    wrapText(xs + tr(" (objects grow left to right)"));
     // What the BVH buys: no-BVH time / BVH time per scene (hover a bar for its value).
     std::vector<float> speedup;
     float top = 1.0f;
@@ -1213,9 +1214,9 @@ void plotTimings(const std::vector<TimingRow>& rows) {
         top = std::max(top, speedup.back());
     }
     if (speedup.empty()) return;
-    wrapText("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):");
-    char overlay[48];
-    std::snprintf(overlay, sizeof overlay, "up to x%.0f", double(top));
+    wrapText(tr("BVH speed-up = no-BVH time / BVH time (same scenes, linear scale):"));
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, tr("up to x%.0f"), double(top));
     ImGui::PlotHistogram("##speedup", speedup.data(), int(speedup.size()), 0, overlay, 0.0f,
                          top * 1.15f, ImVec2(w, 70.0f));
 }
@@ -1229,8 +1230,8 @@ void RaytraceLab::gui() {
                      ? tr("the picture: the reference's steps (none of yours is done yet)")
                      : trf("the picture uses your %s; the reference over it as a ghost",
                            exTrace_.usedYours.c_str()));
-    wrapText(scene_.about);
-    if (ImGui::BeginCombo("scene", s.sceneName.c_str())) {
+    wrapText(tr(scene_.about.c_str())); // N_() where the scenes are made
+    if (ImGui::BeginCombo(tr("scene"), s.sceneName.c_str())) {
         for (const auto& n : builtinSceneNames())
             if (ImGui::Selectable(n.c_str(), n == s.sceneName)) {
                 std::string err;
@@ -1238,12 +1239,12 @@ void RaytraceLab::gui() {
             }
         ImGui::EndCombo();
     }
-    ImGui::TextUnformatted("file (.nff / .obj):");
-    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("load").x - 2 * ImGui::GetStyle().FramePadding.x -
-                            ImGui::GetStyle().ItemSpacing.x);
+    ImGui::TextUnformatted(tr("file (.nff / .obj):"));
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize(tr("load")).x -
+                            2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
     ImGui::InputText("##file", fileBuffer_, sizeof fileBuffer_);
     ImGui::SameLine();
-    if (ImGui::Button("load")) {
+    if (ImGui::Button(tr("load"))) {
         std::string err;
         fileError_ = loadScene(fileBuffer_, err) ? "" : err;
     }
@@ -1252,24 +1253,24 @@ void RaytraceLab::gui() {
     const std::vector<std::string> warns = warningLines(scene_);
     for (size_t i = 0; i < warns.size() && i < 6; ++i)
         wrapText(warns[i]);
-    if (warns.size() > 6) wrapf("  ... (%zu more lines on stderr)", warns.size() - 6);
-    wrapf("%zu primitives, %lld triangles drawn%s", scene_.scene->primitives.size(),
-          meshStats_.triangles, meshStats_.skipped ? " (some not drawable)" : "");
+    if (warns.size() > 6) wrapf(tr("  ... (%zu more lines on stderr)"), warns.size() - 6);
+    wrapf(tr("%zu primitives, %lld triangles drawn%s"), scene_.scene->primitives.size(),
+          meshStats_.triangles, meshStats_.skipped ? tr(" (some not drawable)") : "");
     if (meshStats_.level < 1.0 || meshStats_.standIns > 0)
-        wrapf("raster budget %lld triangles: drawn coarser (level %.2g)%s%s", meshStats_.budget,
+        wrapf(tr("raster budget %lld triangles: drawn coarser (level %.2g)%s%s"), meshStats_.budget,
               meshStats_.level, meshStats_.standIns ? ", " : "",
               meshStats_.standIns
-                  ? (std::to_string(meshStats_.standIns) + " objects as one bounding box").c_str()
+                  ? trf("%d objects as one bounding box", int(meshStats_.standIns)).c_str()
                   : "");
     int mode = s.traced ? 1 : 0;
-    ImGui::RadioButton("g: OpenGL", &mode, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("G: ray traced", &mode, 1);
+    ImGui::RadioButton(tr("g: OpenGL"), &mode, 0);
+    sameLineIfFits(tr("G: ray traced"));
+    ImGui::RadioButton(tr("G: ray traced"), &mode, 1);
     s.traced = mode == 1;
-    ImGui::Checkbox("f: GLSL Phong", &s.glsl);
-    ImGui::SameLine();
-    ImGui::Checkbox("d: heat map", &s.showDiff);
-    if (!programError_.empty()) wrapf("shader: %s", programError_.c_str());
+    ImGui::Checkbox(tr("f: GLSL Phong"), &s.glsl);
+    sameLineIfFits(tr("d: heat map"));
+    ImGui::Checkbox(tr("d: heat map"), &s.showDiff);
+    if (!programError_.empty()) wrapf(tr("shader: %s"), programError_.c_str());
 
     ImGui::Separator();
     const TraceStatus st = job_.status();
@@ -1281,28 +1282,33 @@ void RaytraceLab::gui() {
     }
     if (es.active) {
         // Up here, where it is seen without scrolling: the table and plot are at the end.
-        wrapf("timing experiment: %s; %.1f s", es.current.c_str(), es.seconds);
+        wrapf(tr("timing experiment: %s; %.1f s"), es.current.c_str(), es.seconds);
         ImGui::ProgressBar(float(es.fraction));
-        if (ImGui::Button("x: cancel experiment")) cancelExperiment();
-        if (s.traced) wrapText("The view's own trace waits while the experiment runs.");
+        if (ImGui::Button(tr("x: cancel experiment"))) cancelExperiment();
+        if (s.traced) wrapText(tr("The view's own trace waits while the experiment runs."));
         ImGui::Separator();
     }
-    wrapf("raster %.2f ms / frame", rasterMsSmooth_);
+    wrapf(tr("raster %.2f ms / frame"), rasterMsSmooth_);
     if (traceStarted_) {
         ImGui::ProgressBar(st.tilesTotal ? float(st.tilesDone) / float(st.tilesTotal) : 0.0f);
         if (st.running)
-            wrapf("tracing: %.1f s, about %.1f s left", st.seconds, st.secondsLeft);
+            wrapf(tr("tracing: %.1f s, about %.1f s left"), st.seconds, st.secondsLeft);
         else
-            wrapf("trace %.3f s (%s)%s", st.seconds, st.finished ? "finished" : "cancelled",
-                  st.finished ? "" : "");
+            wrapf(st.finished ? tr("trace %.3f s (finished)") : tr("trace %.3f s (cancelled)"),
+                  st.seconds);
         if (st.finished)
-            wrapf("trace / raster = %.0f", st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
+            wrapf(tr("trace / raster = %.0f"),
+                  st.seconds * 1000.0 / std::max(rasterMsSmooth_, 1e-6));
         // Live while tracing (tiles finished so far); one number per row, right-aligned.
         if (ImGui::BeginTable("rays", 2, ImGuiTableFlags_SizingStretchProp)) {
+            // The counts get the room of the longest (10 digits); the names wrap beside them.
+            ImGui::TableSetupColumn(tr("what"), ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableSetupColumn(tr("count"), ImGuiTableColumnFlags_WidthFixed,
+                                    ImGui::CalcTextSize("0000000000").x);
             auto row = [](const char* what, long long n) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(what);
+                ImGui::TextWrapped("%s", what);
                 ImGui::TableNextColumn();
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%lld", n);
@@ -1310,36 +1316,37 @@ void RaytraceLab::gui() {
                                      ImGui::CalcTextSize(buf).x);
                 ImGui::TextUnformatted(buf);
             };
-            row("primary rays", st.primaryRays);
-            row("secondary rays", st.secondaryRays);
-            row("shadow rays", st.shadowRays);
+            row(tr("primary rays"), st.primaryRays);
+            row(tr("secondary rays"), st.secondaryRays);
+            row(tr("shadow rays"), st.shadowRays);
             ImGui::EndTable();
         }
-        wrapf("threads %d, cancelled frames %d", st.threads, cancels_);
+        wrapf(tr("threads %d, cancelled frames %d"), st.threads, cancels_);
     }
     if (s.showDiff) {
         if (diffValid_)
-            wrapf("|raster - trace|: mean %.2f, max %d (of 255)", diff_.meanDiff, diff_.maxDiff);
+            wrapf(tr("|raster - trace|: mean %.2f, max %d (of 255)"), diff_.meanDiff,
+                  diff_.maxDiff);
         else
-            wrapText("heat map: shown when the trace is finished");
+            wrapText(tr("heat map: shown when the trace is finished"));
         heatBar();
     }
 
     ImGui::Separator();
     if (tree_) {
-        wrapf("ray tree of pixel (%d, %d), screen (%g, %g)", inspectedPixel_.x, inspectedPixel_.y,
-              inspectedScreen_.x, inspectedScreen_.y);
-        ImGui::Checkbox("draw the ray path", &s.showRayPath);
+        wrapf(tr("ray tree of pixel (%d, %d), screen (%g, %g)"), inspectedPixel_.x,
+              inspectedPixel_.y, inspectedScreen_.x, inspectedScreen_.y);
+        ImGui::Checkbox(tr("draw the ray path"), &s.showRayPath);
         for (const std::string& l : treeLines_)
             wrapText(l);
     } else {
-        wrapText("Click a pixel to see its ray tree.");
+        wrapText(tr("Click a pixel to see its ray tree."));
     }
     ImGui::Separator();
     int model = s.model == ModelKind::Course ? 0 : 1;
-    ImGui::RadioButton("course model", &model, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("phong model", &model, 1);
+    ImGui::RadioButton(tr("course model"), &model, 0);
+    sameLineIfFits(tr("phong model"));
+    ImGui::RadioButton(tr("phong model"), &model, 1);
     s.model = model == 0 ? ModelKind::Course : ModelKind::Phong;
     if (s.model == ModelKind::Course) {
         // Seed 000's SH = distScale/dist is made for its scene (lights ~60-100 units away):
@@ -1352,20 +1359,20 @@ void RaytraceLab::gui() {
             if (l.kind != rt::Light::Kind::Point || sc.distScale <= 0) continue;
             const double sh = sc.distScale / std::max(glm::length(l.position - c), 1e-9);
             if (sh > 1.5) {
-                wrapf("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
-                      "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
-                      "clamp at 255.",
+                wrapf(tr("White floor? The course model's SH = distScale/dist = %.0f/%.1f = %.1f "
+                         "here (seed 000's light is ~57 units away: SH 0.53), so lit surfaces "
+                         "clamp at 255."),
                       sc.distScale, glm::length(l.position - c), sh);
                 break;
             }
         }
     }
-    ImGui::SliderInt("depth limit", &s.maxDepth, 0, 20);
+    ImGui::SliderInt(tr("depth limit"), &s.maxDepth, 0, 20);
     float w = float(s.minWeight);
-    if (ImGui::SliderFloat("weight cut", &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
-    ImGui::SliderInt("threads", &s.threads, 0, 64, s.threads == 0 ? "all cores" : "%d");
+    if (ImGui::SliderFloat(tr("weight cut"), &w, 0.0f, 0.5f, "%.3f")) s.minWeight = w;
+    ImGui::SliderInt(tr("threads"), &s.threads, 0, 64, s.threads == 0 ? tr("all cores") : "%d");
     int res = s.divisor == 1 ? 0 : s.divisor == 2 ? 1 : 2;
-    ImGui::TextUnformatted("trace res.");
+    ImGui::TextUnformatted(tr("trace res."));
     ImGui::SameLine();
     ImGui::RadioButton("1/1", &res, 0);
     ImGui::SameLine();
@@ -1373,38 +1380,39 @@ void RaytraceLab::gui() {
     ImGui::SameLine();
     ImGui::RadioButton("1/4", &res, 2);
     s.divisor = 1 << res;
-    if (ImGui::Checkbox("b: BVH", &s.bvh)) applyAccel();
+    if (ImGui::Checkbox(tr("b: BVH"), &s.bvh)) applyAccel();
     if (!bvhAvailable_ && s.bvh)
-        wrapText("(no BVH: brute force over all objects)");
+        wrapText(tr("(no BVH: brute force over all objects)"));
     else if (scene_.accel)
-        wrapf("BVH built in %.3f ms", scene_.accelSeconds * 1e3);
+        wrapf(tr("BVH built in %.3f ms"), scene_.accelSeconds * 1e3);
     else if (s.bvh)
-        wrapText("(too few objects for a BVH: brute force)");
+        wrapText(tr("(too few objects for a BVH: brute force)"));
 
     ImGui::Separator();
     if (!es.active) {
-        if (ImGui::Button("t: run timing experiment")) startExperiment();
+        if (ImGui::Button(tr("t: run timing experiment"))) startExperiment();
         if (es.cancelled) {
             ImGui::SameLine();
-            ImGui::TextUnformatted("(cancelled)");
+            ImGui::TextWrapped("%s", tr("(cancelled)"));
         }
     } else {
-        wrapText("timing experiment running (progress at the top; x cancels)");
+        wrapText(tr("timing experiment running (progress at the top; x cancels)"));
     }
     if (!timings_.empty() &&
-        ImGui::BeginTable("timings", 5, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("scene");
+        ImGui::BeginTable("timings", 5,
+                          ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn(tr("scene"));
         // Units in the headers, numbers alone in the cells: the five columns fit the
         // 420-px panel (with "ms"/"s" in every cell the last column was cut).
-        ImGui::TableSetupColumn("raster ms");
-        ImGui::TableSetupColumn("BVH s");
-        ImGui::TableSetupColumn("no BVH s");
-        ImGui::TableSetupColumn("Mray/s");
+        ImGui::TableSetupColumn(tr("raster ms"));
+        ImGui::TableSetupColumn(tr("BVH s"));
+        ImGui::TableSetupColumn(tr("no BVH s"));
+        ImGui::TableSetupColumn(tr("Mray/s"));
         ImGui::TableHeadersRow();
         for (const TimingRow& r : timings_) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(r.scene.c_str());
+            ImGui::TextWrapped("%s", r.scene.c_str()); // wraps where a long header squeezes it
             ImGui::TableNextColumn();
             ImGui::Text("%.1f", r.rasterMs);
             ImGui::TableNextColumn();
@@ -1418,8 +1426,8 @@ void RaytraceLab::gui() {
             ImGui::Text("%.1f", r.raysPerSecond / 1e6);
         }
         ImGui::EndTable();
-        wrapText("* too few objects for a BVH (brute force in both columns); ~ estimated from "
-                 "the row above x objects, not run; Mray/s with the BVH.");
+        wrapText(tr("* too few objects for a BVH (brute force in both columns); ~ estimated from "
+                    "the row above x objects, not run; Mray/s with the BVH."));
         plotTimings(timings_);
     }
 }

@@ -135,17 +135,17 @@ void RadiosityLab::updateSelection() {
                 return;
             }
             rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
-            selectedSource_ = "GL hemicube";
+            selectedSource_ = tr("GL hemicube");
         } else {
             rad::castItemBuffer(ff.bvh(), frame, ff.deltaTable().resolution, selectedItems_);
             if (s.method == FfMethod::Rays) {
                 rad::RayFormFactorConfig rc;
                 rc.samples = s.raySamples;
                 rad::rayFormFactorRow(model_->mesh, ff.bvh(), selected_, rc, selectedRow_);
-                selectedSource_ = "rays (hemicube picture: CPU)";
+                selectedSource_ = tr("rays (hemicube picture: CPU)");
             } else {
                 rad::accumulate(selectedItems_, ff.deltaTable(), n, selected_, selectedRow_);
-                selectedSource_ = "CPU hemicube";
+                selectedSource_ = tr("CPU hemicube");
             }
         }
     } catch (const std::exception& e) {

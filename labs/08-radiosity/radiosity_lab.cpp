@@ -34,30 +34,30 @@ int hemicubeFor(const RadiosityState& s) {
 }
 
 std::vector<KeyHelp> RadiosityLab::keys() const {
-    return {{"1", "form factors by rays"},
-            {"2", "form factors by CPU hemicube"},
-            {"3", "form factors by GL hemicube"},
-            {"s", "smooth / flat"},
-            {"p", "patch outlines"},
-            {"space", "one progressive step"},
-            {"r", "run to convergence (any key stops)"},
-            {"a", "adaptive subdivision"},
-            {"[", "smaller patches"},
-            {"]", "larger patches"},
-            {"n", "next scene"},
-            {"click", "a patch: its F row and hemicube"},
+    return {{"1", tr("form factors by rays")},
+            {"2", tr("form factors by CPU hemicube")},
+            {"3", tr("form factors by GL hemicube")},
+            {"s", tr("smooth / flat")},
+            {"p", tr("patch outlines")},
+            {tr("space"), tr("one progressive step")},
+            {"r", tr("run to convergence (any key stops)")},
+            {"a", tr("adaptive subdivision")},
+            {"[", tr("smaller patches")},
+            {"]", tr("larger patches")},
+            {"n", tr("next scene")},
+            {tr("click"), tr("a patch: its F row and hemicube")},
             ex_.keyHelp()};
 }
 
 std::vector<OptionHelp> RadiosityLab::options() const {
-    return {{"scene", "NAME", "cornell, classroom or floorlamp"},
-            {"patch-size", "M", "longest patch edge in metres"},
-            {"method", "rays|cpu|gl", "form-factor method"},
-            {"solver", "progressive|jacobi|gauss-seidel", "how B = E + RFB is solved"},
-            {"hemicube", "N", "hemicube resolution (even, 8..1024)"},
-            {"rays", "K", "rays per patch pair (1..256)"},
-            {"threads", "N", "form-factor threads (0 = all cores)"},
-            {"click", "X,Y", "click the scene at pixel (X, Y) as the mouse would"},
+    return {{"scene", tr("NAME"), tr("cornell, classroom or floorlamp")},
+            {"patch-size", "M", tr("longest patch edge in metres")},
+            {"method", "rays|cpu|gl", tr("form-factor method")},
+            {"solver", "progressive|jacobi|gauss-seidel", tr("how B = E + RFB is solved")},
+            {"hemicube", "N", tr("hemicube resolution (even, 8..1024)")},
+            {"rays", "K", tr("rays per patch pair (1..256)")},
+            {"threads", "N", tr("form-factor threads (0 = all cores)")},
+            {"click", "X,Y", tr("click the scene at pixel (X, Y) as the mouse would")},
             {"steps", "N", wb::tr("headless: solve at most N steps (0: the unsolved scene)")},
             {"budget", "S", wb::tr("headless: seconds of work before drawing what there is (60)")},
             {"shooting-patch", "M",
@@ -72,8 +72,8 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         char* end = nullptr;
         const double v = std::strtod(value.c_str(), &end);
         if (value.empty() || *end || !std::isfinite(v) || v < lo || v > hi) {
-            error = "expected a number in " + std::to_string(lo) + ".." + std::to_string(hi) +
-                    ", got '" + value + "'";
+            error =
+                trf("expected a number in %g..%g, got '%s'", double(lo), double(hi), value.c_str());
             return false;
         }
         out = v;
@@ -83,7 +83,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
     if (name == "scene") {
         const auto names = rad::sceneNames();
         if (std::find(names.begin(), names.end(), value) == names.end()) {
-            error = "unknown scene '" + value + "' (cornell, classroom, floorlamp)";
+            error = trf("unknown scene '%s' (cornell, classroom, floorlamp)", value.c_str());
             return false;
         }
         s.sceneName = value;
@@ -103,7 +103,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         else if (value == "gl")
             s.method = FfMethod::GlHemicube;
         else {
-            error = "expected rays, cpu or gl, got '" + value + "'";
+            error = trf("expected rays, cpu or gl, got '%s'", value.c_str());
             return false;
         }
         return true;
@@ -116,14 +116,14 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         else if (value == "gauss-seidel")
             s.solver = 2;
         else {
-            error = "expected progressive, jacobi or gauss-seidel, got '" + value + "'";
+            error = trf("expected progressive, jacobi or gauss-seidel, got '%s'", value.c_str());
             return false;
         }
         return true;
     }
     if (name == "hemicube") {
         if (!number(8, 1024, v) || int(v) % 2 != 0 || v != std::floor(v)) {
-            error = "expected an even integer 8..1024, got '" + value + "'";
+            error = trf("expected an even integer 8..1024, got '%s'", value.c_str());
             return false;
         }
         s.hemicubeRes = int(v);
@@ -131,7 +131,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
     }
     if (name == "rays") {
         if (!number(1, 256, v) || v != std::floor(v)) {
-            error = "expected an integer 1..256, got '" + value + "'";
+            error = trf("expected an integer 1..256, got '%s'", value.c_str());
             return false;
         }
         s.raySamples = int(v);
@@ -139,7 +139,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
     }
     if (name == "threads") {
         if (!number(0, 1024, v) || v != std::floor(v)) {
-            error = "expected an integer 0..1024, got '" + value + "'";
+            error = trf("expected an integer 0..1024, got '%s'", value.c_str());
             return false;
         }
         // More threads than the hardware runs only cost memory (TBB's stacks, per-thread
@@ -160,7 +160,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         int x = 0, y = 0;
         char tail = 0;
         if (std::sscanf(value.c_str(), "%d,%d%c", &x, &y, &tail) != 2 || x < 0 || y < 0) {
-            error = "expected X,Y (a pixel of the scene view), got '" + value + "'";
+            error = trf("expected X,Y (a pixel of the scene view), got '%s'", value.c_str());
             return false;
         }
         pendingClick_ = true;
@@ -203,7 +203,7 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         s.whiteBalance = value == "on";
         return true;
     }
-    error = "unknown option --" + name;
+    error = trf("unknown option --%s", name.c_str());
     return false;
 }
 
@@ -409,7 +409,7 @@ void RadiosityLab::refine() {
         message_ = e.what();
         return;
     }
-    refineNote_ = std::to_string(split) + " patches split";
+    refineNote_ = trf("%d patches split", int(split));
     if (m->mesh.patches.size() >= size_t(kMaxPatches))
         refineNote_ += wb::trf(" (stopped at the cap of %d patches)", kMaxPatches);
     if (split == 0) return;

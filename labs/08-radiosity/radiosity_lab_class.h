@@ -20,6 +20,7 @@
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
 
+#include "core/i18n.h"
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -49,7 +50,7 @@ class RadiosityLab : public Lab {
   public:
     RadiosityState s;
 
-    std::string title() const override { return "Lab 08 - radiosity"; }
+    std::string title() const override { return tr("Lab 08 - radiosity"); }
     std::vector<KeyHelp> keys() const override;
     std::vector<OptionHelp> options() const override;
     bool setOption(const std::string& name, const std::string& value, std::string& error) override;

@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include <cfloat>
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,21 +29,21 @@ void RadiosityLab::gui() {
     // ended at 1198 steps, 1e-3) until the mouse moved. CPU only: colours and counters.
     updateColours();
     const rad::FormFactors& ff = *model_->ff;
-    ImGui::TextWrapped("%s", model_->scene.name.c_str());
-    if (!message_.empty()) ImGui::TextWrapped("note: %s", message_.c_str());
-    ImGui::Text("patches %zu (edge <= %.3f m)", model_->mesh.patches.size(), s.patchSize);
+    ImGui::TextWrapped("%s", tr(model_->scene.name.c_str()));
+    if (!message_.empty()) ImGui::TextWrapped(tr("note: %s"), message_.c_str());
+    ImGui::Text(tr("patches %zu (edge <= %.3f m)"), model_->mesh.patches.size(), s.patchSize);
     float edge = float(s.patchSize);
     if (ImGui::SliderFloat(wb::tr("patch edge, m"), &edge, 0.005f, 0.5f, "%.3f",
                            ImGuiSliderFlags_Logarithmic)) {
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) remesh(double(edge)); // the same check as [ ]
     int method = int(s.method);
-    ImGui::Text("form factors:");
-    ImGui::RadioButton("1 rays", &method, 0);
+    ImGui::Text(tr("form factors:"));
+    ImGui::RadioButton(tr("1 rays"), &method, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("2 CPU", &method, 1);
+    ImGui::RadioButton(tr("2 CPU"), &method, 1);
     ImGui::SameLine();
-    ImGui::RadioButton("3 GL", &method, 2);
+    ImGui::RadioButton(tr("3 GL"), &method, 2);
     if (method != int(s.method)) setMethod(FfMethod(method));
     if (s.method == FfMethod::Rays)
         ImGui::TextWrapped("%s",
@@ -72,9 +74,9 @@ void RadiosityLab::gui() {
                                  .c_str());
 
     ImGui::Separator();
-    const char* solvers[] = {"progressive", "Jacobi", "Gauss-Seidel"};
+    const char* solvers[] = {tr("progressive"), tr("Jacobi"), tr("Gauss-Seidel")};
     int solver = s.solver;
-    if (ImGui::Combo("solver", &solver, solvers, 3) && solver != s.solver) {
+    if (ImGui::Combo(tr("solver"), &solver, solvers, 3) && solver != s.solver) {
         s.solver = solver;
         rebuildSolver();
     }
@@ -103,11 +105,11 @@ void RadiosityLab::gui() {
             remesh(s.patchSize);
         }
     }
-    ImGui::Text("iterations %d, residual %.2e", steps_, residual_);
+    ImGui::Text(tr("iterations %d, residual %.2e"), steps_, residual_);
     if (running())
-        ImGui::Text("running %.1f s (any key stops)", secondsSince(runStart_));
+        ImGui::Text(tr("running %.1f s (any key stops)"), secondsSince(runStart_));
     else if (runSeconds_ > 0)
-        ImGui::Text("last run %.2f s", runSeconds_.load());
+        ImGui::Text(tr("last run %.2f s"), runSeconds_.load());
     if (usableSeconds_ >= 0)
         ImGui::Text("%s",
                     wb::trf("unshot light < 5%% after %.2f s", usableSeconds_.load()).c_str());
@@ -117,55 +119,56 @@ void RadiosityLab::gui() {
             lg[i] = float(std::log10(std::max(history_[i], 1e-12)));
         const float lo = *std::min_element(lg.begin(), lg.end());
         const float hi = *std::max_element(lg.begin(), lg.end());
-        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, "log10 residual", lo - 0.1f,
+        ImGui::PlotLines("##residual", lg.data(), int(lg.size()), 0, tr("log10 residual"), lo - 0.1f,
                          hi + 0.1f, ImVec2(0, 70));
     }
     float tol = float(std::log10(s.tolerance));
-    if (ImGui::SliderFloat("log10 tol", &tol, -8.0f, -1.0f, "%.1f"))
+    if (ImGui::SliderFloat(tr("log10 tol"), &tol, -8.0f, -1.0f, "%.1f"))
         s.tolerance = std::pow(10.0, double(tol));
-    if (ImGui::Checkbox("ambient term", &s.ambient)) {
+    if (ImGui::Checkbox(tr("ambient term"), &s.ambient)) {
         // The solver's config is fixed at construction: restart it with the new setting.
         rebuildSolver();
     }
-    if (ImGui::Button(running() ? "stop (r)" : "run (r)")) {
+    if (ImGui::Button(running() ? tr("stop (r)") : tr("run (r)"))) {
         if (running())
             stopRun();
         else
             startRun();
     }
     ImGui::SameLine();
-    if (ImGui::Button("step (space)") && !running()) stepOnce();
+    if (ImGui::Button(tr("step (space)")) && !running()) stepOnce();
 
     ImGui::Separator();
-    if (ImGui::Checkbox("s smooth", &s.smooth)) coloursDirty_ = true;
+    if (ImGui::Checkbox(tr("s smooth"), &s.smooth)) coloursDirty_ = true;
     ImGui::SameLine();
-    ImGui::Checkbox("p outlines", &s.outlines);
-    ImGui::Checkbox("item colours (hemicube's view)", &s.showItems);
+    ImGui::Checkbox(tr("p outlines"), &s.outlines);
+    ImGui::Checkbox(tr("item colours (hemicube's view)"), &s.showItems);
     if (ImGui::Checkbox(wb::tr("auto exposure"), &s.autoExposure)) coloursDirty_ = true;
     ImGui::SameLine();
     if (ImGui::Checkbox(wb::tr("white balance"), &s.whiteBalance)) coloursDirty_ = true;
     const float lo = float(autoExposure_ / 30.0), hi = float(autoExposure_ * 30.0);
-    if (ImGui::SliderFloat("exposure", &s.exposure, lo, hi, "%.3g", ImGuiSliderFlags_Logarithmic)) {
+    if (ImGui::SliderFloat(tr("exposure"), &s.exposure, lo, hi, "%.3g",
+                           ImGuiSliderFlags_Logarithmic)) {
         s.autoExposure = false; // the slider overrides the automatic exposure
         coloursDirty_ = true;
     }
     int res = hemicubeFor(s);
-    if (ImGui::SliderInt("hemicube", &res, 16, 1024) && res != hemicubeFor(s))
+    if (ImGui::SliderInt(tr("hemicube"), &res, 16, 1024) && res != hemicubeFor(s))
         s.hemicubeRes = std::max(8, res & ~1);
     if (ImGui::IsItemDeactivatedAfterEdit()) rebuildSolver();
     int k = s.raySamples;
-    if (ImGui::SliderInt("rays k", &k, 1, 256)) s.raySamples = k;
+    if (ImGui::SliderInt(tr("rays k"), &k, 1, 256)) s.raySamples = k;
     if (ImGui::IsItemDeactivatedAfterEdit()) rebuildSolver();
     if (!refineNote_.empty()) ImGui::Text("a: %s", refineNote_.c_str());
 
     ImGui::Separator();
     if (selected_ >= 0 && !selectedRow_.empty()) {
         const rad::Patch& p = model_->mesh.patches[size_t(selected_)];
-        ImGui::TextWrapped("patch %d on %s", selected_,
+        ImGui::TextWrapped(tr("patch %d on %s"), selected_,
                            model_->mesh.surfaces[size_t(p.surface)].name.c_str());
-        ImGui::Text("row by %s", selectedSource_.c_str());
-        ImGui::Text("sum F = %.4f, max %.2e", selectedRowSum_, selectedRowMax_);
-        ImGui::Text("%.1f ms, hemicube %d", selectedSeconds_ * 1e3, selectedItems_.resolution);
+        ImGui::Text(tr("row by %s"), selectedSource_.c_str());
+        ImGui::Text(tr("sum F = %.4f, max %.2e"), selectedRowSum_, selectedRowMax_);
+        ImGui::Text(tr("%.1f ms, hemicube %d"), selectedSeconds_ * 1e3, selectedItems_.resolution);
         ImGui::TextWrapped("%s",
                            wb::trf("Scene: F from this patch, log scale; colour bar on the right: "
                                    "%.1e (bottom) to %.1e (top, white), a tick per decade. Upper "
@@ -176,7 +179,7 @@ void RadiosityLab::gui() {
             ImGui::Image(reinterpret_cast<ImTextureID>(uintptr_t(overlayTexture_)),
                          ImVec2(160, 160), ImVec2(0, 1), ImVec2(1, 0));
     } else {
-        ImGui::TextWrapped("Click a patch to see its form-factor row and its hemicube.");
+        ImGui::TextWrapped(tr("Click a patch to see its form-factor row and its hemicube."));
     }
 }
 

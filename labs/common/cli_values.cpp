@@ -31,13 +31,13 @@ bool parseSize(const std::string& s, int maxSide, int& width, int& height) {
 }
 
 std::string sizeError(const std::string& flag, const std::string& value, int maxSide) {
-    return flag + " '" + value + "': expected WxH with 1 <= W,H <= " + std::to_string(maxSide);
+    return trf("%s '%s': expected WxH with 1 <= W,H <= %d", flag.c_str(), value.c_str(), maxSide);
 }
 
 bool parseThreads(const std::string& flag, const std::string& s, int& threads, std::string& error) {
     if (parseInt(s, 0, kMaxThreads, threads)) return true;
-    error = flag + " '" + s + "': expected a thread count 0.." + std::to_string(kMaxThreads) +
-            " (0 = all cores)";
+    error = trf("%s '%s': expected a thread count 0..%d (0 = all cores)", flag.c_str(), s.c_str(),
+                int(kMaxThreads));
     return false;
 }
 

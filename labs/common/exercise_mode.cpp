@@ -87,7 +87,8 @@ struct ExerciseMode::Impl {
     bool on = false;
     bool started = false;
     bool watch = true;
-    int extraFrames = 0; // frames still to draw after a change (the panel is laid out before draw())
+    int extraFrames =
+        0; // frames still to draw after a change (the panel is laid out before draw())
     bool shellPolls = false; // the window polls on a timer (it asked pollMs()): no redraws to watch
     std::string source, compileScript, checker, liveDir, builtObject;
     double sourceTime = 0; // mtime of the source the current object was built from
@@ -342,8 +343,11 @@ void ExerciseMode::gui() {
     Impl& m = *impl_;
     if (!ImGui::CollapsingHeader(tr("Exercises"), ImGuiTreeNodeFlags_DefaultOpen)) return;
     bool onNow = m.on;
-    if (ImGui::Checkbox(trf("your code (%c); the reference as a ghost", key_).c_str(), &onNow))
-        setOn(onNow);
+    // The label wraps beside the box (a checkbox's own label does not, and a longer language
+    // ran it past the panel's edge).
+    if (ImGui::Checkbox("##exercise-on", &onNow)) setOn(onNow);
+    ImGui::SameLine();
+    ImGui::TextWrapped("%s", trf("your code (%c); the reference as a ghost", key_).c_str());
     ImGui::TextWrapped("%s", trf("your file: %s", lab_.file.c_str()).c_str());
     if (!m.started) {
         ImGui::TextWrapped("%s",

@@ -47,7 +47,7 @@ class ExerciseMode {
     // without redrawing (busy() stops counting the watch once the shell polls).
     int pollMs() const;
     bool shellPoll();
-    void gui();        // the panel section
+    void gui(); // the panel section
 
     // The student's table (Table of the lab's exercises.h), nullptr when none is loaded.
     template <class Table> const Table* studentTable() const {

@@ -24,6 +24,8 @@ class ImGuiInput {
     void mouse(int button, int state, int x, int y, int mods);
     void wheel(int direction, int x, int y, int mods);
     void motion(int x, int y);
+    // A typed character GLUT cannot give (beyond Latin-1: Cyrillic), read from X (x_keyboard.h).
+    void character(unsigned c) { push({Type::Char, int(c), true, 0, 0, 0.0f, -1}); }
 
     // Before ImGui::NewFrame(): applies queued events to io (see above).
     void applyToFrame(ImGuiIO& io);

@@ -29,7 +29,8 @@ struct View {
     float pitch = 0.0f;    // degrees about the horizontal axis, from mouse drag
     float zoom = 1.0f;     // > 0; 1 is the lab's default framing, wheel and +/- scale by 1.1
     bool headless = false; // true when drawing into OSMesa for a PNG
-    double time = 0.0;     // seconds since start (0 in headless renders); frames come on change only, see busy()
+    double time =
+        0.0; // seconds since start (0 in headless renders); frames come on change only, see busy()
 };
 
 // One line of the "Keys:" list shown in the panel and in --help.
@@ -46,10 +47,10 @@ struct OptionHelp {
 };
 
 class Lab {
-public:
+  public:
     virtual ~Lab() = default;
-    virtual std::string title() const = 0;           // e.g. "Lab 01 - affine maps"
-    virtual std::vector<KeyHelp> keys() const = 0;   // every key the lab reacts to
+    virtual std::string title() const = 0;         // e.g. "Lab 01 - affine maps"
+    virtual std::vector<KeyHelp> keys() const = 0; // every key the lab reacts to
     virtual std::vector<OptionHelp> options() const { return {}; }
     // Called before init() for each lab option given; return false and set error to reject it.
     virtual bool setOption(const std::string& name, const std::string& value, std::string& error) {
@@ -57,15 +58,15 @@ public:
         error = "unknown option --" + name;
         return false;
     }
-    virtual void init() {}                // a GL context is current
+    virtual void init() {} // a GL context is current
     virtual void draw(const View& view) = 0;
-    virtual bool key(int key) = 0;        // true when the key was used
+    virtual bool key(int key) = 0; // true when the key was used
     // Mouse click in window pixels (y down); true when the lab used it (no drag-rotate then).
     virtual bool click(int x, int y, const View& view) {
         (void)x, (void)y, (void)view;
         return false;
     }
-    virtual void gui() {}                 // ImGui widgets for the lab's parameters
+    virtual void gui() {} // ImGui widgets for the lab's parameters
     // True when the panel is the whole user interface (the launcher): it fills the window.
     virtual bool panelFillsWindow() const { return false; }
     // True while the picture changes without input (work in the background, an animation):

@@ -1,6 +1,9 @@
 #include "options.h"
 
 #include "cli_values.h"
+#include "keyboard_layout.h"
+
+#include "core/i18n.h"
 
 #include <CLI/CLI.hpp>
 
@@ -16,8 +19,8 @@ namespace {
 constexpr int kMaxSide = 8192;
 
 // The flags the shell declares that take a value (see cli::joinValues).
-const std::vector<std::string> kValueFlags = {"--out",    "--size",       "--keys",    "--root",
-                                              "--frames", "--screenshot", "--ui-scale"};
+const std::vector<std::string> kValueFlags = {"--out",    "--size",       "--keys",     "--root",
+                                              "--frames", "--screenshot", "--ui-scale", "--lang"};
 
 bool parseScale(const std::string& s, float& out) {
     char* end = nullptr;
@@ -27,7 +30,24 @@ bool parseScale(const std::string& s, float& out) {
     return true;
 }
 
+// "en, ru, qps" for the messages about --lang.
+std::string languageList() {
+    std::string list;
+    for (const auto& code : languages())
+        list += (list.empty() ? "" : ", ") + code;
+    return list;
+}
+
 } // namespace
+
+bool applyLanguageFlag(int argc, const char* const* argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--lang" && i + 1 < argc) return setLanguage(argv[i + 1]);
+        if (arg.rfind("--lang=", 0) == 0) return setLanguage(arg.substr(7));
+    }
+    return true;
+}
 
 bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHelp>& labOptions,
                   ShellOptions& o, std::string& error) {
@@ -46,7 +66,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     app.add_flag("--headless", o.headless);
     app.add_flag("-h,--help", o.help);
     app.add_option_function<std::string>("--out", [&](const std::string& v) {
-        check("--out", !v.empty(), "--out needs a file name");
+        check("--out", !v.empty(), tr("--out needs a file name"));
         o.out = v;
     });
     CLI::Option* size =
@@ -60,15 +80,20 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     app.add_option("--root", o.root);
     app.add_option_function<std::string>("--frames", [&](const std::string& v) {
         check("--frames", cli::parseInt(v, 1, 1000000, o.frames),
-              "--frames '" + v + "': expected a positive count");
+              trf("--frames '%s': expected a positive count", v.c_str()));
     });
     app.add_flag("--smoke", o.smoke);
     app.add_option("--screenshot", o.screenshot);
     app.add_option_function<std::string>("--ui-scale", [&](const std::string& v) {
         check("--ui-scale", parseScale(v, o.uiScale),
-              "--ui-scale '" + v + "': expected a number from 0.5 to 4 (1 = normal size)");
+              trf("--ui-scale '%s': expected a number from 0.5 to 4 (1 = normal size)", v.c_str()));
     });
     app.add_flag("--check-panel", o.checkPanel);
+    app.add_option_function<std::string>("--lang", [&](const std::string& v) {
+        check("--lang", setLanguage(v),
+              trf("--lang '%s': expected one of %s", v.c_str(), languageList().c_str()));
+        o.lang = v;
+    });
 
     // The lab's own options, kept in command-line order for Lab::setOption.
     std::vector<std::string> valueFlags = kValueFlags;
@@ -87,7 +112,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
             }
         }
     } catch (const CLI::Error& e) {
-        error = std::string("the lab's options clash with the shell's: ") + e.what();
+        error = trf("the lab's options clash with the shell's: %s", e.what());
         return false;
     }
 
@@ -104,7 +129,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
             // The only other failure left: a value flag last on the line, e.g. `--out`.
             std::string what = e.what();
             auto colon = what.find(':');
-            error = (colon != std::string::npos ? what.substr(0, colon) : what) + " needs a value";
+            error = trf("%s needs a value",
+                        (colon != std::string::npos ? what.substr(0, colon) : what).c_str());
         }
         return false;
     }
@@ -112,8 +138,8 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
     const auto extras = app.remaining();
     if (!extras.empty()) {
         const std::string& arg = extras.front();
-        error = arg.rfind('-', 0) == 0 ? "unknown option " + arg + " (see --help)"
-                                       : "unexpected argument '" + arg + "' (see --help)";
+        error = arg.rfind('-', 0) == 0 ? trf("unknown option %s (see --help)", arg.c_str())
+                                       : trf("unexpected argument '%s' (see --help)", arg.c_str());
         return false;
     }
     std::vector<size_t> seen(labOptions.size(), 0);
@@ -125,7 +151,7 @@ bool parseOptions(int argc, const char* const* argv, const std::vector<OptionHel
                     labOptions[i].name, labOptions[i].argument.empty() ? "1" : labValues[i].at(k));
             }
     if (o.headless && o.out.empty() && !o.help && !o.checkPanel) {
-        error = "--headless needs --out FILE.png";
+        error = tr("--headless needs --out FILE.png");
         return false;
     }
     return true;
@@ -140,6 +166,18 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
     codes.clear();
     for (size_t i = 0; i < keys.size(); ++i) {
         char c = keys[i];
+        if (static_cast<unsigned char>(c) >= 0x80) { // typed on the Russian layout: 'п' is 'g'
+            const size_t at = i;
+            const int us = usKeyForRussian(decodeUtf8(keys, i));
+            if (us < 0) {
+                error = trf("--keys: '%s' is not a key of the US or Russian layout",
+                            keys.substr(at, i - at).c_str());
+                return false;
+            }
+            codes.push_back(us);
+            --i; // the loop steps past the character's last byte
+            continue;
+        }
         if (c != '{') {
             codes.push_back(static_cast<unsigned char>(c));
             continue;
@@ -151,7 +189,7 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
         }
         auto end = keys.find('}', i);
         if (end == std::string::npos) {
-            error = "--keys: unclosed '{' at position " + std::to_string(i);
+            error = trf("--keys: unclosed '{' at position %zu", i);
             return false;
         }
         std::string name = keys.substr(i + 1, end - i - 1);
@@ -163,7 +201,7 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
             cli::parseInt(name.substr(1), 1, 12, f))
             code = kKeyF1 + f - 1;
         if (code < 0) {
-            error = "--keys: unknown key name {" + name + "}";
+            error = trf("--keys: unknown key name {%s}", name.c_str());
             return false;
         }
         codes.push_back(code);
@@ -215,44 +253,58 @@ std::string usageText(const std::string& program, const Lab& lab) {
     const std::string window =
         std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
     std::ostringstream s;
-    s << lab.title() << "\n\n"
-      << "usage: " << program << " [options]\n\n"
-      << "  --headless            render with OSMesa (no window) and exit; needs --out\n"
-      << "  --out FILE.png        where the headless render goes\n";
+    s << lab.title() << "\n\n" << trf("usage: %s [options]", program.c_str()) << "\n\n";
+    // One flag and its help, the help starting in column 24 (continuation lines too).
+    auto flag = [&s](const std::string& name, const std::string& help) {
+        s << "  " << name << std::string(name.size() < 22 ? 22 - name.size() : 1, ' ');
+        for (char c : help)
+            s << c << (c == '\n' ? std::string(24, ' ') : "");
+        s << "\n";
+    };
+    flag("--headless", tr("render with OSMesa (no window) and exit; needs --out"));
+    flag("--out FILE.png", tr("where the headless render goes"));
     if (fills)
-        s << "  --size WxH            window size in pixels (default " << window << ")\n";
+        flag("--size WxH", trf("window size in pixels (default %s)", window.c_str()));
     else
-        s << "  --size WxH            headless: image size (default " << image
-          << "); windowed: the scene's\n"
-          << "                        size, the panel (" << kPanelWidth
-          << " px at --ui-scale 1) is added beside it:\n"
-          << "                        the window opens at " << window << " by default,\n"
-          << "                        less where the screen is smaller (it always fits)\n";
-    s << "  --ui-scale X          panel text and widgets X times larger, 0.5..4 (projector: 2);\n"
-      << "                        in the window also Ctrl+= / Ctrl+- or the panel's View slider\n"
-      << "  --keys \"...\"          keys replayed before drawing, e.g. \"1g{left}\"\n"
-      << "  --root DIR            folder with assets/ and shaders/ (default: the source tree;\n"
-      << "                        the WORKBENCH_ROOT environment variable also sets it)\n"
-      << "  --frames N            windowed: quit after N frames (smoke tests)\n"
-      << "  --screenshot FILE.png windowed: save the last frame before quitting\n"
-      << "  --smoke               windowed: press each one-letter key of the lab twice, a frame "
-         "apart\n"
-      << "  --check-panel         lay the panel out as the window has it on 1024x768, 1280x800,\n"
-      << "                        1600x1000 and 1920x1080 screens (after --keys, then after each\n"
-      << "                        one-letter key) and fail if any text is clipped (no window)\n";
-    for (const auto& o : lab.options()) {
-        std::string flag = "--" + o.name + (o.argument.empty() ? "" : " " + o.argument);
-        s << "  " << flag << std::string(flag.size() < 22 ? 22 - flag.size() : 1, ' ') << o.what
-          << "\n";
-    }
-    s << "\nKeys:\n";
+        flag("--size WxH", trf("headless: image size (default %s); windowed: the scene's\nsize, "
+                               "the panel (%d px at --ui-scale 1) is added beside it:\nthe window "
+                               "opens at %s by default,\nless where the screen is smaller (it "
+                               "always fits)",
+                               image.c_str(), kPanelWidth, window.c_str()));
+    flag("--ui-scale X", tr("panel text and widgets X times larger, 0.5..4 (projector: 2);\nin the "
+                            "window also Ctrl+= / Ctrl+- or the panel's View slider"));
+    flag("--lang ru|en", tr("the language of the window and messages (else LANGUAGE, LC_ALL,\n"
+                            "LC_MESSAGES, LANG; qps: the pseudo-language that shows\n"
+                            "untranslated text)"));
+    flag("--keys \"...\"", tr("keys replayed before drawing, e.g. \"1g{left}\"; Russian-layout\n"
+                              "letters mean the key at the same place (\"п\" is g)"));
+    flag("--root DIR", tr("folder with assets/ and shaders/ (default: the source tree;\nthe "
+                          "WORKBENCH_ROOT environment variable also sets it)"));
+    flag("--frames N", tr("windowed: quit after N frames (smoke tests)"));
+    flag("--screenshot FILE.png", tr("windowed: save the last frame before quitting"));
+    flag("--smoke", tr("windowed: press each one-letter key of the lab twice, a frame apart"));
+    flag("--check-panel", tr("lay the panel out as the window has it on 1024x768, 1280x800,\n"
+                             "1600x1000 and 1920x1080 screens (after --keys, then after each\n"
+                             "one-letter key) and fail if any text is clipped (no window)"));
+    for (const auto& o : lab.options())
+        flag("--" + o.name + (o.argument.empty() ? "" : " " + o.argument), o.what);
+    s << "\n" << tr("Keys:") << "\n";
+    // Padded by characters, not bytes: "← →" and "перетаскивание" are UTF-8.
+    auto key = [&s](const std::string& name, const std::string& what) {
+        size_t width = 0;
+        for (unsigned char c : name)
+            width += (c & 0xC0) != 0x80;
+        s << "  " << name << std::string(width < 10 ? 10 - width : 1, ' ') << what << "\n";
+    };
     for (const auto& k : lab.keys())
-        s << "  " << k.key << std::string(k.key.size() < 10 ? 10 - k.key.size() : 1, ' ') << k.what
-          << "\n";
-    if (!fills)
-        s << "  h         hide/show the panel\n  +/-       zoom (also the wheel)\n  drag      "
-             "rotate the scene\n";
-    s << "  Ctrl+= / Ctrl+-  larger / smaller panel text\n  Esc       quit\n";
+        key(k.key, k.what);
+    if (!fills) {
+        key("h", tr("hide/show the panel"));
+        key("+/-", tr("zoom (also the wheel)"));
+        key(tr("drag"), tr("rotate the scene"));
+    }
+    s << "  Ctrl+= / Ctrl+-  " << tr("larger / smaller panel text") << "\n";
+    s << "  Esc       " << tr("quit") << "\n";
     return s.str();
 }
 

@@ -1,11 +1,15 @@
 #include "panel.h"
 
+#include "keyboard_layout.h"
 #include "options.h"
+
+#include "core/i18n.h"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sys/stat.h>
 
 namespace wb {
@@ -23,6 +27,41 @@ ImFont* g_mono = nullptr;
 bool isFile(const char* path) {
     struct stat st {};
     return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
+// Every character a panel may show in any language: ASCII and Latin-1, the Cyrillic alphabet
+// (file names, typed text), and each character of every catalogue string, its English and its
+// translations (③, ×, —, ≤, ², arrows...; the pseudo-language's accents). Taken from the
+// catalogues themselves, so a new string cannot bring a character the font lacks (the glyph test
+// checks the atlas against the same catalogues).
+const ImWchar* glyphRanges() {
+    static std::vector<ImWchar> ranges;
+    if (!ranges.empty()) return ranges.data();
+    std::set<char32_t> chars;
+    for (char32_t c = 0x20; c <= 0xFF; ++c)
+        chars.insert(c);
+    for (char32_t c = 0x400; c <= 0x45F; ++c)
+        chars.insert(c);
+    chars.insert(0xFFFD); // ImGui's fallback for what is still missing
+    auto add = [&](std::string_view text) {
+        const std::string s(text);
+        for (size_t i = 0; i < s.size();)
+            chars.insert(decodeUtf8(s, i));
+    };
+    for (const auto& code : languages())
+        for (const auto& m : i18n::messages(code)) {
+            add(m.id);
+            add(m.str);
+        }
+    for (char32_t c : chars) {
+        if (c < 0x20 || c > 0xFFFF) continue; // ImWchar is 16 bits in Debian's ImGui
+        if (ranges.size() >= 2 && ranges.back() + 1 == ImWchar(c))
+            ranges.back() = ImWchar(c);
+        else
+            ranges.insert(ranges.end(), {ImWchar(c), ImWchar(c)});
+    }
+    ranges.push_back(0);
+    return ranges.data();
 }
 
 } // namespace
@@ -46,11 +85,14 @@ std::string setupImGuiFonts(float scale) {
     ImFontConfig config;
     config.OversampleH = 2; // sharper glyph edges at fractional positions
     const float pixels = std::round(kFontPixels * scale);
-    if (isFile(kSansPath) && io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &config)) {
-        if (isFile(kMonoPath)) g_mono = io.Fonts->AddFontFromFileTTF(kMonoPath, pixels, &config);
+    const ImWchar* ranges = glyphRanges();
+    if (isFile(kSansPath) && io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &config, ranges)) {
+        if (isFile(kMonoPath))
+            g_mono = io.Fonts->AddFontFromFileTTF(kMonoPath, pixels, &config, ranges);
     } else {
-        message = std::string(kSansPath) +
-                  " not found (Debian package fonts-dejavu-core): using ImGui's built-in font";
+        message = trf("%s not found (Debian package fonts-dejavu-core): using ImGui's built-in "
+                      "font",
+                      kSansPath);
         ImFontConfig builtIn;
         builtIn.SizePixels = std::round(13.0f * scale);
         io.Fonts->AddFontDefault(&builtIn);
@@ -65,6 +107,18 @@ std::string setupImGuiFonts(float scale) {
 
 ImFont* panelMonoFont() {
     return g_mono ? g_mono : ImGui::GetFont();
+}
+
+std::string idLabel(const char* label, const char* id) {
+    return std::string(label) + "###" + id;
+}
+
+void sameLineIfFits(const char* nextLabel) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float width = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                        ImGui::CalcTextSize(nextLabel, nullptr, true).x;
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
 namespace {
@@ -109,47 +163,61 @@ void drawPanel(Lab& lab, PanelState& p, float windowWidth, float windowHeight,
             ImGui::SetNextWindowSize(ImVec2(p.width, windowHeight), ImGuiCond_Always);
         }
     }
-    ImGui::Begin(lab.title().c_str(), nullptr, flags);
+    // "###panel": the same ImGui window (size, scroll) whatever language the title is in.
+    ImGui::Begin((lab.title() + "###panel").c_str(), nullptr, flags);
     if (!fills) p.width = ImGui::GetWindowWidth();
 
     if (p.measureFps)
-        ImGui::Text("%.2f ms/frame (%.0f fps)", p.frameMs,
+        ImGui::Text(tr("%.2f ms/frame (%.0f fps)"), p.frameMs,
                     p.frameMs > 0 ? 1000.0 / p.frameMs : 0.0);
     else
-        ImGui::Text("%.2f ms/frame", p.frameMs);
-    ImGui::SameLine();
-    ImGui::Checkbox("measure fps", &p.measureFps);
+        ImGui::Text(tr("%.2f ms/frame"), p.frameMs);
+    sameLineIfFits(tr("measure fps"));
+    ImGui::Checkbox(tr("measure fps"), &p.measureFps);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "Redraw continuously (one core busy); off, the window redraws only on a change");
-    if (ImGui::Button("Screenshot (PNG)")) p.screenshotRequested = true;
+        ImGui::SetTooltip("%s", tr("Redraw continuously (one core busy); off, the window redraws "
+                                   "only on a change"));
+    if (ImGui::Button(tr("Screenshot (PNG)"))) p.screenshotRequested = true;
     if (!p.lastScreenshot.empty()) ImGui::TextWrapped("%s", p.lastScreenshot.c_str());
 
+    // Half the width for a widget, half for its label (ImGui's default gives the label a third,
+    // too little for the Russian labels).
+    ImGui::PushItemWidth(std::floor(ImGui::GetContentRegionAvail().x * 0.5f));
     if (fills)
         lab.gui(); // the panel is the whole program (the launcher): no header above it
-    else if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen))
+    else if (ImGui::CollapsingHeader(idLabel(tr("Parameters"), "params").c_str(),
+                                     ImGuiTreeNodeFlags_DefaultOpen))
         lab.gui();
-    if (ImGui::CollapsingHeader("View")) {
-        ImGui::TextUnformatted("UI scale (Ctrl+= / Ctrl+-)");
+    ImGui::PopItemWidth();
+    if (ImGui::CollapsingHeader(idLabel(tr("View"), "view").c_str())) {
+        ImGui::TextUnformatted(tr("UI scale (Ctrl+= / Ctrl+-)"));
         ImGui::SetNextItemWidth(-1.0f);
         ImGui::SliderFloat("##uiscale", &p.requestedScale, kMinUiScale, kMaxUiScale, "%.2f");
         p.scaleSliderActive =
             ImGui::IsItemActive(); // the shell applies the scale when it is let go
         if (!p.scaleNote.empty()) ImGui::TextWrapped("%s", p.scaleNote.c_str());
         if (!fills)
-            ImGui::TextWrapped("Drag the panel's left edge to make it wider (now %.0f px).",
-                               p.width);
+            ImGui::TextWrapped(tr("Drag the panel's left edge to make it wider (now %.0f px)."),
+                               double(p.width));
+        // The language switches at once: every string is looked up again in the next frame.
+        ImGui::TextUnformatted(tr("Language"));
+        for (const auto& code : languages()) {
+            if (ImGui::RadioButton(languageName(code), language() == code)) setLanguage(code);
+            ImGui::SameLine();
+        }
+        ImGui::NewLine();
     }
     // The launcher's keys are the numbers on its cards: its list starts closed.
-    if (ImGui::CollapsingHeader("Keys", fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader(idLabel(tr("Keys"), "keys").c_str(),
+                                fills ? 0 : ImGuiTreeNodeFlags_DefaultOpen)) {
         std::vector<KeyHelp> keys = lab.keys();
         if (p.keysLikeShell && !fills) {
-            keys.push_back({"h", "hide/show this panel"});
-            keys.push_back({"+ -", "zoom (also the wheel)"});
-            keys.push_back({"drag", "rotate the scene"});
+            keys.push_back({"h", tr("hide/show this panel")});
+            keys.push_back({"+ -", tr("zoom (also the wheel)")});
+            keys.push_back({tr("drag"), tr("rotate the scene")});
         }
-        keys.push_back({"Ctrl+= Ctrl+-", "larger / smaller panel text"});
-        keys.push_back({"Esc", "quit"});
+        keys.push_back({"Ctrl+= Ctrl+-", tr("larger / smaller panel text")});
+        keys.push_back({"Esc", tr("quit")});
         keyTable(keys);
     }
     ImGui::End();

@@ -47,6 +47,15 @@ float defaultPanelWidth(float scale);
 void drawPanel(Lab& lab, PanelState& state, float windowWidth, float windowHeight,
                bool alwaysScrollbar = false);
 
+// `label` shown, `id` as ImGui's id ("label###id"): a header or window keeps its state (open,
+// size, scroll) when the language switches and its label changes.
+std::string idLabel(const char* label, const char* id);
+
+// ImGui::SameLine() when a checkbox or radio button labelled `nextLabel` still fits on the line,
+// else nothing (it starts the next line): a row of options that fits in English may not in
+// Russian, whose words run 20-30% longer.
+void sameLineIfFits(const char* nextLabel);
+
 // Ctrl+= / Ctrl+- / Ctrl+0 steps of the UI scale, clamped to kMinUiScale..kMaxUiScale.
 float stepUiScale(float scale, int direction);
 

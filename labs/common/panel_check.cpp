@@ -4,6 +4,7 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 namespace wb::panelcheck {
@@ -16,11 +17,23 @@ constexpr float kTolerancePx = 1.0f;
 
 bool g_recording = false;
 std::vector<ClippedText> g_found;
+std::vector<std::string> g_drawn;
+
+void drawn(const char* text, const char* end) {
+    std::string s(text, size_t(end - text));
+    if (std::find(g_drawn.begin(), g_drawn.end(), s) == g_drawn.end()) g_drawn.push_back(s);
+}
+
+// Words that stay as they are in every language: what is printed on the keys and the languages'
+// own names in View > Language.
+const char* const kAllowedWords[] = {"Esc",  "Ctrl", "Shift", "Alt",   "PgUp",    "PgDn",
+                                     "Home", "End",  "Tab",   "Enter", "English", "Pseudo"};
 
 void record(const char* text, const char* end, float left, float right, float clipMin,
             float clipMax, float top, float bottom) {
     const ImGuiWindow* window = GImGui->CurrentWindow;
     if (!g_recording || !window || end <= text) return;
+    drawn(text, end);
     const ImVec4 clip = window->DrawList->_CmdHeader.ClipRect; // what the GPU will clip to
     if (bottom <= clip.y || top >= clip.w) return;             // scrolled out of view: not drawn
     const float visibleMax = std::min(clipMax, clip.z), visibleMin = std::max(clipMin, clip.x);
@@ -44,7 +57,67 @@ const char* endOf(const char* text, const char* end) {
 
 void start() {
     g_found.clear();
+    g_drawn.clear();
     g_recording = true;
+}
+
+const std::vector<std::string>& drawnTexts() {
+    return g_drawn;
+}
+
+std::string untranslatedWords(const std::string& text) {
+    // Outside brackets only (they nest: "[a [b] c]" is one catalogue string holding another).
+    std::string outside;
+    int depth = 0;
+    for (char c : text) {
+        if (c == '[') ++depth;
+        if (depth == 0) outside += c;
+        if (c == ']' && depth > 0) {
+            --depth;
+            outside += ' ';
+        }
+    }
+    auto isLetter = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); };
+    std::string found;
+    size_t i = 0;
+    while (i < outside.size()) {
+        // A token: up to white space.
+        while (i < outside.size() && std::isspace(static_cast<unsigned char>(outside[i])))
+            ++i;
+        size_t j = i;
+        while (j < outside.size() && !std::isspace(static_cast<unsigned char>(outside[j])))
+            ++j;
+        const std::string token = outside.substr(i, j - i);
+        i = j;
+        if (token.find_first_of("0123456789_.\\") != std::string::npos) continue; // a value
+        // An identifier the user types (a scene name: two-spheres, glass-cube).
+        bool hyphenated = false;
+        for (size_t k = 1; k + 1 < token.size(); ++k)
+            hyphenated = hyphenated || (token[k] == '-' && isLetter(token[k - 1]) && isLetter(token[k + 1]));
+        if (hyphenated) continue;
+        // A word of a pseudo-translation (accented) whose brackets are on another line.
+        bool nonAscii = false;
+        for (char c : token)
+            nonAscii = nonAscii || static_cast<unsigned char>(c) >= 0x80;
+        if (nonAscii) continue;
+        for (size_t k = 0; k < token.size();) {
+            if (!isLetter(token[k])) {
+                ++k;
+                continue;
+            }
+            size_t e = k;
+            while (e < token.size() && isLetter(token[e]))
+                ++e;
+            const std::string word = token.substr(k, e - k);
+            k = e;
+            if (word.size() == 1) continue;
+            bool allowed = false;
+            for (const char* w : kAllowedWords)
+                allowed = allowed || word == w;
+            if (!allowed) found += (found.empty() ? "" : " ") + word;
+        }
+    }
+    return found;
 }
 
 std::vector<ClippedText> stop() {

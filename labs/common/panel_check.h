@@ -19,4 +19,17 @@ struct ClippedText {
 void start();                    // from now on, record clipped text
 std::vector<ClippedText> stop(); // stop recording; what was clipped, each string once
 
+// Every text drawn between start() and stop(), each once (for the pseudo-language check).
+const std::vector<std::string>& drawnTexts();
+
+// Under the pseudo-language (--lang qps) every catalogue string is drawn in [brackets]
+// (core/i18n.h, i18n::pseudo): the words of `text` outside brackets that are English, i.e. did
+// not come through the catalogue. Runs of Latin letters are allowed when they are one letter
+// (key names, variables: g, K, x), part of a value (a token with a digit, '_', '.' or '\':
+// numbers with units, file names, GL_LIGHT0; or a hyphenated-name: scene names), in a token
+// with a non-ASCII letter (a pseudo-translated word cut off from its brackets where a lab wraps
+// lines itself; Cyrillic) or named in kAllowedWords (key caps, language names).
+// Empty when the text is clean.
+std::string untranslatedWords(const std::string& text);
+
 } // namespace wb::panelcheck

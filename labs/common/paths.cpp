@@ -43,7 +43,11 @@ std::string& rootStorage() {
 void setAssetRoot(const std::string& root) {
     if (!root.empty()) rootStorage() = root;
 }
-const std::string& assetRoot() { return rootStorage(); }
-std::string assetPath(const std::string& relative) { return assetRoot() + "/" + relative; }
+const std::string& assetRoot() {
+    return rootStorage();
+}
+std::string assetPath(const std::string& relative) {
+    return assetRoot() + "/" + relative;
+}
 
 } // namespace wb

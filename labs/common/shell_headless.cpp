@@ -53,7 +53,8 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     const int width = opts.width, height = opts.height;
     const HeadlessContext context(width, height);
     if (!context.ok()) {
-        std::fprintf(stderr, "%s: OSMesa: cannot create a %dx%d context\n", program, width, height);
+        std::fprintf(stderr, tr("%s: OSMesa: cannot create a %dx%d context\n"), program, width,
+                     height);
         return 1;
     }
     View view;
@@ -69,7 +70,9 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;
     std::vector<std::string> reported; // each text once, with the first state it was seen in
-    int clipped = 0;
+    int clipped = 0, untranslated = 0;
+    // --lang qps: every text must have come through the catalogue (panel_check.h).
+    const bool pseudo = language() == "qps";
     // The window a user opens (default scene size); --size only sizes the context here.
     ShellOptions asOpened;
     asOpened.uiScale = opts.uiScale;
@@ -109,10 +112,21 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
             for (const auto& c : panelcheck::stop()) {
                 if (std::find(reported.begin(), reported.end(), c.text) != reported.end()) continue;
                 reported.push_back(c.text);
-                std::printf("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s) %s\n", program,
-                            state.c_str(), c.text.c_str(), double(c.overflow), c.window.c_str(),
-                            where.c_str());
+                std::printf(tr("%s: clipped %s: \"%s\" runs %.0f px past the edge (%s) %s\n"),
+                            program, state.c_str(), c.text.c_str(), double(c.overflow),
+                            c.window.c_str(), where.c_str());
                 ++clipped;
+            }
+            for (const auto& text :
+                 pseudo ? panelcheck::drawnTexts() : std::vector<std::string>{}) {
+                const std::string words = panelcheck::untranslatedWords(text);
+                if (words.empty() ||
+                    std::find(reported.begin(), reported.end(), text) != reported.end())
+                    continue;
+                reported.push_back(text);
+                std::printf(tr("%s: untranslated %s: \"%s\" (English: %s)\n"), program,
+                            state.c_str(), text.c_str(), words.c_str());
+                ++untranslated;
             }
         };
         check(keys.empty() ? "at start" : "after --keys");
@@ -122,18 +136,22 @@ int checkPanel(const char* program, Lab& lab, const ShellOptions& opts,
             if (!shellKey(code, view, panelShown)) lab.key(code);
             check("after key '" + k.key + "'");
         }
-        std::printf("%s: panel check %s: done\n", program, where.c_str());
+        std::printf(tr("%s: panel check %s: done\n"), program, where.c_str());
     }
     ImGui::DestroyContext(); // the GL context finishes and goes at the end of the scope
-    std::printf("%s: panel check on %zu screen sizes, UI scale %.2f asked: %d clipped text%s\n",
+    std::printf(tr("%s: panel check on %zu screen sizes, UI scale %.2f asked: %d clipped text%s "
+                   "(language %s)"),
                 program, std::size(kCheckedScreens), double(opts.uiScale), clipped,
-                clipped == 1 ? "" : "s");
-    return clipped ? 1 : 0;
+                clipped == 1 ? "" : "s", language().c_str());
+    if (pseudo) std::printf(tr(", %d untranslated"), untranslated);
+    std::printf("\n");
+    return clipped || untranslated ? 1 : 0;
 }
 
 } // namespace
 
 int runLab(int argc, char** argv, LabFactory factory) {
+    applyLanguageFlag(argc, argv); // first: every message below is in the user's language
     auto lab = factory();
     ShellOptions opts;
     std::string error;
@@ -154,7 +172,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return checkPanel(argv[0], *lab, opts, keys);
     }
     if (opts.out.empty()) {
-        std::fprintf(stderr, "%s: the headless renderer needs --out FILE.png\n", argv[0]);
+        std::fprintf(stderr, tr("%s: the headless renderer needs --out FILE.png\n"), argv[0]);
         return 2;
     }
     std::vector<int> keys;
@@ -169,7 +187,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
         return 1;
     }
     if (lab->headlessFailed()) {
-        std::fprintf(stderr, "%s: %s not written\n", argv[0], opts.out.c_str());
+        std::fprintf(stderr, tr("%s: %s not written\n"), argv[0], opts.out.c_str());
         return 1;
     }
     if (!writePng(opts.out, img, &error)) {

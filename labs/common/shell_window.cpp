@@ -5,10 +5,14 @@
 #include "imgui_input.h"
 #include "panel.h"
 #include "shell.h"
+#include "x_keyboard.h"
+
+#include "core/i18n.h"
 
 #include "core/i18n.h"
 
 #include <GL/freeglut.h>
+#include <GL/glx.h>
 #include <imgui.h>
 #include <imgui_impl_glut.h>
 #include <imgui_impl_opengl2.h>
@@ -41,12 +45,15 @@ struct WindowState {
     std::vector<int> smokeKeys; // --smoke: keys still to press, one per frame
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
-    bool timerPending = false; // a glutTimerFunc redraw is on its way (busy lab)
-    bool pollPending = false;  // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
+    bool timerPending = false;     // a glutTimerFunc redraw is on its way (busy lab)
+    bool pollPending = false;      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
-    bool dragging = false;     // left button down outside the panel
-    bool moved = false;        // the drag moved far enough to be a rotation, not a click
+    bool dragging = false;         // left button down outside the panel
+    bool moved = false;            // the drag moved far enough to be a rotation, not a click
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
+    XKeyboard xkb;        // key presses as X sees them: Cyrillic text, keys on any layout
+    bool logKeys = false; // WB_LOG_KEYS=1: print each lab key (the layout tests read it)
+    std::string language; // the language the window title was last set in
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 };
 WindowState* g = nullptr;
@@ -83,6 +90,10 @@ void setUiScale(float scale) {
 }
 
 void labKey(int code) {
+    if (g->logKeys) {
+        std::fprintf(stderr, "lab key %d\n", code); // read by tests/shell/russian_keys.sh
+        std::fflush(stderr);
+    }
     if (code == 27) return quit();
     // A lab whose panel is its whole window (the launcher) has no scene to zoom or panel to hide.
     if (g->lab->panelFillsWindow() || !shellKey(code, g->view, g->panelVisible)) g->lab->key(code);
@@ -213,6 +224,10 @@ void display() {
         g->smokeKeys.erase(g->smokeKeys.begin());
     }
     applyUiScale();
+    if (g->language != language()) { // switched in the panel (View > Language)
+        g->language = language();
+        glutSetWindowTitle(g->lab->title().c_str());
+    }
     g->input.applyToFrame(ImGui::GetIO());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGLUT_NewFrame();
@@ -282,13 +297,40 @@ bool uiScaleKey(unsigned char c, int mods) {
     return true;
 }
 
+// What the X reader does (x_keyboard.h): typed text to ImGui, lab keys to the lab unless a
+// text field has the keyboard.
+void xText(unsigned c) {
+    g->input.character(c);
+    changed();
+}
+void xLabKey(int c) {
+    if (!ImGui::GetIO().WantCaptureKeyboard)
+        labKey(c);
+    else
+        changed();
+}
+
 void keyboard(unsigned char c, int, int) {
+    // The same press read from X first (and what came before it): its group decides. Under a
+    // non-Latin layout the X reader sends the key the US layout has there; GLUT's character for
+    // it ('.' where US has '/') would act a second time, or as another key.
+    const bool latin = g->xkb.glutCharacter(xText, xLabKey);
     const int mods = glutGetModifiers();
     g->input.keyboard(c, true, mods);
     changed();
     if (uiScaleKey(c, mods)) return;
     if (ImGui::GetIO().WantCaptureKeyboard) return;
+    if (c >= 0x20 && c < 0x7f && !latin) return;
     labKey(c);
+}
+
+// Key presses read from X beside GLUT (x_keyboard.h): polled often enough to feel immediate
+// (a wake-up every 20 ms costs no measurable CPU while idle).
+constexpr unsigned kKeyPollMs = 20;
+
+void pollKeys(int) {
+    g->xkb.poll(xText, xLabKey);
+    glutTimerFunc(kKeyPollMs, pollKeys, 0);
 }
 
 void keyboardUp(unsigned char c, int, int) {
@@ -359,7 +401,7 @@ int execHeadless(char** argv) {
     char self[PATH_MAX] = {};
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) {
-        std::fprintf(stderr, "%s: cannot find my own executable\n", argv[0]);
+        std::fprintf(stderr, tr("%s: cannot find my own executable\n"), argv[0]);
         return 1;
     }
     std::string path = std::string(self, size_t(n)) + "-headless";
@@ -373,6 +415,7 @@ int execHeadless(char** argv) {
 int runLab(int argc, char** argv, LabFactory factory) {
     WindowState state;
     g = &state;
+    applyLanguageFlag(argc, argv); // first: every message below is in the user's language
     state.lab = factory();
     state.program = argv[0];
     std::string error;
@@ -389,10 +432,11 @@ int runLab(int argc, char** argv, LabFactory factory) {
     if (state.opts.headless || state.opts.checkPanel) return execHeadless(argv);
     const char* displayEnv = std::getenv("DISPLAY");
     if (!displayEnv || !*displayEnv) {
-        std::fprintf(stderr,
-                     "%s: no display (DISPLAY is not set); render to a file with --headless --out "
-                     "FILE.png\n",
-                     argv[0]);
+        std::fprintf(
+            stderr,
+            tr("%s: no display (DISPLAY is not set); render to a file with --headless --out "
+               "FILE.png\n"),
+            argv[0]);
         return 2;
     }
     std::vector<int> keys;
@@ -427,10 +471,17 @@ int runLab(int argc, char** argv, LabFactory factory) {
     state.windowHeight = fit.height;
     glutInitWindowSize(state.windowWidth, state.windowHeight);
     glutCreateWindow(state.lab->title().c_str());
+    state.language = language();
+    // The window's X id and display, for the second connection that reads keys (x_keyboard.h).
+    if (!state.xkb.open(DisplayString(glXGetCurrentDisplay()), glXGetCurrentDrawable()))
+        std::fprintf(stderr, "%s: %s\n", argv[0],
+                     tr("cannot read the keyboard from X: keys work on the Latin layout only"));
+    const char* logKeys = std::getenv("WB_LOG_KEYS");
+    state.logKeys = logKeys && *logKeys == '1';
     layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
-        std::fprintf(stderr, "%s: GLEW: %s\n", argv[0],
+        std::fprintf(stderr, tr("%s: GLEW: %s\n"), argv[0],
                      reinterpret_cast<const char*>(glewGetErrorString(glewStatus)));
         return 1;
     }
@@ -456,6 +507,7 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutMotionFunc(motion);
     glutPassiveMotionFunc(passiveMotion);
     glutMouseWheelFunc(wheel);
+    glutTimerFunc(kKeyPollMs, pollKeys, 0);
 
     state.lab->init();
     for (int k : keys)

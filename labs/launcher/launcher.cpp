@@ -6,6 +6,8 @@
 #include "core/image.h"
 #include "lab_list.h"
 
+#include "core/i18n.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -39,7 +41,9 @@ namespace {
 // The labs in kLabs (its last entry is the null terminator). A constant, so the compiler
 // sees every kLabs[i] in bounds (GCC's -Warray-bounds under the sanitizers could not).
 constexpr int kLabCount = int(sizeof kLabs / sizeof kLabs[0]) - 1;
-int labCount() { return kLabCount; }
+int labCount() {
+    return kLabCount;
+}
 
 // Modification time of a file, 0 when it does not exist.
 long long mtime(const std::string& path) {
@@ -95,11 +99,11 @@ struct Card {
 
 class Launcher : public Lab {
   public:
-    std::string title() const override { return "Graphics lab workbench"; }
+    std::string title() const override { return tr("Graphics lab workbench"); }
     std::vector<KeyHelp> keys() const override {
         std::vector<KeyHelp> k;
         for (int i = 0; i < labCount() && i < 9; ++i)
-            k.push_back({std::to_string(i + 1), std::string("start ") + kLabs[i].executable});
+            k.push_back({std::to_string(i + 1), trf("start %s", kLabs[i].executable)});
         return k;
     }
     bool panelFillsWindow() const override { return true; }
@@ -132,8 +136,8 @@ class Launcher : public Lab {
     }
     void gui() override {
         pollRenderers(false);
-        ImGui::TextWrapped(
-            "Choose a lab (click its picture or press its number); it opens in its own window.");
+        ImGui::TextWrapped(tr(
+            "Choose a lab (click its picture or press its number); it opens in its own window."));
         const float scale =
             ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
         char scaleText[16];
@@ -163,7 +167,8 @@ class Launcher : public Lab {
             clicked = ImGui::ImageButton(
                 reinterpret_cast<ImTextureID>(static_cast<intptr_t>(c.texture)), thumb);
         } else {
-            clicked = ImGui::Button(c.status.empty() ? "(no picture)" : c.status.c_str(), thumb);
+            clicked =
+                ImGui::Button(c.status.empty() ? tr("(no picture)") : tr(c.status.c_str()), thumb);
         }
         ImGui::SameLine();
         ImGui::BeginGroup();
@@ -171,16 +176,16 @@ class Launcher : public Lab {
             ImGui::Text("%d  %s", i + 1, lab.executable);
         else
             ImGui::TextUnformatted(lab.executable);
-        ImGui::TextWrapped("%s", lab.topic);
+        ImGui::TextWrapped("%s", tr(lab.topic));
         if (*lab.docsPage) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
             ImGui::TextWrapped("%s", lab.docsPage);
             ImGui::PopStyleColor();
             if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", assetPath(lab.docsPage).c_str());
         }
-        if (ImGui::Button("Start")) clicked = true;
+        if (ImGui::Button(tr("Start"))) clicked = true;
         ImGui::EndGroup();
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lab.description);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(lab.description));
         ImGui::PopID();
         if (clicked) start(i);
     }
@@ -203,7 +208,7 @@ class Launcher : public Lab {
         c.renderer = spawn({headless, "--out", cached, "--size",
                             std::to_string(kThumbWidth) + "x" + std::to_string(kThumbHeight)},
                            true);
-        c.status = c.renderer > 0 ? "rendering..." : "(no picture)";
+        c.status = c.renderer > 0 ? N_("rendering...") : N_("(no picture)"); // tr() when shown
     }
 
     void pollRenderers(bool wait) {
@@ -214,7 +219,7 @@ class Launcher : public Lab {
             if (r == 0) continue;
             c.renderer = -1;
             const bool ok = r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
-            if (!ok || !upload(c, c.renderPath)) c.status = "(no picture)";
+            if (!ok || !upload(c, c.renderPath)) c.status = N_("(no picture)");
         }
     }
 
@@ -239,25 +244,30 @@ class Launcher : public Lab {
         std::string exe = binDir() + "/" + kLabs[i].executable;
 #if defined(WB_HEADLESS)
         // The headless launcher (workbench-panel-check) has no display to open a lab on.
-        status_ = "would start " + exe;
+        status_ = trf("would start %s", exe.c_str());
         return;
 #endif
         pid_t pid = fork();
         if (pid == 0) {
             if (fork() == 0) {
-                // The launcher's flags (--ui-scale, --lang, ...), with the UI scale it has now
-                // (Ctrl+= may have changed it) in place of the one it was started with.
+                // The launcher's flags (--ui-scale, --lang, ...), with the UI scale and the
+                // language it has now (Ctrl+= or View > Language may have changed them) in place
+                // of the ones it was started with.
                 std::vector<std::string> args = {exe};
                 for (size_t k = 0; k < g_labFlags.size(); ++k) {
-                    if (g_labFlags[k] == "--ui-scale") {
+                    if (g_labFlags[k] == "--ui-scale" || g_labFlags[k] == "--lang") {
                         ++k;
                         continue;
                     }
-                    if (g_labFlags[k].rfind("--ui-scale=", 0) == 0) continue;
+                    if (g_labFlags[k].rfind("--ui-scale=", 0) == 0 ||
+                        g_labFlags[k].rfind("--lang=", 0) == 0)
+                        continue;
                     args.push_back(g_labFlags[k]);
                 }
                 args.push_back("--ui-scale");
                 args.push_back(scaleNow_);
+                args.push_back("--lang");
+                args.push_back(language());
                 std::vector<char*> argv;
                 for (auto& a : args)
                     argv.push_back(a.data());
@@ -268,7 +278,7 @@ class Launcher : public Lab {
             _exit(0);
         }
         if (pid > 0) waitpid(pid, nullptr, 0);
-        status_ = pid > 0 ? "started " + exe : "could not start " + exe;
+        status_ = pid > 0 ? trf("started %s", exe.c_str()) : trf("could not start %s", exe.c_str());
         std::fprintf(stderr, "%s\n", status_.c_str());
     }
 
@@ -291,8 +301,8 @@ int renderAllHeadless(const std::string& outDir, const std::string& size) {
     for (int i = 0; i < labCount(); ++i) {
         std::string exe = binDir() + "/" + kLabs[i].executable + "-headless";
         std::string out = dir + "/" + kLabs[i].executable + ".png";
-        int rc = runAndWait({exe, "--out", out, "--size", size});
-        std::printf("%-16s %s  %s\n", kLabs[i].executable, rc == 0 ? "ok    " : "FAILED",
+        int rc = runAndWait({exe, "--out", out, "--size", size, "--lang", language()});
+        std::printf("%-16s %-6s  %s\n", kLabs[i].executable, rc == 0 ? tr("ok") : tr("FAILED"),
                     out.c_str());
         if (rc != 0) ++failed;
     }

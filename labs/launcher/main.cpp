@@ -21,8 +21,11 @@ int main(int argc, char** argv) {
     const char* display = std::getenv("DISPLAY");
     bool headless = !display || !*display;
     std::string outDir = "out", size = "640x480";
+    wb::applyLanguageFlag(argc, argv); // --lang ru|en|qps, before any message
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--headless")) {
+        if (!std::strcmp(argv[i], "--lang") && i + 1 < argc) {
+            ++i; // applied above; a bad code is reported by the shell's parser in a window
+        } else if (!std::strcmp(argv[i], "--headless")) {
             headless = true;
         } else if (!std::strcmp(argv[i], "--out-dir") && i + 1 < argc) {
             outDir = argv[++i];
@@ -50,10 +53,15 @@ int main(int argc, char** argv) {
                                   : wb::trf("unexpected argument '%s'",
                                             wb::escapeForMessage(argv[i]).c_str()))
                                  .c_str());
-            std::printf("usage: %s [--headless] [--out-dir DIR] [--size WxH] [--ui-scale X]\n"
-                        "  with a display: opens the launcher window, 800x600 unless --size says otherwise\n"
-                        "  (also takes the lab shell's flags, e.g. --ui-scale 2 for a projector)\n"
-                        "  without one (or with --headless): renders every lab to DIR (default out/)\n",
+            std::printf(wb::tr("usage: %s [--headless] [--out-dir DIR] [--size WxH] [--ui-scale X] "
+                               "[--lang ru|en]\n"
+                               "  with a display: opens the launcher window, 800x600 unless --size "
+                               "says otherwise\n"
+                               "  (also takes the lab shell's flags, e.g. --ui-scale 2 for a "
+                               "projector);\n"
+                               "  the labs it starts open in its language\n"
+                               "  without one (or with --headless): renders every lab to DIR "
+                               "(default out/)\n"),
                         argv[0]);
             return std::strcmp(argv[i], "--help") ? 2 : 0;
         }
@@ -62,7 +70,7 @@ int main(int argc, char** argv) {
         wb::setLabFlags(wb::labFlagsFrom(argc, argv));
         return wb::runLab(argc, argv, wb::makeLauncher);
     }
-    std::printf("No display: rendering every lab headless into %s/\n", outDir.c_str());
+    std::printf(wb::tr("No display: rendering every lab headless into %s/\n"), outDir.c_str());
     int failed = wb::renderAllHeadless(outDir, size);
     return failed ? 1 : 0;
 }

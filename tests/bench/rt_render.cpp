@@ -12,6 +12,7 @@
 //              the SPD's "depth 5" counting the eye ray as level 1)
 //   --spd      SPD rules: eye rays through the pixel corners ((w+1)(h+1) rays), depth 4
 //   --no-bvh   the plain loop over objects
+#include "common/cli_values.h"
 #include "core/file_read.h"
 #include "core/i18n.h"
 #include "core/image.h"
@@ -19,7 +20,6 @@
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/scene_file.h"
-#include "common/cli_values.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,8 +37,9 @@ namespace {
 
 constexpr int kMaxDepth = 64; // reflections per eye ray: 2^64 rays is beyond any budget anyway
 
-constexpr const char* kUsage = "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
-                               "[--depth D] [--spd] [--no-bvh]\n";
+constexpr const char* kUsage =
+    "usage: %s SCENE.nff|SCENE.obj [--out FILE.png] [--size WxH] [--threads N] "
+    "[--depth D] [--spd] [--no-bvh]\n";
 
 int usage(const char* argv0) {
     std::fprintf(stderr, kUsage, argv0);
@@ -62,8 +63,8 @@ std::string memoryRefusal(int width, int height, const wb::rt::ParallelRenderOpt
                          2.0 * 3.0 * double(width) * double(height); // PNG encoder at worst
     // 4 GB: a plain 16384² frame (2.4 GB with the encoder) fits, the SPD corner grid at
     // that size (8.8 GB) does not; less on a machine with under 8 GB.
-    double limit = std::min(4e9, 0.5 * double(::sysconf(_SC_PHYS_PAGES)) *
-                                     double(::sysconf(_SC_PAGESIZE)));
+    double limit =
+        std::min(4e9, 0.5 * double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGESIZE)));
     struct rlimit rl {};
     if (::getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
         limit = std::min(limit, 0.9 * double(rl.rlim_cur));
@@ -74,8 +75,7 @@ std::string memoryRefusal(int width, int height, const wb::rt::ParallelRenderOpt
                        "colours %.1f GB, PNG encoding %.1f GB); the limit here is %.1f GB (at "
                        "most 4 GB, half the machine's memory): use a smaller --size",
                        width, height, frame / 1e9, image / 1e9,
-                       double(width + 1) * double(height + 1) * 24.0 / 1e9, png / 1e9,
-                       limit / 1e9);
+                       double(width + 1) * double(height + 1) * 24.0 / 1e9, png / 1e9, limit / 1e9);
     return wb::trf("a %dx%d render needs about %.1f GB (image %.1f GB, PNG encoding %.1f GB); "
                    "the limit here is %.1f GB (at most 4 GB, half the machine's memory): use a "
                    "smaller --size",
@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
     };
     if (!valueError.empty()) return refuse(valueError);
     try {
-        app.parse(std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
+        app.parse(
+            std::vector<std::string>(args.rbegin(), args.rend())); // CLI11 takes them reversed
     } catch (const CLI::ParseError& e) {
         if (!valueError.empty()) return refuse(valueError);
         // The only other failure left: a value flag last on the line, e.g. `--depth`.
@@ -166,12 +167,13 @@ int main(int argc, char** argv) {
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         // The reader's repairs (faces dropped, a missing .mtl, ...): counted, the first lines.
         if (sf.warningCount > 0) {
-            std::fprintf(stderr, "%s: %zu warning%s:\n", shownPath.c_str(), sf.warningCount,
+            std::fprintf(stderr, wb::tr("%s: %zu warning%s:\n"), shownPath.c_str(), sf.warningCount,
                          sf.warningCount == 1 ? "" : "s");
             for (const std::string& w : sf.warnings)
                 std::fprintf(stderr, "  %s\n", w.c_str());
             if (sf.warningCount > sf.warnings.size())
-                std::fprintf(stderr, "  ... and %zu more\n", sf.warningCount - sf.warnings.size());
+                std::fprintf(stderr, wb::tr("  ... and %zu more\n"),
+                             sf.warningCount - sf.warnings.size());
         }
         std::unique_ptr<wb::rt::Bvh> bvh;
         if (useBvh) bvh = wb::rt::makeAggregate(*sf.scene);
@@ -215,8 +217,8 @@ int main(int argc, char** argv) {
         if (st.nonFinitePixels) {
             // A NaN/Inf colour is written black: the picture would be wrong, not fine.
             std::fprintf(stderr,
-                         "%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not writing "
-                         "the image\n",
+                         wb::tr("%s: %s: %lld non-finite pixels (NaN/Inf in the colour): not "
+                                "writing the image\n"),
                          argv[0], shownPath.c_str(), st.nonFinitePixels);
             return 1;
         }
@@ -226,11 +228,11 @@ int main(int argc, char** argv) {
             return 1;
         }
         const long long rays = st.primaryRays + st.secondaryRays + st.shadowRays;
-        std::printf("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n", shownPath.c_str(),
-                    sf.scene->primitives.size(), loadS * 1e3,
+        std::printf(wb::tr("%s: %zu primitives, load %.1f ms (BVH build %.1f ms%s)\n"),
+                    shownPath.c_str(), sf.scene->primitives.size(), loadS * 1e3,
                     bvh ? bvh->stats().buildSeconds * 1e3 : 0.0, bvh ? "" : ", plain loop");
-        std::printf("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
-                    "reflection+refraction %lld rays; %.2f M rays/s -> %s\n",
+        std::printf(wb::tr("%dx%d, depth %d, %d threads: %.1f ms; eye %lld, shadow %lld, "
+                           "reflection+refraction %lld rays; %.2f M rays/s -> %s\n"),
                     width, height, depth, st.threads, st.seconds * 1e3, st.primaryRays,
                     st.shadowRays, st.secondaryRays, double(rays) / st.seconds / 1e6,
                     wb::escapeForMessage(out, 4096).c_str());

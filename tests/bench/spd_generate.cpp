@@ -23,13 +23,13 @@ int main(int argc, char** argv) {
         for (const std::string& n : wb::rt::spdSceneNames())
             known = known || n == argv[1];
     if (argc < 3 || argc > 4 || !known) {
-        std::fprintf(stderr, "usage: %s %s SIZE(1..6) [FILE]\n", argv[0], names.c_str());
+        std::fprintf(stderr, wb::tr("usage: %s %s SIZE(1..6) [FILE]\n"), argv[0], names.c_str());
         return 2;
     }
     char* end = nullptr;
     const long size = std::strtol(argv[2], &end, 10);
     if (*end != '\0' || size < 1 || size > 6) {
-        std::fprintf(stderr, "%s: SIZE must be 1..6, got '%s'\n", argv[0], argv[2]);
+        std::fprintf(stderr, wb::tr("%s: SIZE must be 1..6, got '%s'\n"), argv[0], argv[2]);
         return 2;
     }
     try {

@@ -51,7 +51,10 @@ struct PanelFixture {
         frame();
         frame();
     }
-    ImGuiWindow* panelWindow() { return ImGui::FindWindowByName(lab->title().c_str()); }
+    // The shell names its panel window "title###panel" (a stable id across languages).
+    ImGuiWindow* panelWindow() {
+        return ImGui::FindWindowByName((lab->title() + "###panel").c_str());
+    }
 };
 
 } // namespace

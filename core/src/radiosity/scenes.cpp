@@ -1,5 +1,6 @@
 #include "core/radiosity/scenes.h"
 
+#include "core/i18n.h"
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -134,7 +135,7 @@ glm::dvec3 bandAverage(const std::array<double, 76>& s) {
 
 Scene cornellBox() {
     Scene s;
-    s.name = "Cornell box";
+    s.name = N_("Cornell box"); // shown through tr()
     s.closed = false; // open at the front, as measured (the camera looks in through it)
     const double mm = 0.001;
     auto P = [&](double x, double y, double z) { return V(x, y, z) * mm; };
@@ -195,7 +196,7 @@ Scene cornellBox() {
 
 Scene classroom() {
     Scene s;
-    s.name = "classroom";
+    s.name = N_("classroom"); // shown through tr()
     s.closed = true;
     const V wall(0.70, 0.66, 0.52), floorR(0.35, 0.33, 0.30), ceil(0.80, 0.80, 0.78),
         white(0.80, 0.80, 0.80), wood(0.55, 0.38, 0.22), red(0.75, 0.08, 0.06);
@@ -225,7 +226,7 @@ Scene classroom() {
 
 Scene floorLamp() {
     Scene s;
-    s.name = "floor lamp";
+    s.name = N_("floor lamp"); // shown through tr()
     s.closed = true;
     const V wall(0.70, 0.66, 0.52), floorR(0.35, 0.33, 0.30), ceil(0.85, 0.85, 0.83),
         white(0.80, 0.80, 0.80), wood(0.55, 0.38, 0.22), shade(0.7, 0.65, 0.5);
@@ -272,7 +273,7 @@ Scene floorLamp() {
 
 Scene furnace(double reflectivity, double emission) {
     Scene s;
-    s.name = "furnace";
+    s.name = N_("furnace"); // shown through tr()
     s.closed = true;
     addRoom(s, V(0.0), V(1.0), V(reflectivity), V(reflectivity), V(reflectivity), V(reflectivity));
     for (Surface& f : s.surfaces) f.emission = V(emission);
@@ -283,7 +284,7 @@ Scene furnace(double reflectivity, double emission) {
 
 Scene parallelPlates(double a, double b, double c) {
     Scene s;
-    s.name = "parallel plates";
+    s.name = N_("parallel plates"); // shown through tr()
     s.surfaces.push_back(face({{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}}, V(0.5), V(1.0), "plate 1", V(a / 2, b / 2, c)));
     s.surfaces.push_back(face({{0, 0, c}, {a, 0, c}, {a, b, c}, {0, b, c}}, V(0.5), V(0.0), "plate 2", V(a / 2, b / 2, 0)));
     s.eye = V(a / 2, -2.0 * b, c / 2);
@@ -294,7 +295,7 @@ Scene parallelPlates(double a, double b, double c) {
 
 Scene perpendicularPlates(double l, double w1, double w2) {
     Scene s;
-    s.name = "perpendicular plates";
+    s.name = N_("perpendicular plates"); // shown through tr()
     // Common edge along x from 0 to l; plate 1 in y = 0 (z from 0 to w1) facing +y, plate 2 in
     // z = 0 (y from 0 to w2) facing +z.
     s.surfaces.push_back(face({{0, 0, 0}, {l, 0, 0}, {l, 0, w1}, {0, 0, w1}}, V(0.5), V(1.0), "plate 1", V(l / 2, 1, w1 / 2)));

@@ -66,45 +66,43 @@ class Tokens {
     // previous token, the command was cut short: name the line that ends early.
     [[noreturn]] void unexpected(const std::string& tok, int line, const std::string& expected) {
         if (firstOnLine_ && prevLine_ > 0 && prevLine_ < line)
-            fail(prevLine_, "the line ends early: expected " + expected + " (line " +
-                                std::to_string(line) + " begins with '" + escapeForMessage(tok) +
-                                "')");
-        fail(line, "expected " + expected + ", got '" + escapeForMessage(tok) + "'");
+            fail(prevLine_, trf("the line ends early: expected %s (line %d begins with '%s')",
+                                expected.c_str(), line, escapeForMessage(tok).c_str()));
+        fail(line, trf("expected %s, got '%s'", expected.c_str(), escapeForMessage(tok).c_str()));
     }
     double number(const char* what, int cmdLine) {
         std::string tok;
         int line;
         if (!next(tok, line))
-            fail(cmdLine, std::string("unexpected end of file, expected ") + what);
+            fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
         const char* s = tok.c_str();
         char* end = nullptr;
         errno = 0;
         const double v = std::strtod(s, &end);
         // The whole token: a NUL inside it must not end the number early.
         if (end == s || end != s + tok.size())
-            unexpected(tok, line, std::string("a number (") + what + ")");
+            unexpected(tok, line, trf("a number (%s)", tr(what)));
         if (std::isnan(v) || (std::isinf(v) && errno != ERANGE))
-            fail(line,
-                 std::string("non-finite number '") + escapeForMessage(tok) + "' for " + what);
+            fail(line, trf("non-finite number '%s' for %s", escapeForMessage(tok).c_str(), tr(what)));
         if (std::isinf(v))
-            fail(line, std::string("number '") + escapeForMessage(tok) + "' for " + what +
-                           " is beyond the range of a double");
+            fail(line, trf("number '%s' for %s is beyond the range of a double",
+                           escapeForMessage(tok).c_str(), tr(what)));
         return v;
     }
     // A number within [lo, hi] (what the quantity means), or a file:line error.
     double number(const char* what, int cmdLine, double lo, double hi, const char* range) {
         const double v = number(what, cmdLine);
         if (!(v >= lo && v <= hi))
-            fail(lastLine_, std::string(what) + " " + fmt(v) + " outside " + range);
+            fail(lastLine_, trf("%s %s outside %s", tr(what), fmt(v).c_str(), range));
         return v;
     }
     // A coordinate or length of geometry: |v| <= kNffMaxCoordinate (see nff.h).
     double coordinate(const char* what, int cmdLine) {
         const double v = number(what, cmdLine);
         if (!(std::abs(v) <= kNffMaxCoordinate))
-            fail(lastLine_, std::string(what) + ": " + fmt(v) +
-                                " is beyond the coordinate limit ±1e150 (the tracer squares "
-                                "coordinates; larger ones would overflow)");
+            fail(lastLine_, trf("%s: %s is beyond the coordinate limit ±1e150 (the tracer squares "
+                                "coordinates; larger ones would overflow)",
+                                tr(what), fmt(v).c_str()));
         return v;
     }
     glm::dvec3 vec3(const char* what, int cmdLine) {
@@ -127,16 +125,15 @@ class Tokens {
         std::string tok;
         int line;
         if (!next(tok, line))
-            fail(cmdLine, std::string("unexpected end of file, expected ") + what);
+            fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
         const char* s = tok.c_str();
         char* end = nullptr;
         errno = 0;
         const long long v = std::strtoll(s, &end, 10);
         if (end == s || end != s + tok.size())
-            unexpected(tok, line, std::string("an integer (") + what + ")");
+            unexpected(tok, line, trf("an integer (%s)", tr(what)));
         if (errno == ERANGE)
-            fail(line, std::string("integer '") + escapeForMessage(tok) + "' (" + what +
-                           ") out of range");
+            fail(line, trf("integer '%s' (%s) out of range", escapeForMessage(tok).c_str(), tr(what)));
         return v;
     }
     const std::string& name() const { return name_; }
@@ -197,9 +194,9 @@ class Tokens {
 // (exact), so that far-away coordinates are judged on their direction, and each problem
 // gets its own message.
 void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
-    if (v.from == v.at) tk.fail(vLine, "bad view: from == at");
+    if (v.from == v.at) tk.fail(vLine, tr("bad view: from == at"));
     if (!(v.angle > 0 && v.angle < 180))
-        tk.fail(angleLine, "bad view: angle " + Tokens::fmt(v.angle) + " not in (0, 180)");
+        tk.fail(angleLine, trf("bad view: angle %s not in (0, 180)", Tokens::fmt(v.angle).c_str()));
     auto unitScale = [](glm::dvec3 a) {
         const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
         return m > 0 ? a * std::ldexp(1.0, -std::ilogb(m)) : a;
@@ -209,7 +206,7 @@ void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
     auto tiny = [](const glm::dvec3& a) {
         return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)}) < DBL_MIN;
     };
-    if (v.up == glm::dvec3(0.0)) tk.fail(vLine, "bad view: up is the zero vector");
+    if (v.up == glm::dvec3(0.0)) tk.fail(vLine, tr("bad view: up is the zero vector"));
     if (tiny(v.up))
         tk.fail(vLine, trf("bad view: up (%s, %s, %s) is too small to give a direction "
                            "(subnormal: below 2.2e-308)",
@@ -220,11 +217,11 @@ void checkView(Tokens& tk, int vLine, int angleLine, const SceneView& v) {
                           "(their difference is subnormal)"));
     const glm::dvec3 f = unitScale(v.at - v.from), u = unitScale(v.up);
     if (!(glm::length(glm::cross(f, u)) > 1e-12 * glm::length(f) * glm::length(u)))
-        tk.fail(vLine, "bad view: up is parallel to the view direction (at - from)");
+        tk.fail(vLine, tr("bad view: up is parallel to the view direction (at - from)"));
     try {
         LookAtCamera(v.from, v.at, scaledUp(v.up), v.angle); // as SceneFile::camera() builds it
     } catch (const std::invalid_argument&) {
-        tk.fail(vLine, "bad view: from == at, up along the view, or angle not in (0, 180)");
+        tk.fail(vLine, tr("bad view: from == at, up along the view, or angle not in (0, 180)"));
     }
 }
 
@@ -235,11 +232,10 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
         std::string tok;
         int line;
         if (!tk.next(tok, line))
-            tk.fail(vLine,
-                    std::string("unexpected end of file in the v block, expected '") + key + "'");
+            tk.fail(vLine, trf("unexpected end of file in the v block, expected '%s'", key));
         if (tok != key)
-            tk.fail(line, std::string("expected '") + key + "' in the v block, got '" +
-                              escapeForMessage(tok) + "'");
+            tk.fail(line, trf("expected '%s' in the v block, got '%s'", key,
+                              escapeForMessage(tok).c_str()));
         if (tok == "from")
             v.from = tk.point("from x y z", line);
         else if (tok == "at")
@@ -260,7 +256,7 @@ void readView(Tokens& tk, int vLine, SceneView& v) {
             const long long w = tk.integer("resolution width", line);
             const long long h = tk.integer("resolution height", line);
             if (w < 1 || h < 1 || w > 16384 || h > 16384)
-                tk.fail(line, "resolution must be 1..16384 in each direction");
+                tk.fail(line, tr("resolution must be 1..16384 in each direction"));
             v.width = int(w);
             v.height = int(h);
         }
@@ -298,8 +294,8 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
     auto count = [&](std::size_t n, int at) {
         primitives += n;
         if (primitives > kNffMaxPrimitives)
-            tk.fail(at, "more than " + std::to_string(kNffMaxPrimitives) +
-                            " primitives (the limit for one file, see nff.h)");
+            tk.fail(at, trf("more than %zu primitives (the limit for one file, see nff.h)",
+                            std::size_t(kNffMaxPrimitives)));
     };
     while (tk.next(cmd, line)) {
         const int surface = int(doc.surfaces.size()) - 1;
@@ -311,8 +307,8 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             doc.hasBackground = true;
         } else if (cmd == "l") {
             if (doc.lights.size() >= kNffMaxLights)
-                tk.fail(line, "more than " + std::to_string(kNffMaxLights) +
-                                  " lights (the limit for one file, see nff.h)");
+                tk.fail(line, trf("more than %zu lights (the limit for one file, see nff.h)",
+                                  std::size_t(kNffMaxLights)));
             NffLight l;
             l.position = tk.point("light x y z", line);
             if (tk.moreOnLine(line)) {
@@ -346,7 +342,7 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             o.surface = surface;
             o.centre = tk.point("sphere centre", line);
             o.radius = tk.coordinate("sphere radius", line);
-            if (o.radius < 0) tk.fail(line, "negative sphere radius");
+            if (o.radius < 0) tk.fail(line, tr("negative sphere radius"));
             count(1, line);
             doc.objects.push_back(std::move(o));
         } else if (cmd == "c") {
@@ -359,10 +355,10 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             o.baseRadius = tk.coordinate("cone base radius", line);
             o.apex = tk.point("cone apex x y z", line);
             o.apexRadius = tk.coordinate("cone apex radius", line);
-            if (o.base == o.apex) tk.fail(line, "cone base and apex coincide");
-            if (o.baseRadius == 0 && o.apexRadius == 0) tk.fail(line, "cone with both radii 0");
+            if (o.base == o.apex) tk.fail(line, tr("cone base and apex coincide"));
+            if (o.baseRadius == 0 && o.apexRadius == 0) tk.fail(line, tr("cone with both radii 0"));
             if (!std::isfinite(glm::length(o.apex - o.base)))
-                tk.fail(line, "cone axis length overflows");
+                tk.fail(line, tr("cone axis length overflows"));
             count(1, line);
             doc.objects.push_back(std::move(o));
         } else if (cmd == "p" || cmd == "pp") {
@@ -371,10 +367,10 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             o.line = line;
             o.surface = surface;
             const long long n = tk.integer("number of vertices", line);
-            if (n < 3) tk.fail(line, "polygon with " + std::to_string(n) + " vertices (need >= 3)");
+            if (n < 3) tk.fail(line, trf("polygon with %lld vertices (need >= 3)", n));
             if (n > kNffMaxVertices)
-                tk.fail(line, "polygon with " + std::to_string(n) + " vertices (limit " +
-                                  std::to_string(kNffMaxVertices) + ")");
+                tk.fail(line, trf("polygon with %lld vertices (limit %lld)", n,
+                                  (long long)kNffMaxVertices));
             count(std::size_t(n - 2), line);
             for (long long i = 0; i < n; ++i) {
                 o.vertices.push_back(tk.point("polygon vertex", line));
@@ -382,7 +378,7 @@ NffDocument readNffText(std::string_view text, const std::string& name) {
             }
             doc.objects.push_back(std::move(o));
         } else {
-            tk.fail(line, "unknown command '" + escapeForMessage(cmd) + "'");
+            tk.fail(line, trf("unknown command '%s'", escapeForMessage(cmd).c_str()));
         }
     }
     return doc;

@@ -113,17 +113,17 @@ class FileErrors {
         const auto sign = lower.find_first_not_of("+-");
         if (sign != std::string::npos &&
             (lower.compare(sign, 3, "nan") == 0 || lower.compare(sign, 3, "inf") == 0))
-            fail(line, std::string("non-finite ") + what + " '" + escapeForMessage(s) + "'");
+            fail(line, trf("non-finite %s '%s'", tr(what), escapeForMessage(s).c_str()));
         const bool decimal =
             !s.empty() && s.find_first_not_of("0123456789+-.eE") == std::string::npos;
         char* end = nullptr;
         errno = 0;
         const double v = decimal ? std::strtod(s.c_str(), &end) : 0.0;
         if (!decimal || end != s.c_str() + s.size())
-            fail(line, std::string("bad number '") + escapeForMessage(s) + "' (" + what + ")");
+            fail(line, trf("bad number '%s' (%s)", escapeForMessage(s).c_str(), tr(what)));
         if (std::isinf(v))
-            fail(line, std::string(what) + " '" + escapeForMessage(s) +
-                           "' is beyond the range of a double");
+            fail(line, trf("%s '%s' is beyond the range of a double", tr(what),
+                           escapeForMessage(s).c_str()));
         return v;
     }
 
@@ -205,17 +205,17 @@ class ObjScanner {
         if (w.empty()) return;
         const std::string_view cmd = w[0];
         if (cmd == "v") {
-            if (w.size() < 4) err.fail(line, "a vertex needs 3 numbers (v x y z)");
+            if (w.size() < 4) err.fail(line, tr("a vertex needs 3 numbers (v x y z)"));
             for (std::size_t i = 1; i < w.size(); ++i) {
                 const double c = err.number(w[i], line, "vertex coordinate");
                 if (i <= 3 && !(std::abs(c) <= kObjMaxCoordinate))
-                    err.fail(line, "vertex coordinate " + fmt(c) +
-                                       " is beyond the limit ±1e38 (OBJ coordinates are read "
-                                       "as 32-bit floats)");
+                    err.fail(line, trf("vertex coordinate %s is beyond the limit ±1e38 (OBJ "
+                                       "coordinates are read as 32-bit floats)",
+                                       fmt(c).c_str()));
             }
             ++nv_;
         } else if (cmd == "vn") {
-            if (w.size() < 4) err.fail(line, "a normal needs 3 numbers (vn x y z)");
+            if (w.size() < 4) err.fail(line, tr("a normal needs 3 numbers (vn x y z)"));
             bool bad = false;
             for (std::size_t i = 1; i < 4; ++i) {
                 // A normal only gives a direction: a non-finite or huge one is the
@@ -224,7 +224,8 @@ class ObjScanner {
                 char* end = nullptr;
                 const double c = std::strtod(s.c_str(), &end);
                 if (end == s.c_str() || end != s.c_str() + s.size())
-                    err.fail(line, "bad number '" + escapeForMessage(s) + "' (normal component)");
+                    err.fail(line, trf("bad number '%s' (normal component)",
+                                       escapeForMessage(s).c_str()));
                 if (!(std::abs(c) <= kObjMaxCoordinate)) bad = true;
             }
             if (bad) {
@@ -233,7 +234,7 @@ class ObjScanner {
             }
             ++nvn_;
         } else if (cmd == "vt") {
-            if (w.size() < 2) err.fail(line, "a texture coordinate needs a number (vt u [v])");
+            if (w.size() < 2) err.fail(line, tr("a texture coordinate needs a number (vt u [v])"));
             for (std::size_t i = 1; i < w.size(); ++i)
                 err.number(w[i], line, "texture coordinate");
             ++nvt_;
@@ -256,17 +257,23 @@ class ObjScanner {
                         errno = 0;
                         const long long ix = std::strtoll(part.c_str(), &end, 10);
                         if (part.empty() || end != part.c_str() + part.size())
-                            err.fail(line, "bad index '" + escapeForMessage(std::string(w[i])) +
-                                               "' in a face");
+                            err.fail(line, trf("bad index '%s' in a face",
+                                               escapeForMessage(std::string(w[i])).c_str()));
                         if (errno == ERANGE || ix > INT_MAX || ix < -INT_MAX)
-                            err.fail(line, "index " + escapeForMessage(part) +
-                                               " out of range (more than 2^31 - 1)");
-                        if (ix == 0) err.fail(line, "index 0 in a face (OBJ indices start at 1)");
+                            err.fail(line, trf("index %s out of range (more than 2^31 - 1)",
+                                               escapeForMessage(part).c_str()));
+                        if (ix == 0)
+                            err.fail(line, tr("index 0 in a face (OBJ indices start at 1)"));
                         if (ix < 0 && -ix > counts[k])
-                            err.fail(line, "relative index " + part + " points before the first " +
-                                               (k == 0   ? "vertex"
-                                                : k == 1 ? "texture coordinate"
-                                                         : "normal"));
+                            err.fail(
+                                line,
+                                k == 0   ? trf("relative index %s points before the first vertex",
+                                               part.c_str())
+                                : k == 1 ? trf("relative index %s points before the first texture "
+                                               "coordinate",
+                                               part.c_str())
+                                         : trf("relative index %s points before the first normal",
+                                               part.c_str()));
                     }
                     if (slash == std::string_view::npos) break;
                     rest = rest.substr(slash + 1);
@@ -275,8 +282,9 @@ class ObjScanner {
             if (n >= 3) {
                 scan.triangles += n - 2;
                 if (scan.triangles > kObjMaxTriangles)
-                    err.fail(line, "more than " + std::to_string(kObjMaxTriangles) +
-                                       " triangles (the limit for one file, see obj_file.h)");
+                    err.fail(line,
+                             trf("more than %zu triangles (the limit for one file, see obj_file.h)",
+                                 std::size_t(kObjMaxTriangles)));
             }
         }
     }
