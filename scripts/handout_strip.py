@@ -6,7 +6,8 @@ handout_strip.py DIR LIST: LIST (labs/handout_strip.txt) has one line per cut, t
                                     its body becomes REPLACEMENT (\\n for a new line; default:
                                     a throw saying why)
   FILE  decl   START                the declaration starting with START, through its '};'
-  FILE  lines  START  END           the lines from START through END (comments)
+  FILE  lines  START  END           the lines from START through END (comments; in a .po
+                                    catalogue a msgid through its msgstr)
 START/END match the beginning of a line after its indentation. A cut that matches nothing is
 an error: the list must follow the code.
 """
@@ -75,7 +76,8 @@ def main():
                 failed = True
                 continue
             end = text.index('\n', at + end_at) + 1
-            text = text[:at] + '// (removed from the handout: it described an answer)\n' + text[end:]
+            note = '#' if path.endswith('.po') else '//'  # a catalogue's comments start with #
+            text = text[:at] + f'{note} (removed from the handout: it described an answer)\n' + text[end:]
         else:
             print(f'{listing}:{n}: unknown mode {mode}', file=sys.stderr)
             failed = True

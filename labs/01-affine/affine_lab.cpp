@@ -270,9 +270,14 @@ class AffineLab : public Lab {
             if (ImGui::InputScalarN("l", ImGuiDataType_Double, ld, 3) &&
                 (ld[0] != 0 || ld[1] != 0 || ld[2] != 0))
                 s.lightDir3 = {ld[0], ld[1], ld[2]};
-            const glm::dmat4 m = affineMatrix3d(s);
-            ImGui::TextWrapped(tr("M (4x4), given to glMultMatrixd:"));
-            matrix(glm::value_ptr(m), 4);
+            if (kHaveReference) {
+                const glm::dmat4 m = affineMatrix3d(s);
+                ImGui::TextWrapped(tr("M (4x4), given to glMultMatrixd:"));
+                matrix(glm::value_ptr(m), 4);
+            } else {
+                ImGui::TextWrapped(tr("The 3D maps are lab 05's tasks: this handout draws "
+                                      "none (your answers are drawn in lab 05)."));
+            }
         }
         if (!kHaveReference) return;
         ImGui::Separator();
@@ -495,9 +500,11 @@ class AffineLab : public Lab {
         glEnable(GL_COLOR_MATERIAL);
         glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
 
-        const glm::dmat4 m = affineMatrix3d(s);
+        // A handout has no 3D maps (core's, lab 05's tasks): the plane and the object only.
+        const glm::dmat4 m = kHaveReference ? affineMatrix3d(s) : glm::dmat4(1.0);
         if (s.mode == AffineMode::Mirror) {
             // The image first, through the mirror matrix (det −1 turns the winding over).
+            if (kHaveReference) {
             glPushMatrix();
             glMultMatrixd(glm::value_ptr(m));
             glFrontFace(GL_CW);
@@ -506,6 +513,7 @@ class AffineLab : public Lab {
             drawPrism(true);
             glFrontFace(GL_CCW);
             glPopMatrix();
+            }
             // The plane, half transparent so the image behind it shows.
             glDisable(GL_LIGHTING);
             glEnable(GL_BLEND);
@@ -517,6 +525,7 @@ class AffineLab : public Lab {
             drawPlane(s.plane, 1.0f);
             // The shadow: the object squashed onto the plane by M; pulled towards the
             // eye in depth so it wins against the plane it lies in.
+            if (kHaveReference) {
             glEnable(GL_POLYGON_OFFSET_FILL);
             glPolygonOffset(-1, -2);
             glPushMatrix();
@@ -525,6 +534,7 @@ class AffineLab : public Lab {
             drawPrism(false);
             glPopMatrix();
             glDisable(GL_POLYGON_OFFSET_FILL);
+            }
             drawLight3d(s);
         }
         glEnable(GL_LIGHTING);

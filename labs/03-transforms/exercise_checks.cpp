@@ -2,10 +2,13 @@
 // view it gives (the gluLookAt matrix of the student's parameters against the reference's),
 // so any up vector that gives the same view is right. The mirror is checked in OpenGL
 // itself: a camera matrix is loaded, the student's calls run, and the modelview matrix read
-// back must be the camera times the reflection in the wall.
+// back must be the camera times the reflection in the wall, and the calls made must be the
+// task's own (glTranslatef, glScalef, glRotatef: wb-check sees every matrix call,
+// common/gl_call_log.h).
 #include "exercises.h"
 
 #include "common/exercise_check.h"
+#include "common/gl_call_log.h"
 #include "core/i18n.h"
 
 #include <GL/gl.h>
@@ -205,21 +208,46 @@ std::vector<Case> mirrorCases() {
     return cs;
 }
 
+// §2.3 task 5: "with glScalef/glTranslatef/glRotatef calls only" (their double twins too;
+// push/pop change nothing that is left when they pair up).
+bool allowedInMirror(int call) {
+    for (const char* ok : {"glTranslatef", "glTranslated", "glScalef", "glScaled", "glRotatef",
+                           "glRotated", "glPushMatrix", "glPopMatrix"})
+        if (call == ex::glMatrixCallIndex(ok)) return true;
+    return false;
+}
+
 Values mirrorRun(const void* table, const Values& in) {
     GLfloat cam[16];
     for (int i = 0; i < 16; ++i)
         cam[i] = GLfloat(in.at(size_t(i + 1)));
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(cam);
+    ex::GlCallLog log; // the matrix calls the student's code makes (wb-check sees them)
     const unsigned face = static_cast<const Table*>(table)->mirrorInWall(float(in.at(0)));
+    const std::vector<int> calls = log.calls();
     GLfloat m[16];
     glGetFloatv(GL_MODELVIEW_MATRIX, m);
     Values out(m, m + 16);
     out.push_back(double(face));
+    // The first call the task does not allow (-1: none), as a kGlMatrixCalls index.
+    int banned = -1;
+    for (int c : calls)
+        if (!allowedInMirror(c)) {
+            banned = c;
+            break;
+        }
+    out.push_back(double(banned));
     return out;
 }
 
 Verdict mirrorCompare(const Values& in, const Values& expected, const Values& got) {
+    // The rule first: a right matrix made with another call is still not the task.
+    const int banned = got.size() > 17 ? int(got[17]) : -1;
+    if (banned >= 0 && banned < ex::kGlMatrixCallCount)
+        return Verdict::fail(trf("%s is not allowed here: the task builds the mirror with "
+                                 "glTranslatef, glScalef and glRotatef calls only",
+                                 ex::kGlMatrixCalls[banned]));
     for (double v : got)
         if (!std::isfinite(v)) return Verdict::fail(tr("the matrix holds a non-number"));
     // What it must be: camera · T(wallZ) · S(1, 1, -1) · T(-wallZ), in double.
@@ -350,7 +378,8 @@ const ex::LabExercises& exercises() {
                      {12, "03.mirror", N_("the translations in the wrong order")},
                      {13, "03.mirror", N_("x flipped instead of z")},
                      {14, "03.mirror", N_("front faces not turned (GL_CCW)")},
-                     {15, "03.mirror", N_("glLoadIdentity: the camera thrown away")}};
+                     {15, "03.mirror", N_("glLoadIdentity: the camera thrown away")},
+                     {16, "03.mirror", N_("glMultMatrixd with the right matrix")}};
         return l;
     }();
     return lab;

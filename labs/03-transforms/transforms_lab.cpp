@@ -392,6 +392,28 @@ void TransformsLab::project(const View& view) {
     glMatrixMode(GL_MODELVIEW);
 }
 
+namespace {
+// The lab's own mirror (§2.3 task 5's answer): the reflection in the wall plane z = wallZ
+// multiplied onto the current matrix; true when done. A student handout has no answers
+// (labs/handout_strip.txt): there it multiplies nothing and says false.
+bool labMirror(float wallZ) {
+    // Move the wall to z = 0, flip z, move it back.
+    glTranslatef(0, 0, wallZ);
+    glScalef(1, 1, -1);
+    glTranslatef(0, 0, -wallZ);
+    return true;
+}
+
+// The panel's note on how the lab mirrors (the answer too: cut from a handout).
+void labMirrorNote() {
+    ImGui::TextWrapped(
+        tr("Mirror: glTranslatef(0,0,wall) glScalef(1,1,-1) glTranslatef(0,0,-wall). "
+           "The flip reverses the winding, so front faces become clockwise; the light "
+           "is re-sent under the same matrix so the mirrored room is lit from the "
+           "mirrored side."));
+}
+} // namespace
+
 void TransformsLab::drawWorld(bool mirrored, bool reference) {
     glPushMatrix();
     // Your mirror (e): your calls and your glFrontFace; the lab's below otherwise.
@@ -401,10 +423,10 @@ void TransformsLab::drawWorld(bool mirrored, bool reference) {
         glFrontFace(GLenum(*mine));
         if (s_->mirrorLight) setLight();
     } else if (mirrored) {
-        // Reflection in the wall plane z = kWallZ: move the wall to z = 0, flip z, move back.
-        glTranslatef(0, 0, kWallZ);
-        glScalef(1, 1, -1);
-        glTranslatef(0, 0, -kWallZ);
+        if (!labMirror(kWallZ)) { // a student handout: only your mirror is drawn
+            glPopMatrix();
+            return;
+        }
         // The flip turns counter-clockwise polygons clockwise: front faces are now CW.
         if (s_->mirrorFrontFace) glFrontFace(GL_CW);
         // The light is part of the mirrored world: its direction is reflected too.
@@ -592,11 +614,7 @@ void TransformsLab::gui() {
     ImGui::Checkbox(tr("mirror in the blackboard wall (m)"), &s.mirror);
     ImGui::Checkbox(tr("glFrontFace(GL_CW) (w)"), &s.mirrorFrontFace); // under "mirror"
     ImGui::Checkbox(tr("mirrored light position (l)"), &s.mirrorLight);
-    ImGui::TextWrapped(
-        tr("Mirror: glTranslatef(0,0,wall) glScalef(1,1,-1) glTranslatef(0,0,-wall). "
-           "The flip reverses the winding, so front faces become clockwise; the light "
-           "is re-sent under the same matrix so the mirrored room is lit from the "
-           "mirrored side."));
+    labMirrorNote();
 }
 
 } // namespace

@@ -1,15 +1,15 @@
 // Lab 04's tasks and their checks (exercise_check.h). The meshes are checked by what they
 // must be, whatever their vertex order: every vertex on the surface with its unit normal
 // and the (s, t) its position calls for, no triangle across a seam, triangles
-// counter-clockwise from outside, and the triangles' total area that of core's mesh of the
-// same grid (core/mesh.h; a missing or doubled row of cells changes it). The sphere map is
+// counter-clockwise from outside, and the triangles' total area that of the reference's mesh
+// of the same grid (a missing or doubled row of cells changes it; only that area is kept of
+// the reference's output, and only it is recorded in a handout). The sphere map is
 // checked against the reference and against OpenGL's own GL_SPHERE_MAP texgen, read back
 // through GL's feedback mode in the check's OSMesa context.
 #include "exercises.h"
 
 #include "common/exercise_check.h"
 #include "core/i18n.h"
-#include "core/mesh.h"
 
 #include <GL/gl.h>
 
@@ -71,19 +71,25 @@ std::string showMesh(const Values& out) {
     return trf("%d vertices, %d triangles", int(m.positions.size()), int(m.indices.size() / 3));
 }
 
-double area(const wb::Mesh& m) {
+// All compare() needs of the reference's mesh: the area its triangles cover (Task::
+// expectedDigest; a handout records this number, not the reference's vertices).
+Values meshArea(const Values& out) {
+    Mesh m;
+    if (!unpackMesh(out, m)) return {};
     double a = 0;
-    for (size_t k = 0; k + 2 < m.indices.size(); k += 3)
-        a += 0.5 *
-             glm::length(glm::cross(m.positions[m.indices[k + 1]] - m.positions[m.indices[k]],
-                                    m.positions[m.indices[k + 2]] - m.positions[m.indices[k]]));
-    return a;
+    for (size_t k = 0; k + 2 < m.indices.size(); k += 3) {
+        const unsigned i = m.indices[k], j = m.indices[k + 1], l = m.indices[k + 2];
+        if (i >= m.positions.size() || j >= m.positions.size() || l >= m.positions.size()) return {};
+        a += 0.5 * glm::length(glm::cross(m.positions[j] - m.positions[i],
+                                          m.positions[l] - m.positions[i]));
+    }
+    return {a};
 }
 
 // The checks both meshes share. `surface(i)` says what is wrong with vertex i (empty: fine),
 // `outward(tri)` the outward direction at a triangle; spans are the seam limits.
 template <class VertexCheck>
-Verdict checkMesh(const Mesh& m, double size, double coreArea, double spanS, double spanT,
+Verdict checkMesh(const Mesh& m, double size, double refArea, double spanS, double spanT,
                   const VertexCheck& vertexWrong, const char* cellsWord) {
     const size_t n = m.positions.size();
     if (n == 0 || m.normals.size() != n || m.texCoords.size() != n)
@@ -126,10 +132,10 @@ Verdict checkMesh(const Mesh& m, double size, double coreArea, double spanS, dou
                                      "faces culled it disappears, lit it is dark",
                                      int(k / 3)));
     }
-    if (std::fabs(total - coreArea) > 1e-9 * coreArea)
+    if (std::fabs(total - refArea) > 1e-9 * refArea)
         return Verdict::fail(trf("the triangles cover an area of %.9g, the %s's grid %.9g (%.3g "
                                  "%%): a row or column of %s missing or drawn twice (off by one?)",
-                                 total, cellsWord, coreArea, 100 * (total / coreArea - 1),
+                                 total, cellsWord, refArea, 100 * (total / refArea - 1),
                                  tr("cells")));
     return Verdict::pass();
 }
@@ -185,7 +191,7 @@ Verdict texelCompare(const Values& in, const Values& expected, const Values& got
 }
 
 // ----- ④ sphere: in = radius, slices, stacks -----
-Verdict sphereCompare(const Values& in, const Values&, const Values& got) {
+Verdict sphereCompare(const Values& in, const Values& expected, const Values& got) {
     const double r = in.at(0);
     const int slices = int(in.at(1)), stacks = int(in.at(2));
     Mesh m;
@@ -212,12 +218,12 @@ Verdict sphereCompare(const Values& in, const Values&, const Values& got) {
                        st.x);
         return {};
     };
-    return checkMesh(m, r, area(makeSphere(r, slices, stacks)), 1.0 / slices, 1.0 / stacks, vertex,
+    return checkMesh(m, r, expected.empty() ? 0.0 : expected[0], 1.0 / slices, 1.0 / stacks, vertex,
                      "sphere");
 }
 
 // ----- ④ torus: in = R, r, rings, sides -----
-Verdict torusCompare(const Values& in, const Values&, const Values& got) {
+Verdict torusCompare(const Values& in, const Values& expected, const Values& got) {
     const double R = in.at(0), r = in.at(1);
     const int rings = int(in.at(2)), sides = int(in.at(3));
     Mesh m;
@@ -250,7 +256,7 @@ Verdict torusCompare(const Values& in, const Values&, const Values& got) {
                        st.y);
         return {};
     };
-    return checkMesh(m, size, area(makeTorus(R, r, rings, sides)), 1.0 / rings, 1.0 / sides, vertex,
+    return checkMesh(m, size, expected.empty() ? 0.0 : expected[0], 1.0 / rings, 1.0 / sides, vertex,
                      "torus");
 }
 
@@ -418,8 +424,7 @@ const ex::LabExercises& exercises() {
                                                                          int(in.at(2))));
         };
         sphere.compare = sphereCompare;
-        sphere.needsExpected =
-            false; // judged from the input alone: a recording would be the answer
+        sphere.expectedDigest = meshArea; // the vertices are judged from the input alone
         sphere.showIn = [](const Values& in) {
             return trf("radius %g, %d slices, %d stacks", in.at(0), int(in.at(1)), int(in.at(2)));
         };
@@ -441,7 +446,7 @@ const ex::LabExercises& exercises() {
                 in.at(0), in.at(1), int(in.at(2)), int(in.at(3))));
         };
         torus.compare = torusCompare;
-        torus.needsExpected = false;
+        torus.expectedDigest = meshArea;
         torus.showIn = [](const Values& in) {
             return trf("R %g, r %g, %d rings, %d sides", in.at(0), in.at(1), int(in.at(2)),
                        int(in.at(3)));

@@ -64,6 +64,21 @@ bool drawExerciseMesh(const ex::ExerciseMode& mode, bool torus, double a, double
     return true;
 }
 
+std::optional<lab04::Mesh> exerciseMesh(const ex::ExerciseMode& mode, bool torus, double a,
+                                        double b, int n, int m) {
+    const auto* t = mode.on() ? mode.studentTable<lab04::Table>() : nullptr;
+    if (!t) return std::nullopt;
+    auto mesh =
+        mode.call(torus ? "04.torus" : "04.sphere", [&] { return make(t, torus, a, b, n, m); });
+    if (!mesh) return std::nullopt;
+    const size_t v = mesh->positions.size();
+    if (mesh->normals.size() != v || mesh->texCoords.size() != v) return std::nullopt;
+    for (unsigned i : mesh->indices)
+        if (i >= v) return std::nullopt; // GL would read past the arrays
+    mesh->indices.resize(mesh->indices.size() / 3 * 3);
+    return mesh;
+}
+
 bool exerciseSphereMapReady(const ex::ExerciseMode& mode) {
     const auto* t = mode.on() ? mode.studentTable<lab04::Table>() : nullptr;
     return t && mode.call("04.spheremap", [] { return true; }).has_value();

@@ -4,6 +4,9 @@
 // lab draws its own, with the reference's mesh over them as a ghost wireframe; the mirror
 // object gets its texture coordinates from your sphere-map formula instead of GL's texgen.
 #include "common/exercise_mode.h"
+#include "exercises.h"
+
+#include <optional>
 
 namespace wb {
 
@@ -11,6 +14,11 @@ namespace wb {
 // sides = a, b, n, m) with the current texture and lighting, then the reference's as a
 // ghost wireframe. False (nothing drawn) when your function is not callable.
 bool drawExerciseMesh(const ex::ExerciseMode& mode, bool torus, double a, double b, int n, int m);
+
+// Your sphere or torus (arguments as above) when on and callable, with every index in range;
+// nullopt otherwise. A student handout has no meshes of its own and draws these instead.
+std::optional<lab04::Mesh> exerciseMesh(const ex::ExerciseMode& mode, bool torus, double a,
+                                        double b, int n, int m);
 
 // Whether the mirror is to use your sphere map (04.spheremap callable).
 bool exerciseSphereMapReady(const ex::ExerciseMode& mode);

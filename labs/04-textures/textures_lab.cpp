@@ -52,6 +52,36 @@ GlMesh toGl(const Mesh& m) {
     return g;
 }
 
+// Your mesh (a student handout's stand-in for the lab's own): the tangent along ∂p/∂s of a
+// surface of revolution about y, (z, 0, -x)/|..| (both meshes go round y as s grows).
+GlMesh toGl(const std::optional<lab04::Mesh>& m) {
+    GlMesh g;
+    if (!m) return g;
+    for (size_t i = 0; i < m->positions.size(); ++i) {
+        const glm::dvec3 p = m->positions[i];
+        const double rho = std::hypot(p.x, p.z);
+        const glm::dvec3 t = rho > 0 ? glm::dvec3(p.z, 0, -p.x) / rho : glm::dvec3(1, 0, 0);
+        for (int k = 0; k < 3; ++k) {
+            g.positions.push_back(float(p[k]));
+            g.normals.push_back(float(m->normals[i][k]));
+            g.tangents.push_back(float(t[k]));
+        }
+        g.texCoords.push_back(float(m->texCoords[i].x));
+        g.texCoords.push_back(float(m->texCoords[i].y));
+    }
+    g.indices.assign(m->indices.begin(), m->indices.end());
+    return g;
+}
+
+// The lab's own meshes: core's, i.e. the answers of §2.4 task ④. A student handout cuts these
+// bodies (labs/handout_strip.txt): there they are empty and the lab draws yours instead.
+Mesh labSphere(double radius, int slices, int stacks) {
+    return makeSphere(radius, slices, stacks);
+}
+Mesh labTorus(double R, double r, int rings, int sides) {
+    return makeTorus(R, r, rings, sides);
+}
+
 // The torus p(s,t) of makeTorus: |∂p/∂s| = 2π·(distance from the y axis), |∂p/∂t| = 2π·r.
 void addTorusScales(GlMesh& g, double minorRadius) {
     constexpr double kTwoPi = 6.283185307179586;
@@ -141,8 +171,8 @@ class TexturesLab : public Lab {
             upload(textures_[i], img);
         }
         upload(latLongTex_, makeLatLongImage(512, 256));
-        sphere_ = toGl(makeSphere(1.2, 48, 24));
-        torus_ = toGl(makeTorus(kBumpTorusMajor, kBumpTorusMinor, 64, 32));
+        sphere_ = toGl(labSphere(1.2, 48, 24));
+        torus_ = toGl(labTorus(kBumpTorusMajor, kBumpTorusMinor, 64, 32));
         addTorusScales(torus_, kBumpTorusMinor);
         std::string err;
         bumpProgram_ = loadProgram("shaders/bump.vert", "shaders/bump.frag", err);
@@ -150,11 +180,18 @@ class TexturesLab : public Lab {
             std::fprintf(stderr, tr("lab04: %s\n"), err.c_str());
             s_->message += err + tr(" (scene 5 falls back to the fixed-function torus)") + "\n";
         }
-        room_ = toGl(makeSphere(30.0, 64, 32));
+        room_ = toGl(labSphere(30.0, 64, 32));
+        ownMeshes_ = !sphere_.indices.empty();
     }
 
     void draw(const View& view) override {
         ex_.poll(!view.headless);
+        if (!ownMeshes_) { // a handout: your meshes wherever the lab used its own, as they are now
+            sphere_ = toGl(exerciseMesh(ex_, false, 1.2, 0, 48, 24));
+            torus_ = toGl(exerciseMesh(ex_, true, kBumpTorusMajor, kBumpTorusMinor, 64, 32));
+            addTorusScales(torus_, kBumpTorusMinor);
+            room_ = toGl(exerciseMesh(ex_, false, 30.0, 0, 64, 32));
+        }
         glViewport(0, 0, view.width, view.height);
         glClearColor(0.12f, 0.12f, 0.14f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -530,6 +567,7 @@ class TexturesLab : public Lab {
     bool haveMap_ = false;
     float mapYaw_ = 0, mapPitch_ = 0;
     GlMesh sphere_, torus_, room_;
+    bool ownMeshes_ = true; // false in a student handout (no answers): yours stand in
 };
 
 } // namespace

@@ -5,23 +5,24 @@
 
 namespace wb {
 
-glm::dmat4 exerciseReflection(const ex::ExerciseMode& mode, const Plane& plane,
-                              const glm::dmat4& reference) {
+std::optional<glm::dmat4> exerciseReflection(const ex::ExerciseMode& mode, const Plane& plane,
+                                             const std::optional<glm::dmat4>& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
     const auto m = mode.call("05.reflection",
                              [&] { return t->reflectionMatrix(glm::dvec4(plane.n, plane.d)); });
-    return m ? *m : reference;
+    return m ? m : reference;
 }
 
-glm::dmat4 exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane, const glm::dvec3& light,
-                          const glm::dmat4& reference) {
+std::optional<glm::dmat4> exerciseShadow(const ex::ExerciseMode& mode, const Plane& plane,
+                                         const glm::dvec3& light,
+                                         const std::optional<glm::dmat4>& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
     const auto m = mode.call("05.shadow", [&] {
         return t->shadowMatrix(glm::dvec4(plane.n, plane.d), glm::dvec4(light, 1.0));
     });
-    return m ? *m : reference;
+    return m ? m : reference;
 }
 
 std::vector<glm::dvec3> exerciseEllipse(const ex::ExerciseMode& mode, const glm::dvec2& centre,

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 const wb::ex::LabExercises& wbExercises_lab05();
 
@@ -67,6 +68,42 @@ std::vector<glm::dvec3> clipToPositive(const Triangle& t, const Plane& plane) {
     return out;
 }
 
+// The lab's own answers to §2.5 tasks ③ and ④ (core's matrices). A student handout cuts
+// these bodies (labs/handout_strip.txt): there they give nullopt and the lab draws only the
+// student's reflection and shadows.
+std::optional<glm::dmat4> labReflection(const Plane& plane) {
+    return mirrorPlane(plane);
+}
+std::optional<glm::dmat4> labShadow(const Plane& plane, const glm::dvec3& light) {
+    return shadowPoint(plane, light);
+}
+
+// The object on the stairs: the torus (core's, lab 04's task ④). A handout has no torus
+// (its vertices are that answer): there the object is the octahedron below.
+Mesh labObject() {
+    return makeTorus(kTorusMajor, kTorusMinor, 40, 20);
+}
+
+// An octahedron of radius r with flat normals: the handout's stand-in for the torus (no
+// lab's answer; its shadow has no hole).
+[[maybe_unused]] Mesh octahedron(double r) {
+    Mesh m;
+    const glm::dvec3 ax[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int oct = 0; oct < 8; ++oct) {
+        const glm::dvec3 a = ax[0] * ((oct & 1) ? -r : r), b = ax[1] * ((oct & 2) ? -r : r),
+                         c = ax[2] * ((oct & 4) ? -r : r);
+        // Counter-clockwise from outside: (b - a) x (c - a) along a + b + c.
+        const bool flip = glm::dot(glm::cross(b - a, c - a), a + b + c) < 0;
+        const glm::dvec3 n = glm::normalize(a + b + c);
+        for (const glm::dvec3& p : {a, flip ? c : b, flip ? b : c}) {
+            m.indices.push_back(uint32_t(m.positions.size()));
+            m.positions.push_back(p);
+            m.normals.push_back(n);
+        }
+    }
+    return m;
+}
+
 // Palette for the raw stencil view: one colour per receiver, the mirrors' colours mixed in
 // where their bits are set, everything halved where the shadow bit is set.
 void stencilColour(uint8_t v, uint8_t* rgb) {
@@ -110,7 +147,7 @@ class StencilLab : public Lab {
                 ex_.keyHelp()};
     }
 
-    void init() override { torus_ = makeTorus(kTorusMajor, kTorusMinor, 40, 20); }
+    void init() override { torus_ = labObject(); }
 
     void draw(const View& view) override {
         ex_.poll(!view.headless);
@@ -378,7 +415,10 @@ class StencilLab : public Lab {
     std::vector<Mirror> mirrors() const {
         std::vector<Mirror> out;
         if (s_->rectMirror) out.push_back({rectangle(), kStencilRectMirror});
-        if (s_->ellipseMirror) out.push_back({ellipseOutline(), kStencilEllipseMirror});
+        if (s_->ellipseMirror) {
+            std::vector<glm::dvec3> e = ellipseOutline(); // empty in a handout until yours is done
+            if (e.size() >= 3) out.push_back({std::move(e), kStencilEllipseMirror});
+        }
         return out;
     }
 
@@ -466,9 +506,14 @@ class StencilLab : public Lab {
             glStencilFunc(GL_EQUAL, m.stencil, 0xFF);
             glClipPlane(GL_CLIP_PLANE0, behind); // in world coordinates: modelview is the camera
             glEnable(GL_CLIP_PLANE0);
+            const std::optional<glm::dmat4> reflection =
+                exerciseReflection(ex_, mirrorPlaneEq, labReflection(mirrorPlaneEq));
+            if (!reflection) { // a student handout before 05.reflection is done: no image
+                glDisable(GL_CLIP_PLANE0);
+                continue;
+            }
             glPushMatrix();
-            glMultMatrixd(
-                glm::value_ptr(exerciseReflection(ex_, mirrorPlaneEq, mirrorPlane(mirrorPlaneEq))));
+            glMultMatrixd(glm::value_ptr(*reflection));
             glFrontFace(GL_CW);
             drawScene();
             if (s_->shadow && !s_->naiveShadow) {
@@ -571,7 +616,9 @@ class StencilLab : public Lab {
         for (const Triangle& t : objectTris_)
             for (const glm::dvec3& p : t.p)
                 lo = glm::min(lo, p), hi = glm::max(hi, p);
-        const glm::dmat4 m = shadowPoint(r.plane, kLight);
+        const std::optional<glm::dmat4> shadow = labShadow(r.plane, kLight);
+        if (!shadow) return true;
+        const glm::dmat4 m = *shadow;
         const double lightSide = glm::dot(r.plane.n, kLight) + r.plane.d;
         glm::dvec3 slo(1e300), shi(-1e300);
         for (int c = 0; c < 8; ++c) {
@@ -598,9 +645,11 @@ class StencilLab : public Lab {
     // A caster's triangles, clipped to the light's side of `plane` (the part beyond the
     // plane casts nothing on it), drawn through shadowPoint(plane, light).
     void drawFlattened(const Plane& plane, const std::vector<Triangle>& caster) {
+        const std::optional<glm::dmat4> shadow =
+            exerciseShadow(ex_, plane, kLight, labShadow(plane, kLight));
+        if (!shadow) return; // a student handout before 05.shadow is done: no shadow
         glPushMatrix();
-        glMultMatrixd(
-            glm::value_ptr(exerciseShadow(ex_, plane, kLight, shadowPoint(plane, kLight))));
+        glMultMatrixd(glm::value_ptr(*shadow));
         glBegin(GL_TRIANGLES);
         for (const Triangle& t : caster) {
             const std::vector<glm::dvec3> poly = clipToPositive(t, plane);

@@ -59,6 +59,11 @@ struct Task {
     // False when compare() judges `got` from the input alone (e.g. lab 02's cubes): nothing is
     // recorded for the handout (the recording would be the answer), expected is empty.
     bool needsExpected = true;
+    // Optional: what compare() needs of the reference's output, when less than all of it (e.g.
+    // a mesh's area, not its vertices). Applied to the reference's output in every build and
+    // to what --record writes, so a handout records only this (the full output would be the
+    // answer) and compare() sees the same numbers with or without a reference.
+    std::function<Values(const Values& referenceOut)> expectedDigest;
     double timeLimitSeconds = 5.0; // for all cases together; endless loops end here
 };
 

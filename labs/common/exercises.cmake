@@ -99,7 +99,14 @@ ${list}    };
 }
 } // namespace wb::ex
 ")
-  add_executable(wb-check ${CMAKE_CURRENT_SOURCE_DIR}/common/wb_check.cpp ${gen})
+  add_executable(wb-check ${CMAKE_CURRENT_SOURCE_DIR}/common/wb_check.cpp ${gen}
+    ${CMAKE_CURRENT_SOURCE_DIR}/common/gl_call_interpose.cpp)
+  # The GL/GLU matrix functions wb-check defines are exported, so the student's object binds
+  # to them and its matrix calls are seen (common/gl_call_log.h; lab 03 task 5's rule).
+  target_link_options(wb-check PRIVATE
+    "LINKER:--dynamic-list=${CMAKE_CURRENT_SOURCE_DIR}/common/gl_call_interpose.list")
+  set_property(TARGET wb-check APPEND PROPERTY LINK_DEPENDS
+    ${CMAKE_CURRENT_SOURCE_DIR}/common/gl_call_interpose.list)
   target_compile_options(wb-check PRIVATE ${WB_WARNINGS})
   target_compile_definitions(wb-check PRIVATE WB_EXERCISE_DIR="${WB_EXERCISE_DIR}"
     WB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
