@@ -505,14 +505,14 @@ class AffineLab : public Lab {
         if (s.mode == AffineMode::Mirror) {
             // The image first, through the mirror matrix (det −1 turns the winding over).
             if (kHaveReference) {
-            glPushMatrix();
-            glMultMatrixd(glm::value_ptr(m));
-            glFrontFace(GL_CW);
-            glEnable(GL_LIGHTING);
-            glColor3ub(kImageColor[0], kImageColor[1], kImageColor[2]);
-            drawPrism(true);
-            glFrontFace(GL_CCW);
-            glPopMatrix();
+                glPushMatrix();
+                glMultMatrixd(glm::value_ptr(m));
+                glFrontFace(GL_CW);
+                glEnable(GL_LIGHTING);
+                glColor3ub(kImageColor[0], kImageColor[1], kImageColor[2]);
+                drawPrism(true);
+                glFrontFace(GL_CCW);
+                glPopMatrix();
             }
             // The plane, half transparent so the image behind it shows.
             glDisable(GL_LIGHTING);
@@ -526,14 +526,14 @@ class AffineLab : public Lab {
             // The shadow: the object squashed onto the plane by M; pulled towards the
             // eye in depth so it wins against the plane it lies in.
             if (kHaveReference) {
-            glEnable(GL_POLYGON_OFFSET_FILL);
-            glPolygonOffset(-1, -2);
-            glPushMatrix();
-            glMultMatrixd(glm::value_ptr(m));
-            glColor3ub(kShadowColor[0], kShadowColor[1], kShadowColor[2]);
-            drawPrism(false);
-            glPopMatrix();
-            glDisable(GL_POLYGON_OFFSET_FILL);
+                glEnable(GL_POLYGON_OFFSET_FILL);
+                glPolygonOffset(-1, -2);
+                glPushMatrix();
+                glMultMatrixd(glm::value_ptr(m));
+                glColor3ub(kShadowColor[0], kShadowColor[1], kShadowColor[2]);
+                drawPrism(false);
+                glPopMatrix();
+                glDisable(GL_POLYGON_OFFSET_FILL);
             }
             drawLight3d(s);
         }

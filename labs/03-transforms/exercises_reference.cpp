@@ -37,7 +37,7 @@ unsigned mirrorInWall(float wallZ) {
     if (WB_MUTANT(16)) { // 16: the right matrix, but by glMultMatrixd (the task forbids it)
         const double m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, 2.0 * wallZ, 1};
         glMultMatrixd(m);
-    } else if (WB_MUTANT(12)) {                 // 12: the translations in the wrong order
+    } else if (WB_MUTANT(12)) { // 12: the translations in the wrong order
         glTranslatef(0, 0, -wallZ);
         glScalef(1, 1, -1);
         glTranslatef(0, 0, wallZ);

@@ -79,7 +79,8 @@ Values meshArea(const Values& out) {
     double a = 0;
     for (size_t k = 0; k + 2 < m.indices.size(); k += 3) {
         const unsigned i = m.indices[k], j = m.indices[k + 1], l = m.indices[k + 2];
-        if (i >= m.positions.size() || j >= m.positions.size() || l >= m.positions.size()) return {};
+        if (i >= m.positions.size() || j >= m.positions.size() || l >= m.positions.size())
+            return {};
         a += 0.5 * glm::length(glm::cross(m.positions[j] - m.positions[i],
                                           m.positions[l] - m.positions[i]));
     }
@@ -256,8 +257,8 @@ Verdict torusCompare(const Values& in, const Values& expected, const Values& got
                        st.y);
         return {};
     };
-    return checkMesh(m, size, expected.empty() ? 0.0 : expected[0], 1.0 / rings, 1.0 / sides, vertex,
-                     "torus");
+    return checkMesh(m, size, expected.empty() ? 0.0 : expected[0], 1.0 / rings, 1.0 / sides,
+                     vertex, "torus");
 }
 
 // ----- ⑤ sphere map: in = eye position, unit normal; out = student s, t, GL's s, t, ok -----

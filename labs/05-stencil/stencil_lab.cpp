@@ -78,12 +78,6 @@ std::optional<glm::dmat4> labShadow(const Plane& plane, const glm::dvec3& light)
     return shadowPoint(plane, light);
 }
 
-// The object on the stairs: the torus (core's, lab 04's task ④). A handout has no torus
-// (its vertices are that answer): there the object is the octahedron below.
-Mesh labObject() {
-    return makeTorus(kTorusMajor, kTorusMinor, 40, 20);
-}
-
 // An octahedron of radius r with flat normals: the handout's stand-in for the torus (no
 // lab's answer; its shadow has no hole).
 [[maybe_unused]] Mesh octahedron(double r) {
@@ -102,6 +96,12 @@ Mesh labObject() {
         }
     }
     return m;
+}
+
+// The object on the stairs: the torus (core's, lab 04's task ④). A handout has no torus
+// (its vertices are that answer): there the object is the octahedron above.
+Mesh labObject() {
+    return makeTorus(kTorusMajor, kTorusMinor, 40, 20);
 }
 
 // Palette for the raw stencil view: one colour per receiver, the mirrors' colours mixed in

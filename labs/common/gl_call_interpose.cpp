@@ -34,8 +34,8 @@ void* realFunction(const char* name) {
 #define WB_INTERPOSE(name, params, args)                                                           \
     extern "C" __attribute__((visibility("default"))) void name params {                           \
         static_assert(wb::ex::glMatrixCallIndex(#name) >= 0, #name " is not in kGlMatrixCalls");   \
-        static auto* const real = reinterpret_cast<void(*) params>(realFunction(#name));            \
-        const bool noted = wb::ex::glCallLogEnter(wb::ex::glMatrixCallIndex(#name));              \
+        static auto* const real = reinterpret_cast<void(*) params>(realFunction(#name));           \
+        const bool noted = wb::ex::glCallLogEnter(wb::ex::glMatrixCallIndex(#name));               \
         real args;                                                                                 \
         if (noted) wb::ex::glCallLogLeave();                                                       \
     }

@@ -10,13 +10,30 @@
 namespace wb::ex {
 
 // Every matrix call wb-check can see, by index (the index is what a check's Values carry).
-inline constexpr const char* kGlMatrixCalls[] = {
-    "glTranslatef",    "glTranslated",    "glScalef",          "glScaled",
-    "glRotatef",       "glRotated",       "glPushMatrix",      "glPopMatrix",
-    "glLoadIdentity",  "glLoadMatrixf",   "glLoadMatrixd",     "glMultMatrixf",
-    "glMultMatrixd",   "glLoadTransposeMatrixf", "glLoadTransposeMatrixd",
-    "glMultTransposeMatrixf", "glMultTransposeMatrixd", "glMatrixMode", "glFrustum", "glOrtho",
-    "gluLookAt",       "gluPerspective",  "gluOrtho2D",        "gluPickMatrix"};
+inline constexpr const char* kGlMatrixCalls[] = {"glTranslatef",
+                                                 "glTranslated",
+                                                 "glScalef",
+                                                 "glScaled",
+                                                 "glRotatef",
+                                                 "glRotated",
+                                                 "glPushMatrix",
+                                                 "glPopMatrix",
+                                                 "glLoadIdentity",
+                                                 "glLoadMatrixf",
+                                                 "glLoadMatrixd",
+                                                 "glMultMatrixf",
+                                                 "glMultMatrixd",
+                                                 "glLoadTransposeMatrixf",
+                                                 "glLoadTransposeMatrixd",
+                                                 "glMultTransposeMatrixf",
+                                                 "glMultTransposeMatrixd",
+                                                 "glMatrixMode",
+                                                 "glFrustum",
+                                                 "glOrtho",
+                                                 "gluLookAt",
+                                                 "gluPerspective",
+                                                 "gluOrtho2D",
+                                                 "gluPickMatrix"};
 inline constexpr int kGlMatrixCallCount = int(sizeof kGlMatrixCalls / sizeof kGlMatrixCalls[0]);
 // The index of a call by its name (-1: none), at compile time.
 constexpr int glMatrixCallIndex(const char* name) {
