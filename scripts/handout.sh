@@ -45,6 +45,8 @@ REF
 done
 python3 "$here/scripts/handout_strip.py" "$out" "$here/labs/handout_strip.txt"
 rm -rf "$out"/tests/{core,render,golden,bench,fuzz,shell,tools}
+# The handout test itself and its list of the answers' expressions (which quotes them).
+rm -f "$out"/tests/exercises/handout_test.sh "$out"/tests/exercises/handout_answers.txt
 
 echo "handout written to $out:"
 echo "  the students run ./wb run and ./wb check there; their files are labs/*/exercises.cpp"

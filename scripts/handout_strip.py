@@ -7,7 +7,7 @@ handout_strip.py DIR LIST: LIST (labs/handout_strip.txt) has one line per cut, t
                                     a throw saying why)
   FILE  decl   START                the declaration starting with START, through its '};'
   FILE  lines  START  END           the lines from START through END (comments; in a .po
-                                    catalogue a msgid through its msgstr)
+                                    catalogue a msgid through its msgstr; in a .md page)
 START/END match the beginning of a line after its indentation. A cut that matches nothing is
 an error: the list must follow the code.
 """
@@ -78,8 +78,14 @@ def main():
                 failed = True
                 continue
             end = text.index('\n', at + end_at) + 1
-            note = '#' if path.endswith('.po') else '//'  # a catalogue's comments start with #
-            text = text[:at] + f'{note} (removed from the handout: it described an answer)\n' + text[end:]
+            note = '(removed from the handout: it described an answer)'
+            if path.endswith('.po'):
+                note = f'# {note}'  # a catalogue's comments start with #
+            elif path.endswith('.md'):
+                note = f'<!-- {note} -->'
+            else:
+                note = f'// {note}'
+            text = text[:at] + note + '\n' + text[end:]
         else:
             print(f'{listing}:{n}: unknown mode {mode}', file=sys.stderr)
             failed = True

@@ -20,12 +20,12 @@ if grep -q "outerProduct\|2.0 \* n" "$h/core/src/affine.cpp" 2>/dev/null && \
 fi
 grep -q "^labs/" "$h/labs/handout_expected.tsv" && { echo "FAIL: bad recording"; exit 1; }
 # The answers of labs 03-05 and core's 3D maps, by their distinctive expressions (each is in
-# the repository: tests/exercises/handout_answers.txt says where), in no source, catalogue
-# or recording of the handout.
+# the repository: tests/exercises/handout_answers.txt says where), in no source, catalogue,
+# page or recording of the handout.
 found=0
 while IFS= read -r pat; do
   case $pat in ''|'#'*) continue ;; esac
-  if grep -rnE -- "$pat" "$h/core" "$h/labs" "$h/i18n"; then
+  if grep -rnE -- "$pat" "$h/core" "$h/labs" "$h/i18n" "$h/docs"; then
     echo "FAIL: an answer is in the handout: $pat"; found=1
   fi
 done < "$repo/tests/exercises/handout_answers.txt"
