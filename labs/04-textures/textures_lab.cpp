@@ -298,6 +298,10 @@ class TexturesLab : public Lab {
 
     void gui() override {
         ex_.gui();
+        if (!ownMeshes_ && (sphere_.indices.empty() || torus_.indices.empty()))
+            ImGui::TextWrapped(tr("This copy draws only your sphere and torus (04.sphere, "
+                                  "04.torus in exercises.cpp): the scene stays empty of them "
+                                  "until they are done."));
         int scene = int(s_->scene);
         ImGui::Text(tr("Scene (0-5)"));
         ImGui::RadioButton(tr("all"), &scene, 0);
