@@ -73,6 +73,10 @@ class Lab {
     // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
     // true and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
+    // True while busy() work is done inside draw() itself (lab 08's GL hemicube rows need the
+    // GL thread): the window then draws the next frame at once, instead of pacing its progress
+    // frames to leave the cores to worker threads.
+    virtual bool worksInDraw() const { return false; }
     // While > 0 (e.g. the exercise mode watching its file), the window calls poll() this often
     // when idle, and redraws only when poll() returns true; 0: never.
     virtual int pollMs() const { return 0; }
