@@ -68,11 +68,12 @@ WindowState* g = nullptr;
 // While a lab works in the background (a trace, a radiosity run), its progress is shown at
 // most this often, and at least this often...
 constexpr double kBusyRedrawMs = 33, kBusyRedrawMaxMs = 250;
-// ...with the frames taking at most this share of the time: a frame here is drawn by Mesa's
+// ...with the frames taking at most this share of the time (of the wall clock: llvmpipe
+// rasterizes on two threads, so of the CPU up to twice that): a frame here is drawn by Mesa's
 // llvmpipe on the same two cores as the lab's worker threads (lab 08's Cornell box: ~30-50 ms
 // a frame under load, mostly the rasterization waited for in glutSwapBuffers), so 30 frames a
 // second took a third to a half of the machine from the run (docs/bench/radiosity.md).
-constexpr double kBusyDrawShare = 0.2;
+constexpr double kBusyDrawShare = 0.1;
 
 int panelWidth() {
     if (g->lab->panelFillsWindow()) return g->windowWidth;
