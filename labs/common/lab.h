@@ -67,6 +67,10 @@ class Lab {
         return false;
     }
     virtual void gui() {} // ImGui widgets for the lab's parameters
+    // The colour behind the scene: a scene area taller than 4:3 gets the scene at its bottom
+    // (shell: sceneViewHeight) and the band above it in this colour, so the picture does not
+    // end in a black edge where a lab draws only its view (lab 07's traced image).
+    virtual void background(float& r, float& g, float& b) const { r = g = b = 0.0f; }
     // True when the panel is the whole user interface (the launcher): it fills the window.
     virtual bool panelFillsWindow() const { return false; }
     // True while the picture changes without input (work in the background, an animation):

@@ -267,6 +267,14 @@ void display() {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (g->view.height < g->windowHeight) { // the band above the scene: the lab's background
+        float r = 0, gr = 0, b = 0;
+        g->lab->background(r, gr, b);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, g->view.height, g->view.width, g->windowHeight - g->view.height);
+        glClearColor(r, gr, b, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     glPopAttrib();
     glViewport(0, 0, g->view.width, g->view.height);
     auto tLab = std::chrono::steady_clock::now();
