@@ -14,7 +14,8 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cpu() { awk '{printf "%.2f", ($14+$15)/100}' "/proc/$1/stat"; }
 window() { # exe method
-    local out=$tmp/window.txt t0 t1 c1 pid
+    local out t0 t1 c1 pid
+    out=$(mktemp "$tmp/window.XXXX") # empty before the lab starts: no line of an earlier run
     t0=$(date +%s.%N)
     WB_FRAME_LOG=1 "$1" --method "$2" >"$out" 2>&1 &
     pid=$!
