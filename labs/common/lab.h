@@ -74,8 +74,9 @@ class Lab {
     // True when the panel is the whole user interface (the launcher): it fills the window.
     virtual bool panelFillsWindow() const { return false; }
     // True while the picture changes without input (work in the background, an animation):
-    // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
-    // true and otherwise only on input (an idle lab uses no CPU).
+    // headless renders call draw() until it is false; the window redraws while it is true, at
+    // most at 30 Hz and slower when frames are dear (they take <= 10% of the time, at least
+    // 4 Hz: shell_window.cpp), and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
     // True while busy() work is done inside draw() itself (lab 08's GL hemicube rows need the
     // GL thread): the window then draws the next frame at once, instead of pacing its progress
