@@ -268,6 +268,15 @@ class RaytraceLab : public Lab {
 
     void draw(const View& view) override;
     void gui() override;
+    // The scene's background (what a ray that misses returns): the band a tall window leaves
+    // above the traced image continues the sky, as the raster view's clear does.
+    void background(float& r, float& g, float& b) const override {
+        r = g = b = 0.0f;
+        if (!scene_.scene || ex_.on()) return;
+        r = float(scene_.scene->background.x);
+        g = float(scene_.scene->background.y);
+        b = float(scene_.scene->background.z);
+    }
 
     // Test hooks.
     void inspectPixel(int x, int y) {

@@ -240,7 +240,21 @@ void RadiosityLab::draw(const View& view) {
             pendingClick_ = false;
         }
     }
-    stepOnMainThread(view.headless);
+    if (view.headless) {
+        stepOnMainThread(true);
+        drawScene(view);
+        return;
+    }
+    // In a window the GL method's slice of steps comes after the scene's draw calls: Mesa's
+    // llvmpipe rasterizes the frame on its threads while this thread draws the next
+    // hemicubes (before, glutSwapBuffers waited ~30-50 ms a frame for it); the frame shows
+    // the previous slice's state, and the shell draws one more when the run ends.
+    drawScene(view);
+    glFlush(); // hand the frame to the rasterizer now
+    stepOnMainThread(false);
+}
+
+void RadiosityLab::drawScene(const View& view) {
     updateColours();
     setupCamera(view);
     if (pendingClick_) {

@@ -579,6 +579,7 @@ void RadiosityLab::startRun() {
     runStart_ = std::chrono::steady_clock::now();
     runSeconds_ = 0;
     usableSeconds_ = -1;
+    stepSeconds_ = 0;
     if (s.method == FfMethod::GlHemicube) {
         // GL rows need the GL thread: draw() takes steps for ~30 ms per frame instead.
         mainThreadRun_ = true;
@@ -595,7 +596,9 @@ void RadiosityLab::startRun() {
                 break;
             }
             try {
+                const auto t0 = std::chrono::steady_clock::now();
                 solver->step();
+                stepSeconds_ = stepSeconds_ + secondsSince(t0);
             } catch (const std::exception& e) {
                 std::lock_guard<std::mutex> lock(snapMutex_);
                 workerError_ = e.what();
@@ -654,6 +657,7 @@ void RadiosityLab::stepOnMainThread(bool headless) {
         mainThreadRun_ = false;
     }
     if (sol.residual() < s.tolerance || sol.steps() >= limit || budgetHit_) mainThreadRun_ = false;
+    stepSeconds_ = stepSeconds_ + secondsSince(t0);
     publish();
     if (!mainThreadRun_) {
         runSeconds_ = secondsSince(runStart_);
@@ -666,11 +670,12 @@ void RadiosityLab::stepOnMainThread(bool headless) {
 // table come from these lines).
 void RadiosityLab::reportRun() const {
 #if !defined(WB_HEADLESS)
-    std::printf("lab08: %s run %.2f s, %d steps, residual %.2e\n",
+    const RadiositySnapshot snap = snapshot();
+    std::printf("lab08: %s run %.2f s (solving %.2f s), %d steps, residual %.2e\n",
                 s.method == FfMethod::Rays          ? "rays"
                 : s.method == FfMethod::CpuHemicube ? "CPU"
                                                     : "GL",
-                runSeconds_.load(), snapshot().steps, snapshot().residual);
+                runSeconds_.load(), stepSeconds_.load(), snap.steps, snap.residual);
     std::fflush(stdout);
 #endif
 }

@@ -65,10 +65,12 @@ class RadiosityLab : public Lab {
         return true;
     }
     bool busy() const override { return running() || ex_.busy(); }
+    bool worksInDraw() const override { return mainThreadRun_ && !ex_.on(); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
     bool headlessFailed() const override { return failed_; }
     void draw(const View& view) override;
+    void drawScene(const View& view);
     void gui() override;
 
     // Test hooks.
@@ -162,6 +164,7 @@ class RadiosityLab : public Lab {
     rad::ItemBuffer providerItems_; // the GL row provider's item buffer
     std::chrono::steady_clock::time_point runStart_, labStart_;
     std::atomic<double> runSeconds_{0};
+    std::atomic<double> stepSeconds_{0}; // of the run, inside solver steps (the rest: the window)
     std::atomic<double> usableSeconds_{-1}; // the run's time to unshot power < 5% (−1: not yet)
     std::atomic<bool> budgetHit_{false};
     double lastStepSeconds_ = 0;

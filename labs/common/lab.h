@@ -67,12 +67,21 @@ class Lab {
         return false;
     }
     virtual void gui() {} // ImGui widgets for the lab's parameters
+    // The colour behind the scene: a scene area taller than 4:3 gets the scene at its bottom
+    // (shell: sceneViewHeight) and the band above it in this colour, so the picture does not
+    // end in a black edge where a lab draws only its view (lab 07's traced image).
+    virtual void background(float& r, float& g, float& b) const { r = g = b = 0.0f; }
     // True when the panel is the whole user interface (the launcher): it fills the window.
     virtual bool panelFillsWindow() const { return false; }
     // True while the picture changes without input (work in the background, an animation):
-    // headless renders call draw() until it is false; the window redraws at 30 Hz while it is
-    // true and otherwise only on input (an idle lab uses no CPU).
+    // headless renders call draw() until it is false; the window redraws while it is true, at
+    // most at 30 Hz and slower when frames are dear (they take <= 10% of the time, at least
+    // 4 Hz: shell_window.cpp), and otherwise only on input (an idle lab uses no CPU).
     virtual bool busy() const { return false; }
+    // True while busy() work is done inside draw() itself (lab 08's GL hemicube rows need the
+    // GL thread): the window then draws the next frame at once, instead of pacing its progress
+    // frames to leave the cores to worker threads.
+    virtual bool worksInDraw() const { return false; }
     // While > 0 (e.g. the exercise mode watching its file), the window calls poll() this often
     // when idle, and redraws only when poll() returns true; 0: never.
     virtual int pollMs() const { return 0; }

@@ -55,11 +55,25 @@ struct WindowState {
     bool logKeys = false; // WB_LOG_KEYS=1: print each lab key (the layout tests read it)
     std::string language; // the language the window title was last set in
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    // WB_FRAME_LOG=1: where a busy period's frames spent their time, printed when it ends.
+    bool frameLog = false;
+    double lastFrameMs = 0; // the last frame's time in display() (paces busy redraws)
+    struct FrameStats {
+        int frames = 0;
+        double panel = 0, lab = 0, imgui = 0, swap = 0, total = 0; // ms
+    } stats;
 };
 WindowState* g = nullptr;
 
-// While a lab works in the background (a trace), its progress is shown this often.
-constexpr unsigned kBusyRedrawMs = 33;
+// While a lab works in the background (a trace, a radiosity run), its progress is shown at
+// most this often, and at least this often...
+constexpr double kBusyRedrawMs = 33, kBusyRedrawMaxMs = 250;
+// ...with the frames taking at most this share of the time (of the wall clock: llvmpipe
+// rasterizes on two threads, so of the CPU up to twice that): a frame here is drawn by Mesa's
+// llvmpipe on the same two cores as the lab's worker threads (lab 08's Cornell box: ~30-50 ms
+// a frame under load, mostly the rasterization waited for in glutSwapBuffers), so 30 frames a
+// second took a third to a half of the machine from the run (docs/bench/radiosity.md).
+constexpr double kBusyDrawShare = 0.1;
 
 int panelWidth() {
     if (g->lab->panelFillsWindow()) return g->windowWidth;
@@ -207,9 +221,12 @@ void scheduleNextFrame(bool busyBefore) {
     if (continuous || g->input.pending() || g->settleFrames > 0 || ImGui::GetIO().WantTextInput) {
         if (g->settleFrames > 0) --g->settleFrames;
         glutPostRedisplay();
+    } else if (g->lab->busy() && g->lab->worksInDraw()) {
+        glutPostRedisplay(); // the work is in the next draw(): no idle wait before it
     } else if (g->lab->busy() && !g->timerPending) {
         g->timerPending = true;
-        glutTimerFunc(kBusyRedrawMs, busyTimer, 0);
+        const double wait = g->lastFrameMs * (1.0 - kBusyDrawShare) / kBusyDrawShare;
+        glutTimerFunc(unsigned(std::clamp(wait, kBusyRedrawMs, kBusyRedrawMaxMs)), busyTimer, 0);
     } else if (pollMs > 0 && !g->lab->busy() && !g->pollPending) {
         g->pollPending = true;
         glutTimerFunc(unsigned(pollMs), pollTimer, 0);
@@ -231,6 +248,7 @@ void display() {
     g->input.applyToFrame(ImGui::GetIO());
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGLUT_NewFrame();
+    auto tPanel = std::chrono::steady_clock::now();
     if (g->panelVisible) {
         const float before = g->panel.width;
         drawPanel(*g->lab, g->panel, float(g->windowWidth), float(g->windowHeight));
@@ -249,9 +267,19 @@ void display() {
     glDisable(GL_SCISSOR_TEST);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
+    if (g->view.height < g->windowHeight) { // the band above the scene: the lab's background
+        float r = 0, gr = 0, b = 0;
+        g->lab->background(r, gr, b);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, g->view.height, g->view.width, g->windowHeight - g->view.height);
+        glClearColor(r, gr, b, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     glPopAttrib();
     glViewport(0, 0, g->view.width, g->view.height);
+    auto tLab = std::chrono::steady_clock::now();
     g->lab->draw(g->view);
+    auto tImgui = std::chrono::steady_clock::now();
     // --frames counts on until every --smoke key has been pressed.
     bool lastFrame = g->opts.frames > 0 && g->frame + 1 >= g->opts.frames && g->smokeKeys.empty();
     if (g->panelVisible) {
@@ -269,12 +297,35 @@ void display() {
         g->panel.screenshotRequested = false;
         saveScreenshot(timestampedName());
     }
+    auto tSwap = std::chrono::steady_clock::now();
     glutSwapBuffers();
+    if (g->frameLog) {
+        auto msBetween = [](auto a, auto b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        auto& st = g->stats;
+        const auto tEnd = std::chrono::steady_clock::now();
+        if (busyBefore || g->lab->busy()) {
+            ++st.frames;
+            st.panel += msBetween(tPanel, tLab);
+            st.lab += msBetween(tLab, tImgui);
+            st.imgui += msBetween(tImgui, tSwap);
+            st.swap += msBetween(tSwap, tEnd);
+            st.total += msBetween(t0, tEnd);
+        }
+        if (st.frames > 0 && !g->lab->busy()) {
+            std::fprintf(stderr,
+                         "frames %d: %.0f ms (panel %.0f, lab %.0f, ImGui draw %.0f, swap %.0f)\n",
+                         st.frames, st.total, st.panel, st.lab, st.imgui, st.swap);
+            st = {};
+        }
+    }
     double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     // Smoothed while measuring (continuous frames); else the last frame alone, since frames
     // drawn on change are few and the first ones (shaders, meshes) are slow.
     g->panel.frameMs = g->panel.measureFps && g->frame > 0 ? 0.9 * g->panel.frameMs + 0.1 * ms : ms;
+    g->lastFrameMs = ms;
     ++g->frame;
     if (lastFrame) return quit();
     scheduleNextFrame(busyBefore);
@@ -478,6 +529,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
                      tr("cannot read the keyboard from X: keys work on the Latin layout only"));
     const char* logKeys = std::getenv("WB_LOG_KEYS");
     state.logKeys = logKeys && *logKeys == '1';
+    const char* frameLog = std::getenv("WB_FRAME_LOG");
+    state.frameLog = frameLog && *frameLog == '1';
     layout();
     GLenum glewStatus = glewInit();
     if (glewStatus != GLEW_OK) {
