@@ -605,3 +605,59 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
        << packetRows.str();
     return md.str();
 }
+
+std::string embreeBuildSection(int runs, const std::string& meshPath) {
+    // The builds alone (issue 21 item 4), every scene of the Embree table: ours and
+    // Embree's alternated in every round, medians of `runs`. One thread: CPU time of this
+    // thread from the call to the finished tree (ours: the Bvh constructor, its
+    // destructor not counted; Embree: rtcNewScene .. rtcCommitScene, as above). Two
+    // threads: wall time of the same, so the machine's other load counts.
+    std::ostringstream md;
+    md << "\n## Builds against Embree 3 (ours / Embree, alternated, median of " << runs
+       << ")\n\n| scene | primitives | 1 thread CPU ms ours | Embree | ours/Embree | 2 threads wall "
+          "ms ours | Embree | ours/Embree | ours 1→2 threads | SAH cost |\n"
+          "|---|---|---|---|---|---|---|---|---|---|\n";
+    const char* only = std::getenv("WB_EMBREE_SCENES");
+    for (const BenchScene& it : benchScenes(meshPath)) {
+        if (only && *only) {
+            bool hit = false;
+            std::stringstream parts(only);
+            std::string part;
+            while (std::getline(parts, part, ','))
+                hit = hit || (!part.empty() && it.name.find(part) != std::string::npos);
+            if (!hit) continue;
+        }
+        SceneFile sf = it.make();
+        std::vector<double> o1, e1, o2, e2;
+        BvhStats st;
+        for (int k = 0; k < runs; ++k) {
+            BvhOptions b1;
+            b1.buildThreads = 1;
+            {
+                const double c0 = threadCpu();
+                Bvh t(sf.scene->primitives, b1);
+                o1.push_back(threadCpu() - c0);
+                st = t.stats();
+            }
+            { EmbreeScene e(*sf.scene, "threads=1"); e1.push_back(e.buildCpuS); }
+            BvhOptions b2;
+            b2.buildThreads = 2;
+            {
+                const auto t0 = Clock::now();
+                Bvh t(sf.scene->primitives, b2);
+                o2.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+            }
+            { EmbreeScene e(*sf.scene, "threads=2"); e2.push_back(e.buildS); }
+        }
+        const double a = median(o1), b = median(e1), c = median(o2), d = median(e2);
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.4f |\n",
+                      it.name.c_str(), st.primitives + st.unbounded, a * 1e3, b * 1e3,
+                      b > 0 ? a / b : 0.0, c * 1e3, d * 1e3, d > 0 ? c / d : 0.0,
+                      c > 0 ? a / c : 0.0, st.sahCost);
+        md << line;
+        std::fputs(line, stderr);
+    }
+    return md.str();
+}
