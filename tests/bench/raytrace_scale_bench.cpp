@@ -289,7 +289,7 @@ static std::string buildRateSection(bool quick) {
           "alone, so the difference is the collapse). 1 thread: BvhOptions::buildThreads 1, "
           "CPU time; "
        << threads
-       << " threads: the parallel build (nodes over 65,536 primitives binned and partitioned "
+       << " threads: the parallel build (nodes over 16,384 primitives binned and partitioned "
           "in blocks by TBB tasks, subtrees over 2048 primitives split into TBB tasks), "
           "wall time. "
           "Median of 5 builds each, alternated. SAH cost: BvhStats::sahCost of the binary tree "

@@ -118,11 +118,17 @@ constexpr int kMedianDepth = 80;
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
 // Nodes above this many primitives are binned and partitioned in blocks of kBlock
 // (in parallel when the build has threads); above kParallelGrain their children are
-// separate TBB tasks. kBlockNode > kMaxLeaf: a blocked node is never a leaf.
-constexpr std::size_t kBlock = 8192;
-constexpr std::size_t kBlockNode = 65536;
+// separate TBB tasks. A node over 256 primitives is never a leaf (Builder::finish: a
+// leaf has at most maxLeafSize <= 255, or is a group of <= 256 coincident centroids), so
+// the blocked path has no leaf case. Issue 21: blocked from 16,384 (was 65,536): the
+// root of jacks 5 (42k) and the first levels under balls 5's root were one task each,
+// binned and partitioned by one thread while the other waited — the 2-thread build's
+// serial part. The decision and the partition are the same either way (bins merged over
+// blocks; the stable scatter block by block at prefix offsets), so is the tree.
+constexpr std::size_t kBlock = 4096;
+constexpr std::size_t kBlockNode = 16384;
 constexpr std::size_t kParallelGrain = 2048;
-static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
+static_assert(kBlockNode > 256, "the blocked path has no leaf case");
 
 // 1. Binning: the bin of a centroid, per axis, clamped in float before the conversion
 //    (a huge or NaN product converted to int is undefined behaviour; found by
@@ -466,7 +472,7 @@ struct Builder {
 
     // A node of more than kBlockNode references: binned per block, partitioned by a
     // stable scatter of each block into the other buffer (blocks fixed by the range,
-    // so the order is the same for any thread count). Never a leaf (kBlockNode > kMaxLeaf).
+    // so the order is the same for any thread count). Never a leaf (kBlockNode > 256).
     Decision decideBlocked(const Task& t, Scratch& sc) const {
         Decision d;
         const std::size_t n = t.end - t.begin;
@@ -496,7 +502,7 @@ struct Builder {
             }
             sweep(s, sc, best);
         }
-        if (finish(t, best, d)) return d; // cannot happen (n > kMaxLeaf)
+        if (finish(t, best, d)) return d; // cannot happen (n > kBlockNode > 256)
         if (best.axis < 0) {
             medianSplit(t, d);
             return d;
