@@ -621,7 +621,8 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
           "walk (257² corner rays, Bvh::intersect, CPU time, median of the passes alternated).\n\n"
           "| scene | primitives | 1 thread CPU ms ours | Embree | ours/Embree | 2 threads wall "
           "ms ours | Embree | ours/Embree | ours 1→2 threads (1 thread CPU / 2 threads wall) | "
-          "1 thread CPU ms, full binary build | wide nodes | same wide tree | SAH cost | eye walk ms "
+          "1 thread CPU ms, full binary build | wide nodes | same wide tree | SAH cost | eye walk "
+          "ms "
           "ours | full binary build's tree |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     const char* only = std::getenv("WB_EMBREE_SCENES");
@@ -646,7 +647,10 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
                 o1.push_back(threadCpu() - c0);
                 st = t.stats();
             }
-            { EmbreeScene e(*sf.scene, "threads=1"); e1.push_back(e.buildCpuS); }
+            {
+                EmbreeScene e(*sf.scene, "threads=1");
+                e1.push_back(e.buildCpuS);
+            }
             BvhOptions b2;
             b2.buildThreads = 2;
             {
@@ -654,7 +658,10 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
                 Bvh t(sf.scene->primitives, b2);
                 o2.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
             }
-            { EmbreeScene e(*sf.scene, "threads=2"); e2.push_back(e.buildS); }
+            {
+                EmbreeScene e(*sf.scene, "threads=2");
+                e2.push_back(e.buildS);
+            }
             BvhOptions bf;
             bf.buildThreads = 1;
             bf.fullBinary = true;
@@ -685,9 +692,9 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
                             out.push_back(std::uint64_t(lo) << 32 | hi);
                         }
                         const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
-                        out.push_back(empty ? 0xE
-                                            : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
-                                                         : 1);
+                        out.push_back(empty        ? 0xE
+                                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
+                                                   : 1);
                         if (!empty && n.count[c] == 0) todo.push_back(n.child[c]);
                     }
                 }
@@ -717,15 +724,14 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
             }
         const double a = median(o1), b = median(e1), c = median(o2), d = median(e2);
         char line[768];
-        std::snprintf(line, sizeof line,
-                      "| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d / %d | "
-                      "%s | %.4f | %.2f | %.2f |\n",
-                      it.name.c_str(), st.primitives + st.unbounded, a * 1e3, b * 1e3,
-                      b > 0 ? a / b : 0.0, c * 1e3, d * 1e3, d > 0 ? c / d : 0.0,
-                      c > 0 ? a / c : 0.0, median(f1) * 1e3, ours.stats().wideNodes,
-                      full.stats().wideNodes,
-                      same && hitsO == hitsF ? "yes" : "NO", full.stats().sahCost,
-                      median(wo) * 1e3, median(wf) * 1e3);
+        std::snprintf(
+            line, sizeof line,
+            "| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d / %d | "
+            "%s | %.4f | %.2f | %.2f |\n",
+            it.name.c_str(), st.primitives + st.unbounded, a * 1e3, b * 1e3, b > 0 ? a / b : 0.0,
+            c * 1e3, d * 1e3, d > 0 ? c / d : 0.0, c > 0 ? a / c : 0.0, median(f1) * 1e3,
+            ours.stats().wideNodes, full.stats().wideNodes, same && hitsO == hitsF ? "yes" : "NO",
+            full.stats().sahCost, median(wo) * 1e3, median(wf) * 1e3);
         md << line;
         std::fputs(line, stderr);
     }

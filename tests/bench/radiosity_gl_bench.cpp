@@ -192,9 +192,12 @@ int main(int argc, char** argv) {
     for (int a = 1; a < argc; ++a) {
         if (!std::strcmp(argv[a], "--write") && a + 1 < argc) writePath = argv[++a];
         else if (!std::strcmp(argv[a], "--quick")) quick = true;
-        else if (!std::strcmp(argv[a], "--res") && a + 1 < argc) onlyRes = std::atoi(argv[++a]);
+        else if (!std::strcmp(argv[a], "--res") && a + 1 < argc)
+            onlyRes = std::atoi(argv[++a]);
         else {
-            std::fprintf(stderr, "usage: %s [--write docs/bench/radiosity.md] [--quick] [--res N]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--write docs/bench/radiosity.md] [--quick] [--res N]\n",
+                         argv[0]);
             return 2;
         }
     }

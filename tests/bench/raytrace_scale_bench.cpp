@@ -393,11 +393,11 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--embree-only")) {
             embreeOnly = true; // the Embree comparison to stdout (while tuning), no report
         } else {
-            std::fprintf(
-                stderr,
-                "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] [--build-only] [--build-embree] "
-                "[--frames-only [--scene NAME]]\n",
-                argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--out-dir DIR] [--quick] [--runs N] [--embree-only] "
+                         "[--build-only] [--build-embree] "
+                         "[--frames-only [--scene NAME]]\n",
+                         argv[0]);
             return 2;
         }
     }

@@ -14,8 +14,8 @@
 #include <memory>
 #include <new>
 #include <stdexcept>
-#include <typeinfo>
 #include <tbb/task_arena.h>
+#include <typeinfo>
 #ifdef WB_TSAN_THREADS
 #include <atomic>
 #include <thread>

@@ -165,7 +165,7 @@ TEST_CASE("hemicube item buffer: packets equal one ray per pixel from adversaria
         // On a vertex and on an edge midpoint, looking off the surface and along it.
         frames.push_back(frameAt(c0, p.normal, e));
         frames.push_back(frameAt(0.5 * (c0 + c1), p.normal, e));
-        frames.push_back(frameAt(c0, e, p.normal));               // n in the surface: grazing
+        frames.push_back(frameAt(c0, e, p.normal)); // n in the surface: grazing
         frames.push_back(frameAt(0.5 * (c0 + c1), glm::cross(p.normal, e), e)); // likewise
     }
     long pixels = 0, seen = 0;

@@ -676,8 +676,9 @@ namespace {
 // The wide tree as a depth-first sequence of its nodes' slots (boxes bit for bit, leaf
 // ranges; inner children followed where they point), so two trees compare whatever the
 // order of their nodes in the array.
-template <class Node> void wideSequence(const std::vector<Node>& nodes, std::uint32_t i,
-                                        std::vector<std::uint64_t>& out) {
+template <class Node>
+void wideSequence(const std::vector<Node>& nodes, std::uint32_t i,
+                  std::vector<std::uint64_t>& out) {
     constexpr int W = sizeof(Node{}.child) / sizeof(std::uint32_t);
     const Node& n = nodes[i];
     for (int c = 0; c < W; ++c) {
@@ -688,8 +689,9 @@ template <class Node> void wideSequence(const std::vector<Node>& nodes, std::uin
             out.push_back(std::uint64_t(lo) << 32 | hi);
         }
         const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
-        out.push_back(empty ? 0xE : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
-                                               : 0x1);
+        out.push_back(empty        ? 0xE
+                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
+                                   : 0x1);
         if (!empty && n.count[c] == 0) wideSequence(nodes, n.child[c], out);
     }
 }
@@ -721,7 +723,9 @@ TEST_CASE("rt_bvh_wide: the build that stops at the wide leaves gives the wide t
     for (const Scene* s : {&mixed, &spheres, &tris})
         for (int width : widths)
             for (int threads : {1, 2}) {
-                INFO("scene " << (s == &mixed ? "mixed" : s == &spheres ? "spheres" : "triangles")
+                INFO("scene " << (s == &mixed     ? "mixed"
+                                  : s == &spheres ? "spheres"
+                                                  : "triangles")
                               << ", width " << width << ", threads " << threads);
                 BvhOptions full, fast;
                 full.width = fast.width = width;
