@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <ctime>
 #include <functional>
 #include <limits>
@@ -603,5 +604,136 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
           "hits ours / Embree packets | occluded ours / Embree packets |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
        << packetRows.str();
+    return md.str();
+}
+
+std::string embreeBuildSection(int runs, const std::string& meshPath) {
+    // The builds alone (issue 21 item 4), every scene of the Embree table: ours and
+    // Embree's alternated in every round, medians of `runs`. One thread: CPU time of this
+    // thread from the call to the finished tree (ours: the Bvh constructor, its
+    // destructor not counted; Embree: rtcNewScene .. rtcCommitScene, as above). Two
+    // threads: wall time of the same, so the machine's other load counts.
+    std::ostringstream md;
+    md << "\n## Builds against Embree 3 (ours / Embree, alternated, median of " << runs
+       << "). Tree: the wide tree ours builds against the one the full binary build collapses "
+          "to (BvhOptions::fullBinary, the build before issue 21): wide nodes, the same slots "
+          "(DFS of boxes and leaf ranges), SAH cost of the full binary tree, and the eye-ray "
+          "walk (257² corner rays, Bvh::intersect, CPU time, median of the passes alternated).\n\n"
+          "| scene | primitives | 1 thread CPU ms ours | Embree | ours/Embree | 2 threads wall "
+          "ms ours | Embree | ours/Embree | ours 1→2 threads (1 thread CPU / 2 threads wall) | "
+          "1 thread CPU ms, full binary build | wide nodes | same wide tree | SAH cost | eye walk "
+          "ms "
+          "ours | full binary build's tree |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    const char* only = std::getenv("WB_EMBREE_SCENES");
+    for (const BenchScene& it : benchScenes(meshPath)) {
+        if (only && *only) {
+            bool hit = false;
+            std::stringstream parts(only);
+            std::string part;
+            while (std::getline(parts, part, ','))
+                hit = hit || (!part.empty() && it.name.find(part) != std::string::npos);
+            if (!hit) continue;
+        }
+        SceneFile sf = it.make();
+        std::vector<double> o1, e1, o2, e2, f1;
+        BvhStats st;
+        for (int k = 0; k < runs; ++k) {
+            BvhOptions b1;
+            b1.buildThreads = 1;
+            {
+                const double c0 = threadCpu();
+                Bvh t(sf.scene->primitives, b1);
+                o1.push_back(threadCpu() - c0);
+                st = t.stats();
+            }
+            {
+                EmbreeScene e(*sf.scene, "threads=1");
+                e1.push_back(e.buildCpuS);
+            }
+            BvhOptions b2;
+            b2.buildThreads = 2;
+            {
+                const auto t0 = Clock::now();
+                Bvh t(sf.scene->primitives, b2);
+                o2.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+            }
+            {
+                EmbreeScene e(*sf.scene, "threads=2");
+                e2.push_back(e.buildS);
+            }
+            BvhOptions bf;
+            bf.buildThreads = 1;
+            bf.fullBinary = true;
+            {
+                const double c0 = threadCpu();
+                Bvh t(sf.scene->primitives, bf);
+                f1.push_back(threadCpu() - c0);
+            }
+        }
+        // The trees: ours and the full binary build's, slot for slot, and their walks.
+        BvhOptions fo;
+        fo.fullBinary = true;
+        const Bvh ours(sf.scene->primitives), full(sf.scene->primitives, fo);
+        auto slots = [](const Bvh& b) {
+            std::vector<std::uint64_t> out;
+            auto walk = [&](const auto& nodes) {
+                if (nodes.empty()) return;
+                constexpr int W = sizeof(nodes[0].child) / sizeof(std::uint32_t);
+                std::vector<std::uint32_t> todo{0};
+                while (!todo.empty()) {
+                    const auto& n = nodes[todo.back()];
+                    todo.pop_back();
+                    for (int c = W - 1; c >= 0; --c) {
+                        for (int a = 0; a < 3; ++a) {
+                            std::uint32_t lo, hi;
+                            std::memcpy(&lo, &n.lo[a][c], 4);
+                            std::memcpy(&hi, &n.hi[a][c], 4);
+                            out.push_back(std::uint64_t(lo) << 32 | hi);
+                        }
+                        const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
+                        out.push_back(empty        ? 0xE
+                                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
+                                                   : 1);
+                        if (!empty && n.count[c] == 0) todo.push_back(n.child[c]);
+                    }
+                }
+            };
+            walk(b.wideNodes());
+            walk(b.wideNodes8());
+            return out;
+        };
+        const bool same = slots(ours) == slots(full);
+        const LookAtCamera cam = sf.camera();
+        std::vector<Ray> eye;
+        for (int y = 0; y <= 256; ++y)
+            for (int x = 0; x <= 256; ++x)
+                eye.push_back(cam.rayAt(x, y, 256, 256));
+        std::vector<double> wo, wf;
+        long hitsO = 0, hitsF = 0;
+        for (int k = 0; k < runs; ++k)
+            for (const Bvh* b : {&ours, &full}) {
+                long h = 0;
+                const double c0 = threadCpu();
+                for (const Ray& r : eye) {
+                    Hit hit;
+                    h += b->intersect(r, 1e-9, std::numeric_limits<double>::infinity(), hit);
+                }
+                (b == &ours ? wo : wf).push_back(threadCpu() - c0);
+                (b == &ours ? hitsO : hitsF) = h;
+            }
+        const double a = median(o1), b = median(e1), c = median(o2), d = median(e2);
+        char line[768];
+        std::snprintf(
+            line, sizeof line,
+            "| %s | %zu | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %d / %d | "
+            "%s | %.4f | %.2f | %.2f |\n",
+            it.name.c_str(), st.primitives + st.unbounded, a * 1e3, b * 1e3, b > 0 ? a / b : 0.0,
+            c * 1e3, d * 1e3, d > 0 ? c / d : 0.0, c > 0 ? a / c : 0.0, median(f1) * 1e3,
+            ours.stats().wideNodes, full.stats().wideNodes, same && hitsO == hitsF ? "yes" : "NO",
+            full.stats().sahCost, median(wo) * 1e3, median(wf) * 1e3);
+        md << line;
+        std::fputs(line, stderr);
+    }
     return md.str();
 }

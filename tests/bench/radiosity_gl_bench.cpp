@@ -188,11 +188,16 @@ std::string replaceSection(const std::string& doc, const std::string& section) {
 int main(int argc, char** argv) {
     std::string writePath;
     bool quick = false;
+    int onlyRes = 0; // --res N: that resolution alone, 9 patches (issue 21: the 128² goal)
     for (int a = 1; a < argc; ++a) {
         if (!std::strcmp(argv[a], "--write") && a + 1 < argc) writePath = argv[++a];
         else if (!std::strcmp(argv[a], "--quick")) quick = true;
+        else if (!std::strcmp(argv[a], "--res") && a + 1 < argc)
+            onlyRes = std::atoi(argv[++a]);
         else {
-            std::fprintf(stderr, "usage: %s [--write docs/bench/radiosity.md] [--quick]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--write docs/bench/radiosity.md] [--quick] [--res N]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -210,6 +215,7 @@ int main(int argc, char** argv) {
 
     std::vector<int> resolutions = {16, 32, 64, 128, 256, 512, 1024};
     if (quick) resolutions = {16, 64};
+    if (onlyRes > 0) resolutions = {onlyRes};
     const int timedPatches = quick ? 3 : 9;
     std::ostringstream md;
     char line[512];

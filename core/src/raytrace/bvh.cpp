@@ -1,6 +1,7 @@
 #include "core/raytrace/bvh.h"
 
 #include "bvh_internal.h"
+#include "core/raytrace/sphere.h"
 
 #include <algorithm>
 #include <array>
@@ -14,6 +15,7 @@
 #include <new>
 #include <stdexcept>
 #include <tbb/task_arena.h>
+#include <typeinfo>
 #ifdef WB_TSAN_THREADS
 #include <atomic>
 #include <thread>
@@ -116,11 +118,17 @@ constexpr int kMedianDepth = 80;
 constexpr std::size_t kMaxLeaf = 65535; // Node::count is 16 bits
 // Nodes above this many primitives are binned and partitioned in blocks of kBlock
 // (in parallel when the build has threads); above kParallelGrain their children are
-// separate TBB tasks. kBlockNode > kMaxLeaf: a blocked node is never a leaf.
-constexpr std::size_t kBlock = 8192;
-constexpr std::size_t kBlockNode = 65536;
+// separate TBB tasks. A node over 256 primitives is never a leaf (Builder::finish: a
+// leaf has at most maxLeafSize <= 255, or is a group of <= 256 coincident centroids), so
+// the blocked path has no leaf case. Issue 21: blocked from 16,384 (was 65,536): the
+// root of jacks 5 (42k) and the first levels under balls 5's root were one task each,
+// binned and partitioned by one thread while the other waited — the 2-thread build's
+// serial part. The decision and the partition are the same either way (bins merged over
+// blocks; the stable scatter block by block at prefix offsets), so is the tree.
+constexpr std::size_t kBlock = 4096;
+constexpr std::size_t kBlockNode = 16384;
 constexpr std::size_t kParallelGrain = 2048;
-static_assert(kBlockNode > kMaxLeaf, "the blocked path has no leaf case");
+static_assert(kBlockNode > 256, "the blocked path has no leaf case");
 
 // 1. Binning: the bin of a centroid, per axis, clamped in float before the conversion
 //    (a huge or NaN product converted to int is undefined behaviour; found by
@@ -258,6 +266,24 @@ struct Builder {
     Ref* buf[2] = {nullptr, nullptr};
     std::uint32_t* order = nullptr; // scene index per leaf slot
     bool parallel = false;          // blocks and subtrees as TBB tasks
+    // Wide trees (issue 21): the collapse makes every subtree of at most 4 primitives
+    // (8 when all are exactly Sphere) one wide leaf whatever its inner splits
+    // (Bvh::collapseInto, mergedCount), so the build stops there: such a node becomes a
+    // leaf at once. The wide tree is the same node for node (tested); only the order
+    // inside such a leaf differs, and no answer depends on it (ties go to the scene
+    // index). ~80% of the binary nodes were below that line (balls 5: 132,427 binary
+    // nodes, 3,996 wide nodes). Null for width 2 (the binary tree is traversed).
+    const std::uint8_t* sphere = nullptr; // per scene index: exactly a Sphere
+
+    bool mergedLeaf(const Task& t) const {
+        const std::size_t n = t.end - t.begin;
+        if (!sphere || n > 8) return false;
+        if (n <= 4) return true;
+        const Ref* refs = buf[t.buffer];
+        for (std::size_t i = t.begin; i < t.end; ++i)
+            if (!sphere[refs[i].prim]) return false;
+        return true;
+    }
 
     template <class F> void forBlocks(std::size_t blocks, F&& f) const {
         if (parallel && blocks > 1)
@@ -446,7 +472,7 @@ struct Builder {
 
     // A node of more than kBlockNode references: binned per block, partitioned by a
     // stable scatter of each block into the other buffer (blocks fixed by the range,
-    // so the order is the same for any thread count). Never a leaf (kBlockNode > kMaxLeaf).
+    // so the order is the same for any thread count). Never a leaf (kBlockNode > 256).
     Decision decideBlocked(const Task& t, Scratch& sc) const {
         Decision d;
         const std::size_t n = t.end - t.begin;
@@ -476,7 +502,7 @@ struct Builder {
             }
             sweep(s, sc, best);
         }
-        if (finish(t, best, d)) return d; // cannot happen (n > kMaxLeaf)
+        if (finish(t, best, d)) return d; // cannot happen (n > kBlockNode > 256)
         if (best.axis < 0) {
             medianSplit(t, d);
             return d;
@@ -613,10 +639,11 @@ void buildSubtree(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Ta
     const auto idx = nodes.size();
     nodes.push_back(b.nodeOf(t));
     tally.maxDepth = std::max(tally.maxDepth, t.depth);
-    if (t.end - t.begin == 1) { // half of all nodes: a leaf, as decide would say
+    if (t.end - t.begin == 1 || b.mergedLeaf(t)) { // a leaf as decide (or the collapse) would
         b.emitLeaf(t, nodes[idx]);
         ++tally.leaves;
-        tally.sahCost += b.options.intersectionCost * t.box.area() / b.rootArea;
+        tally.sahCost +=
+            b.options.intersectionCost * double(t.end - t.begin) * t.box.area() / b.rootArea;
         return;
     }
     const Decision d = b.decideAny(t, sc);
@@ -790,6 +817,10 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
         RefBuffer bufA(count), bufB(count);
+        // Wide trees: which primitives are exactly spheres (Builder::mergedLeaf), read
+        // while the object is in cache for its bounds.
+        const bool wide = options.width != 2 && !options.fullBinary;
+        std::unique_ptr<std::uint8_t[]> sphere(wide ? new std::uint8_t[count] : nullptr);
         std::size_t n = 0;
         Box4 rootBox, rootCBox;
         const __m128 mask = lanes012();
@@ -802,6 +833,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             for (std::size_t i = 0; i < count; ++i) {
                 if (i + 8 < count) __builtin_prefetch(prims[i + 8].get()); // its vtable, box
                 Ref& r = bufA.data[n];
+                if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
                 if (makeRef(*prims[i], std::uint32_t(i), r)) {
                     account(r, rootBox, rootCBox);
                     ++n;
@@ -822,6 +854,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 std::size_t v = 0;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
                     ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
+                    if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
                     if (ok[i]) {
                         account(bufA.data[i], boxes[k], cboxes[k]);
                         ++v;
@@ -859,7 +892,8 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                   rootBox.area() > 0 ? rootBox.area() : 1.0,
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
-                  parallel};
+                  parallel,
+                  sphere.get()};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
         Tally total;
         if (parallel) {

@@ -139,3 +139,60 @@ TEST_CASE("hemicube item buffer: packets of pixels give the ids of one ray per p
     }
     REQUIRE(seen > pixels / 2);
 }
+
+TEST_CASE("hemicube item buffer: packets equal one ray per pixel from adversarial eyes") {
+    // Issue 21: all rays of a hemicube share one origin; the packet walk must give the
+    // per-ray answer where the float node and triangle tests are closest to wrong: the eye
+    // exactly on a mesh vertex (a corner shared by several patches), on the midpoint of a
+    // patch edge, on a corner of the box (three surfaces), and hemicubes lying in a wall's
+    // plane (side faces' rays grazing it; rows of pixels exactly parallel to it).
+    const PatchMesh m = meshScene(cornellBox(), {0.15});
+    const PatchBvh bvh(m);
+    std::vector<HemicubeFrame> frames;
+    auto frameAt = [](glm::dvec3 o, glm::dvec3 n, glm::dvec3 u) {
+        HemicubeFrame f;
+        f.origin = o;
+        f.n = glm::normalize(n);
+        f.u = glm::normalize(u - glm::dot(u, f.n) * f.n);
+        f.v = glm::cross(f.n, f.u);
+        return f;
+    };
+    for (int i = 0; i < static_cast<int>(m.patches.size()); i += 13) {
+        const Patch& p = m.patches[static_cast<std::size_t>(i)];
+        const glm::dvec3 c0 = m.vertices[static_cast<std::size_t>(p.corners[0])];
+        const glm::dvec3 c1 = m.vertices[static_cast<std::size_t>(p.corners[1])];
+        const glm::dvec3 e = c1 - c0;
+        // On a vertex and on an edge midpoint, looking off the surface and along it.
+        frames.push_back(frameAt(c0, p.normal, e));
+        frames.push_back(frameAt(0.5 * (c0 + c1), p.normal, e));
+        frames.push_back(frameAt(c0, e, p.normal)); // n in the surface: grazing
+        frames.push_back(frameAt(0.5 * (c0 + c1), glm::cross(p.normal, e), e)); // likewise
+    }
+    long pixels = 0, seen = 0;
+    for (int res : {8, 30}) {
+        for (const HemicubeFrame& frame : frames) {
+            ItemBuffer items, itemsParallel;
+            castItemBuffer(bvh, frame, res, items, false);
+            castItemBuffer(bvh, frame, res, itemsParallel, true);
+            for (int f = 0; f < kHemicubeFaces; ++f) {
+                REQUIRE(items.faces[static_cast<std::size_t>(f)] ==
+                        itemsParallel.faces[static_cast<std::size_t>(f)]);
+                const auto face = static_cast<HemicubeFace>(f);
+                for (int row = 0; row < faceHeight(res, face); ++row)
+                    for (int col = 0; col < faceWidth(res, face); ++col) {
+                        const glm::dvec3 d =
+                            glm::normalize(pixelDirection(frame, res, face, col, row));
+                        const int want = bvh.nearestPatch(frame.origin, d, 0.0,
+                                                          std::numeric_limits<double>::infinity());
+                        const int got = items.faces[static_cast<std::size_t>(f)]
+                                                   [static_cast<std::size_t>(row * res + col)];
+                        REQUIRE(got == want);
+                        ++pixels;
+                        seen += want >= 0;
+                    }
+            }
+        }
+    }
+    CHECK(frames.size() >= 40);
+    REQUIRE(seen > pixels / 3); // most rays see a patch (the rest: back sides, the open side)
+}

@@ -546,10 +546,11 @@ TEST_CASE("rt_bvh_wide: rays grazing spheres and through triangle edges and corn
 
 TEST_CASE("rt_bvh_wide: the parallel build gives the same tree for any thread count",
           "[raytrace][bvh]") {
-    // 12,000 primitives: subtrees above 2048 are split into TBB tasks.
+    // 30,000 primitives: subtrees above 2048 are split into TBB tasks (12,000 were enough
+    // before the build stopped at the wide leaves, issue 21).
     std::mt19937_64 g(5);
     Scene s;
-    mixedScene(s, 12000, g, 1.0);
+    mixedScene(s, 30000, g, 1.0);
     auto build = [&](int threads) {
         BvhOptions o;
         o.buildThreads = threads;
@@ -669,4 +670,86 @@ TEST_CASE("rt_bvh_wide: scenes of one kind, so leaves hold full runs of four", "
         CHECK(hits > 150);
         CHECK(adversarialRays(r, g, 400, 1.0) > 50);
     }
+}
+
+namespace {
+// The wide tree as a depth-first sequence of its nodes' slots (boxes bit for bit, leaf
+// ranges; inner children followed where they point), so two trees compare whatever the
+// order of their nodes in the array.
+template <class Node>
+void wideSequence(const std::vector<Node>& nodes, std::uint32_t i,
+                  std::vector<std::uint64_t>& out) {
+    constexpr int W = sizeof(Node{}.child) / sizeof(std::uint32_t);
+    const Node& n = nodes[i];
+    for (int c = 0; c < W; ++c) {
+        for (int a = 0; a < 3; ++a) {
+            std::uint32_t lo, hi;
+            std::memcpy(&lo, &n.lo[a][c], 4);
+            std::memcpy(&hi, &n.hi[a][c], 4);
+            out.push_back(std::uint64_t(lo) << 32 | hi);
+        }
+        const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
+        out.push_back(empty        ? 0xE
+                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
+                                   : 0x1);
+        if (!empty && n.count[c] == 0) wideSequence(nodes, n.child[c], out);
+    }
+}
+std::vector<std::uint64_t> wideSequence(const Bvh& b) {
+    std::vector<std::uint64_t> out;
+    if (!b.wideNodes().empty()) wideSequence(b.wideNodes(), 0, out);
+    if (!b.wideNodes8().empty()) wideSequence(b.wideNodes8(), 0, out);
+    return out;
+}
+} // namespace
+
+TEST_CASE("rt_bvh_wide: the build that stops at the wide leaves gives the wide tree of the "
+          "whole binary tree, for 1 and 2 threads",
+          "[raytrace][bvh]") {
+    // Issue 21: subtrees of at most 4 primitives (8 spheres) are one wide leaf after the
+    // collapse, so the build no longer splits them. The wide tree must be the same slot
+    // for slot (boxes, leaf ranges) as the collapse of the full binary tree, and the hits
+    // the same: mixed kinds (leaves of 4), spheres only (leaves of up to 8), triangles.
+    std::mt19937_64 g(77);
+    Scene mixed, spheres, tris;
+    mixedScene(mixed, 12000, g, 1.0);
+    for (int i = 0; i < 9000; ++i) {
+        const glm::dvec3 c = rnd3(g, -10, 10);
+        spheres.add(Sphere(c, 0.01 + 0.3 * rnd3(g, 0, 1).x), 0);
+        tris.add(Triangle(c, c + rnd3(g, -1, 1), c + rnd3(g, -1, 1)), 0);
+    }
+    std::vector<int> widths{4};
+    if (__builtin_cpu_supports("avx2")) widths.push_back(8);
+    for (const Scene* s : {&mixed, &spheres, &tris})
+        for (int width : widths)
+            for (int threads : {1, 2}) {
+                INFO("scene " << (s == &mixed     ? "mixed"
+                                  : s == &spheres ? "spheres"
+                                                  : "triangles")
+                              << ", width " << width << ", threads " << threads);
+                BvhOptions full, fast;
+                full.width = fast.width = width;
+                full.buildThreads = fast.buildThreads = threads;
+                full.fullBinary = true;
+                const Bvh a(s->primitives, full), b(s->primitives, fast);
+                CHECK(b.stats().nodes < a.stats().nodes); // it did stop early
+                const auto sa = wideSequence(a), sb = wideSequence(b);
+                CHECK(sa.size() > 100);
+                CHECK(sa == sb);
+                CHECK(a.stats().wideNodes == b.stats().wideNodes);
+                for (int i = 0; i < 300; ++i) {
+                    Ray ray;
+                    ray.origin = rnd3(g, -12, 12);
+                    ray.direction = rnd3(g, -1, 1);
+                    Hit ha, hb;
+                    const bool ka = a.intersect(ray, 1e-9, 1e9, ha),
+                               kb = b.intersect(ray, 1e-9, 1e9, hb);
+                    REQUIRE(ka == kb);
+                    if (ka) {
+                        CHECK(ha.primitive == hb.primitive);
+                        CHECK(ha.t == hb.t);
+                    }
+                    CHECK(a.occluded(ray, 1e-9, 1e9) == b.occluded(ray, 1e-9, 1e9));
+                }
+            }
 }

@@ -55,6 +55,11 @@ struct BvhOptions {
     // intersectPacket/occludedPacket share one walk per packet (issue 21); false: they
     // trace the rays one by one (the single-ray reference the bench and tests force).
     bool packets = true;
+    // Wide trees: the binary build stops at the subtrees the collapse makes one wide leaf
+    // (at most 4 primitives, 8 spheres; issue 21) — the same wide tree, built faster. true:
+    // split every node down to the SAH's leaves first, as before (the reference the tests
+    // compare the wide trees against). Width 2 always builds the whole binary tree.
+    bool fullBinary = false;
 };
 
 struct BvhStats {
