@@ -7,8 +7,9 @@
 # repository itself (ROOT = the checkout, BUILD its build) it must go red: every cheat passes
 # there, which shows the cheats do reach the answers.
 # Not covered, and why (docs/exercises.md, "Labs 06-08 in a handout"): 06.point (core's Bezier
-# evaluation is kept: the teapot and the checks of 06.circle/06.sphere need it), lab 07 (core's
-# tracer is the lab), 08.jacobi (Solver needs the whole radiosity core: no cheat compiles alone;
+# evaluation is kept: the teapot and the checks of 06.circle/06.sphere need it), 07.intersect,
+# 07.normal, 07.reflect (core's tracer is the lab; glm::reflect is in every exercise's include
+# path anyway), 08.jacobi (Solver needs the whole radiosity core: no cheat compiles alone;
 # the cut is checked by grep below).
 set -eu
 root=$1 build=$2 work=$3
@@ -108,9 +109,55 @@ l08 c08rays "(void)i, (void)j; $nd" "$ff, [&] {
             seen += visible(at(i), at(j)) ? 1 : 0; }
         return double(seen) / double(m * m); }());"
 
+# 07.shade: core's seed 000 lighting (CourseModel::direct) on the case. Its Scene is raw storage
+# with the two fields direct() reads (constructing one needs the rest of core's tracer).
+cat > "$work/c07shade.cpp" <<'EOF'
+#include "exercises.h"
+#include "core/src/raytrace/course_model.cpp"
+namespace wb::lab07 {
+bool intersectSphere(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& c, double r, double& t) {
+    (void)o, (void)d, (void)c, (void)r, (void)t;
+    WB_NOT_DONE();
+}
+glm::dvec3 sphereNormal(const glm::dvec3& p, const glm::dvec3& c, double r) {
+    (void)p, (void)c, (void)r;
+    WB_NOT_DONE();
+}
+glm::dvec3 shade(const ShadeInput& in, const Feeler& feeler) {
+    alignas(wb::rt::Scene) static unsigned char raw[sizeof(wb::rt::Scene)];
+    auto& scene = *reinterpret_cast<wb::rt::Scene*>(raw);
+    scene.ambient = in.ambient / 255.0;
+    scene.distScale = in.distScale;
+    const wb::rt::Light light = wb::rt::Light::point(in.lightPos, in.lightColour / 255.0);
+    wb::rt::Hit hit;
+    hit.point = in.point;
+    hit.normal = hit.outwardNormal = in.normal;
+    wb::rt::Ray view;
+    view.direction = in.view;
+    wb::rt::Material m;
+    m.ka = in.material.ka, m.kd = in.material.kd, m.ks = in.material.ks, m.phongExp = in.material.p;
+    wb::rt::LightSample ls;
+    ls.light = &light;
+    ls.distance = glm::length(in.lightPos - in.point);
+    ls.toLight = (in.lightPos - in.point) / ls.distance;
+    ls.transmittance = feeler(in.point, in.lightPos);
+    const wb::rt::CourseModel model;
+    return model.direct(scene, view, hit, m, in.material.colour / 255.0, {ls});
+}
+glm::dvec3 reflectDirection(const glm::dvec3& d, const glm::dvec3& n) {
+    (void)d, (void)n;
+    WB_NOT_DONE();
+}
+} // namespace wb::lab07
+WB_EXERCISE_TABLE(wb::lab07::Table, lab07,
+                  {&wb::lab07::intersectSphere, &wb::lab07::sphereNormal, &wb::lab07::shade,
+                   &wb::lab07::reflectDirection})
+EOF
+
 cheat 06 06.point "$work/c06point.cpp" known
 cheat 06 06.circle "$work/c06circle.cpp"
 cheat 06 06.sphere "$work/c06sphere.cpp"
+cheat 07 07.shade "$work/c07shade.cpp"
 cheat 08 08.formfactor "$work/c08ff.cpp"
 cheat 08 08.rays "$work/c08rays.cpp"
 # 08.jacobi: the sweep's loop is cut from Solver::jacobiSweep.

@@ -33,6 +33,18 @@ cat "$work/stubs.txt"
 grep -q "Nothing attempted yet" "$work/stubs.txt" || { echo "FAIL: stubs not all not done"; exit 1; }
 if grep -q "✓\|✗" "$work/stubs.txt"; then echo "FAIL: a stub passed or failed"; exit 1; fi
 
+# Labs 06-08 (docs/exercises.md, "Labs 06-08 in a handout"): no cheat that compiles in core's
+# own code for a task's answer passes, and none of the answers' distinctive expressions is left.
+"$work/clone/tests/exercises/handout_cheats.sh" "$h" "$BUILD_DIR" "$work/cheats" ||
+  { echo "FAIL: an answer of labs 06-08 is still in the handout"; exit 1; }
+if grep -rn "4.0 / 3.0 \* std::tan\|hemisphere({3, 1, 2, 3, 5})\|V \* cosI \* cosJ\|p.emission + p.reflectivity \* FB_\[static_cast<std::size_t>(i)\];$\|Color bd = mulBy(mul(bl, c), fd)" \
+     "$h/core" "$h/labs"; then echo "FAIL: an answer's expression of labs 06-08 is in the handout"; exit 1; fi
+cmake --build "$BUILD_DIR" -j 2 --target lab06-bezier-headless lab07-raytrace-headless lab08-radiosity-headless > "$work/labs68.txt" 2>&1 ||
+  { cat "$work/labs68.txt"; echo "FAIL: labs 06-08 do not build in the handout"; exit 1; }
+for lab in lab06-bezier lab07-raytrace lab08-radiosity; do
+  "$BUILD_DIR/bin/$lab-headless" --out "$work/$lab-stubs.png" || { echo "FAIL: $lab in the handout"; exit 1; }
+done
+
 # The labs with exercises build in it and draw (headless) with the stubs: no reference, no crash.
 cmake --build "$BUILD_DIR" -j 2 --target lab01-affine-headless lab02-lighting-headless > "$work/labs.txt" 2>&1 ||
   { cat "$work/labs.txt"; echo "FAIL: the handout's labs do not build"; exit 1; }
@@ -48,6 +60,9 @@ done
 (cd "$h" && ./wb check) > "$work/reference.txt" 2>&1 || { cat "$work/reference.txt"; echo "FAIL: the references must pass"; exit 1; }
 cat "$work/reference.txt"
 for lab in lab01-affine lab02-lighting; do
+  "$BUILD_DIR/bin/$lab-headless" --out "$work/$lab-answers.png" || { echo "FAIL: $lab in the handout"; exit 1; }
+done
+for lab in lab06-bezier lab07-raytrace lab08-radiosity; do
   "$BUILD_DIR/bin/$lab-headless" --out "$work/$lab-answers.png" || { echo "FAIL: $lab in the handout"; exit 1; }
 done
 if grep -q "✗\|not done" "$work/reference.txt"; then echo "FAIL: not every task passes"; exit 1; fi
