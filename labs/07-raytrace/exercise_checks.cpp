@@ -11,9 +11,9 @@
 #include "core/raytrace/course_model.h"
 #include "core/raytrace/rectangle.h"
 #include "core/raytrace/scene.h"
-#include "core/raytrace/sphere.h"
 #include "core/raytrace/tracer.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -252,7 +252,8 @@ ShadeCase unpackShade(const Values& v) {
     return c;
 }
 
-// The case's scene in core: seed 000 part 1's rectangles, or the blocker spheres.
+// The case's scene in core: seed 000 part 1's rectangles (the blocker spheres are not in it:
+// see blockersFeeler).
 std::unique_ptr<rt::Scene> buildScene(const ShadeCase& c) {
     auto s = std::make_unique<rt::Scene>();
     rt::Material m;
@@ -261,14 +262,28 @@ std::unique_ptr<rt::Scene> buildScene(const ShadeCase& c) {
         const int mi = s->addMaterial(m);
         if (c.kind == kSeedShadow) s->add(rt::Rectangle({0, 0, 40}, {20, 0, 40}, {0, 20, 40}), mi);
         s->add(rt::Rectangle({0, 0, 20}, {50, 0, 20}, {0, 50, 20}), mi);
-    } else {
-        for (size_t i = 0; i < c.blockers.size(); ++i) {
-            m.kt = c.kts[i];
-            const int mi = s->addMaterial(m);
-            s->add(rt::Sphere(glm::dvec3(c.blockers[i]), c.blockers[i].w), mi);
-        }
     }
     return s;
+}
+
+// Π kt of the blocker spheres the segment from -> to passes through, without a ray-sphere
+// intersection (that is task ③, and a student handout has none in core): a sphere blocks
+// when the segment's point nearest its centre lies inside it. The segment starts 1e-9 of the
+// scale along, as coreFeeler's does; kt < 0.01 is opaque, as in core's tracer.
+double blockersFeeler(const ShadeCase& c, const glm::dvec3& from, const glm::dvec3& to) {
+    const glm::dvec3 d = to - from;
+    const double dist = glm::length(d);
+    if (!(dist > 0)) return 1.0;
+    const glm::dvec3 u = d / dist;
+    const double t0 = 1e-9 * (1 + glm::length(from));
+    double kt = 1.0;
+    for (size_t i = 0; i < c.blockers.size(); ++i) {
+        const glm::dvec3 centre(c.blockers[i]);
+        const double t = std::clamp(glm::dot(centre - from, u), t0, dist);
+        if (glm::length(from + t * u - centre) < c.blockers[i].w)
+            kt *= c.kts[i] < 0.01 ? 0.0 : c.kts[i];
+    }
+    return kt;
 }
 
 // Π kt along the segment from -> to, from core's tracer (blockers kt < 0.01 are opaque).
@@ -343,8 +358,8 @@ std::vector<Case> shadeCases() {
 Values shadeRun(const void* table, const Values& in) {
     const ShadeCase c = unpackShade(in);
     const auto scene = buildScene(c);
-    const Feeler feeler = [&scene](const glm::dvec3& from, const glm::dvec3& to) {
-        return coreFeeler(*scene, from, to);
+    const Feeler feeler = [&scene, &c](const glm::dvec3& from, const glm::dvec3& to) {
+        return coreFeeler(*scene, from, to) * blockersFeeler(c, from, to);
     };
     Values out;
     put(out, static_cast<const Table*>(table)->shade(c.s, feeler));
@@ -400,7 +415,8 @@ Verdict shadeCompare(const Values& in, const Values& expected, const Values& got
                             "mul/mulBy in the formula's order"));
 #else
     const auto scene = buildScene(c);
-    const double kt = coreFeeler(*scene, c.s.point, c.s.lightPos);
+    const double kt =
+        coreFeeler(*scene, c.s.point, c.s.lightPos) * blockersFeeler(c, c.s.point, c.s.lightPos);
     const rt::CourseModel::Trace t = coreTerms(c, kt);
     const std::string terms =
         trf("expected ambient %s + diffuse %s + specular %s (SH = %.3f, L·N = %.3f, n·N = %.3f)",

@@ -7,9 +7,7 @@
 # repository itself (ROOT = the checkout, BUILD its build) it must go red: every cheat passes
 # there, which shows the cheats do reach the answers.
 # Not covered, and why (docs/exercises.md, "Labs 06-08 in a handout"): 06.point (core's Bezier
-# evaluation is kept: the teapot and the checks of 06.circle/06.sphere need it), 07.intersect,
-# 07.normal, 07.reflect (core's tracer is the lab; glm::reflect is in every exercise's include
-# path anyway), 08.jacobi (Solver needs the whole radiosity core: no cheat compiles alone;
+# evaluation is kept: the teapot and the checks of 06.circle/06.sphere need it), 08.jacobi (Solver needs the whole radiosity core: no cheat compiles alone;
 # the cut is checked by grep below).
 set -eu
 root=$1 build=$2 work=$3
@@ -109,6 +107,46 @@ l08 c08rays "(void)i, (void)j; $nd" "$ff, [&] {
             seen += visible(at(i), at(j)) ? 1 : 0; }
         return double(seen) / double(m * m); }());"
 
+# 07.intersect, 07.normal: core's sphere test (sphere.cpp's nearest<true>, what Sphere::intersect
+# and the BVH's exact confirmation call); 07.reflect: core's reflectDir (tracer.cpp).
+l07() {
+  cat > "$work/$1.cpp" <<EOF
+#include "exercises.h"
+#include "core/src/raytrace/ray.cpp"
+#include "core/src/raytrace/sphere.cpp"
+#include "core/src/raytrace/tracer.cpp"
+#include <cfloat>
+namespace wb::lab07 {
+bool intersectSphere(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& c, double r, double& t) {
+    $2
+}
+glm::dvec3 sphereNormal(const glm::dvec3& p, const glm::dvec3& c, double r) {
+    $3
+}
+glm::dvec3 shade(const ShadeInput& in, const Feeler& feeler) {
+    (void)in, (void)feeler;
+    WB_NOT_DONE();
+}
+glm::dvec3 reflectDirection(const glm::dvec3& d, const glm::dvec3& n) {
+    $4
+}
+} // namespace wb::lab07
+WB_EXERCISE_TABLE(wb::lab07::Table, lab07,
+                  {&wb::lab07::intersectSphere, &wb::lab07::sphereNormal, &wb::lab07::shade,
+                   &wb::lab07::reflectDirection})
+EOF
+}
+ray='wb::rt::Ray ray; ray.origin = o; ray.direction = d; glm::dvec3 n;
+    return wb::rt::nearest<true>(c, r, ray, 0.0, DBL_MAX, t, n);'
+# The normal as nearest<true> gives it at the point, for a ray from outside straight at it.
+normal='wb::rt::Ray ray; ray.origin = p + (p - c); ray.direction = glm::normalize(c - p);
+    double t; glm::dvec3 n(0.0);
+    if (!wb::rt::nearest<true>(c, r, ray, 0.0, DBL_MAX, t, n)) return glm::dvec3(0.0);
+    return n;'
+l07 c07intersect "$ray" "(void)p, (void)c, (void)r; $nd" "(void)d, (void)n; $nd"
+l07 c07normal "(void)o, (void)d, (void)c, (void)r, (void)t; $nd" "$normal" "(void)d, (void)n; $nd"
+l07 c07reflect "(void)o, (void)d, (void)c, (void)r, (void)t; $nd" "(void)p, (void)c, (void)r; $nd" 'return wb::rt::reflectDir(d, n);'
+
 # 07.shade: core's seed 000 lighting (CourseModel::direct) on the case. Its Scene is raw storage
 # with the two fields direct() reads (constructing one needs the rest of core's tracer).
 cat > "$work/c07shade.cpp" <<'EOF'
@@ -157,7 +195,10 @@ EOF
 cheat 06 06.point "$work/c06point.cpp" known
 cheat 06 06.circle "$work/c06circle.cpp"
 cheat 06 06.sphere "$work/c06sphere.cpp"
+cheat 07 07.intersect "$work/c07intersect.cpp"
+cheat 07 07.normal "$work/c07normal.cpp"
 cheat 07 07.shade "$work/c07shade.cpp"
+cheat 07 07.reflect "$work/c07reflect.cpp"
 cheat 08 08.formfactor "$work/c08ff.cpp"
 cheat 08 08.rays "$work/c08rays.cpp"
 # 08.jacobi: the sweep's loop is cut from Solver::jacobiSweep.

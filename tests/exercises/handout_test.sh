@@ -37,7 +37,7 @@ if grep -q "✓\|✗" "$work/stubs.txt"; then echo "FAIL: a stub passed or faile
 # own code for a task's answer passes, and none of the answers' distinctive expressions is left.
 "$work/clone/tests/exercises/handout_cheats.sh" "$h" "$BUILD_DIR" "$work/cheats" ||
   { echo "FAIL: an answer of labs 06-08 is still in the handout"; exit 1; }
-if grep -rn "4.0 / 3.0 \* std::tan\|hemisphere({3, 1, 2, 3, 5})\|V \* cosI \* cosJ\|p.emission + p.reflectivity \* FB_\[static_cast<std::size_t>(i)\];$\|Color bd = mulBy(mul(bl, c), fd)" \
+if grep -rn "4.0 / 3.0 \* std::tan\|hemisphere({3, 1, 2, 3, 5})\|V \* cosI \* cosJ\|p.emission + p.reflectivity \* FB_\[static_cast<std::size_t>(i)\];$\|Color bd = mulBy(mul(bl, c), fd)\|(radius - ll) \* (radius + ll)\|copysign(std::sqrt(disc), h)\|e - 2 \* glm::dot(e, n) \* n" \
      "$h/core" "$h/labs"; then echo "FAIL: an answer's expression of labs 06-08 is in the handout"; exit 1; fi
 cmake --build "$BUILD_DIR" -j 2 --target lab06-bezier-headless lab07-raytrace-headless lab08-radiosity-headless > "$work/labs68.txt" 2>&1 ||
   { cat "$work/labs68.txt"; echo "FAIL: labs 06-08 do not build in the handout"; exit 1; }
