@@ -52,14 +52,16 @@ def main():
             failed = True
             continue
         if mode == 'body':
-            name = start.split('(')[0].split()[-1]
-            params = start[start.index('(') + 1:start.rindex(')')]
-            unused = ''.join(f'    (void){p.split()[-1].lstrip("&*")};\n'
-                             for p in params.split(',') if p.strip())
-            repl = f[3].replace('\\n', '\n') if len(f) > 3 else (
-                f'\n{unused}    throw std::logic_error("{name}: not in the handout: it is a graded task");\n')
-            if len(f) <= 3 and '<stdexcept>' not in text:
-                text = '#include <stdexcept> // the handout cut answers here: they throw\n' + text
+            if len(f) > 3:  # an explicit body: START need not hold the whole parameter list
+                repl = f[3].replace('\\n', '\n')
+            else:
+                name = start.split('(')[0].split()[-1]
+                params = start[start.index('(') + 1:start.rindex(')')]
+                unused = ''.join(f'    (void){p.split()[-1].lstrip("&*")};\n'
+                                 for p in params.split(',') if p.strip())
+                repl = (f'\n{unused}    throw std::logic_error("{name}: not in the handout: it is a graded task");\n')
+                if '<stdexcept>' not in text:
+                    text = '#include <stdexcept> // the handout cut answers here: they throw\n' + text
             # Helpers only the cut code used are left unused.
             if '#pragma GCC diagnostic ignored "-Wunused-function"' not in text:
                 text = '#pragma GCC diagnostic ignored "-Wunused-function" // the handout cut answers here\n' + text

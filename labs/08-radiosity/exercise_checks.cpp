@@ -71,21 +71,6 @@ std::string showQuad(const Quad& q) {
     return b;
 }
 
-// The course's (15.20) at the centres, for the messages and for V = F/(15.20) in ⑤ (the
-// same formula core's ray kernel "Centres" uses).
-double formula1520(const Quad& i, const Quad& j) {
-    const glm::dvec3 ci = 0.25 * (i.p[0] + i.p[1] + i.p[2] + i.p[3]);
-    const glm::dvec3 cj = 0.25 * (j.p[0] + j.p[1] + j.p[2] + j.p[3]);
-    const glm::dvec3 ai = 0.5 * glm::cross(i.p[2] - i.p[0], i.p[3] - i.p[1]);
-    const glm::dvec3 aj = 0.5 * glm::cross(j.p[2] - j.p[0], j.p[3] - j.p[1]);
-    const glm::dvec3 v = cj - ci;
-    const double d = glm::length(v), la = glm::length(ai), lb = glm::length(aj);
-    if (!(d > 0) || !(la > 0) || !(lb > 0)) return 0;
-    const double ki = glm::dot(ai, v) / (la * d), kj = -glm::dot(aj, v) / (lb * d);
-    if (ki <= 0 || kj <= 0) return 0;
-    return ki * kj * lb / (kPi * d * d);
-}
-
 // ----- ③ (15.20): in = quad i, quad j, side a and distance c of an opposed pair (0: none) --
 std::vector<Case> ffCases() {
     std::vector<Case> cs;
@@ -344,12 +329,18 @@ Values raysRun(const void* table, const Values& in) {
             if (q.intersect(ray, 0, len, hit)) return false;
         return true;
     };
-    return {static_cast<const Table*>(table)->formFactorRays(r.i, r.j, r.k, r.seed, visible)};
+    const auto* t = static_cast<const Table*>(table);
+    Values out{t->formFactorRays(r.i, r.j, r.k, r.seed, visible)};
+    // The reference's run also gives its (15.20) at the centres, which the compare divides
+    // by: recorded in a handout, so (15.20) is written nowhere in it but the student's ③.
+    if (table && table == wbExerciseReference_lab08()) out.push_back(t->formFactor(r.i, r.j));
+    return out;
 }
 
-Verdict raysCompare(const Values& in, const Values& /*expected*/, const Values& got) {
+Verdict raysCompare(const Values& in, const Values& expected, const Values& got) {
     const RaysIn r = unpackRays(in);
-    const double f = got.at(0), g = formula1520(r.i, r.j);
+    if (expected.size() < 2) return Verdict::fail(tr("no (15.20) recorded for this case"));
+    const double f = got.at(0), g = expected[1];
     if (!std::isfinite(f)) return Verdict::fail(tr("F is not a number"));
     if (g == 0) {
         if (f == 0) return Verdict::pass();
@@ -429,7 +420,9 @@ const ex::LabExercises& exercises() {
         rays.cases = raysCases;
         rays.run = raysRun;
         rays.compare = raysCompare;
-        rays.needsExpected = false; // judged from the input and the exact V alone
+        // Judged from the input, the exact V and the reference's (15.20) (recorded in a
+        // handout), not from the reference's own rays.
+        rays.needsExpected = true;
         rays.showIn = [](const Values& in) {
             const RaysIn r = unpackRays(in);
             return trf("P_i %s, P_j %s, k = %d, seed %u, %d blocker(s)", showQuad(r.i).c_str(),

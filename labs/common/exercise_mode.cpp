@@ -95,6 +95,8 @@ struct ExerciseMode::Impl {
     Step step = Step::Idle;
     pid_t pid = -1;
     int fd = -1;
+    bool reaped = false; // pid ended and was waited for; its status is in `status`
+    int status = 0;
     std::string output, object, errLog;
     Clock::time_point lastPoll{}, changeSeen{}, stepStart{};
     double lastCompileS = 0, lastCheckS = 0, lastTotalS = 0;
@@ -107,7 +109,7 @@ struct ExerciseMode::Impl {
     bool checked = false;
 
     ~Impl() {
-        if (pid > 0) {
+        if (pid > 0 && !reaped) {
             kill(pid, SIGKILL);
             waitpid(pid, nullptr, 0);
         }
@@ -227,9 +229,14 @@ bool ExerciseMode::poll(bool watch) {
         }
     }
     if (m.pid > 0) {
-        int status = 0;
-        const pid_t r = waitpid(m.pid, &status, WNOHANG);
-        if (r == m.pid && m.fd < 0) {
+        // The child can end between the read above and this wait, with its last output still
+        // in the pipe: its status is kept until the pipe is read to the end (waitpid reaps it
+        // once; asked again it fails, and the step would never end - a headless lab 07 spun
+        // for 10 minutes at load 12 that way).
+        if (!m.reaped && waitpid(m.pid, &m.status, WNOHANG) == m.pid) m.reaped = true;
+        if (m.reaped && m.fd < 0) {
+            const int status = m.status;
+            m.reaped = false;
             m.pid = -1;
             const double took = std::chrono::duration<double>(now - m.stepStart).count();
             if (m.step == Impl::Step::Compiling) {

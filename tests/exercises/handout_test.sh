@@ -52,6 +52,12 @@ if grep -q "✓\|✗" "$work/stubs.txt"; then echo "FAIL: a stub passed or faile
 # (tests/exercises/cheats; the same cheats pass in the repository, a ctest there says so).
 sh "$h/tests/exercises/cheat_test.sh" "$h" "$BUILD_DIR" fail "$work/cheats" ||
   { echo "FAIL: an answer is still callable in the handout"; exit 1; }
+# Labs 06-08 (docs/exercises.md, "Labs 06-08 in a handout"): no cheat that compiles in core's
+# own code for a task's answer passes, and none of the answers' distinctive expressions is left.
+"$work/clone/tests/exercises/handout_cheats.sh" "$h" "$BUILD_DIR" "$work/cheats68" ||
+  { echo "FAIL: an answer of labs 06-08 is still in the handout"; exit 1; }
+if grep -rn "4.0 / 3.0 \* std::tan\|hemisphere({3, 1, 2, 3, 5})\|V \* cosI \* cosJ\|p.emission + p.reflectivity \* FB_\[static_cast<std::size_t>(i)\];$\|Color bd = mulBy(mul(bl, c), fd)\|(radius - ll) \* (radius + ll)\|copysign(std::sqrt(disc), h)\|e - 2 \* glm::dot(e, n) \* n" \
+     "$h/core" "$h/labs"; then echo "FAIL: an answer's expression of labs 06-08 is in the handout"; exit 1; fi
 
 # The labs with exercises build in it and draw (headless) with the stubs: no reference, no crash.
 # Every lab with exercises (labs/NN-name/exercises.cpp -> target labNN-name-headless).

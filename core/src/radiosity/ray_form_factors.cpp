@@ -118,6 +118,29 @@ glm::dvec3 sampleFront(const Workspace& ws, SplitMix& rng) {
     return c0 + su * (1 - v) * (ws.front[t + 1] - c0) + su * v * (ws.front[t + 2] - c0);
 }
 
+// Auto's kernel for far pairs. A student handout (./wb handout) has PointToPolygon here: the
+// Centres kernel below is lab 08's graded tasks (15.20) and (15.20) by rays, cut from it.
+RayKernel farKernel() {
+    return RayKernel::Centres;
+}
+
+// (15.20) at the centres, times the visible fraction V of the counted rays (§1.15.1).
+// dc = c_j - c_i.
+double centresKernel(const Patch& Pi, const Patch& Pj, const glm::dvec3& dc, double V) {
+    const double d = glm::length(dc);
+    const double cosI = glm::dot(Pi.normal, dc) / d, cosJ = -glm::dot(Pj.normal, dc) / d;
+    if (cosI <= 0.0 || cosJ <= 0.0) return 0.0;
+    const double invPi = 1.0 / glm::pi<double>();
+    return V * cosI * cosJ * Pj.area * invPi / (d * d); // as before the split: the same bits
+}
+
+// (15.20) for one ray pair (PointPairs): at the centres it is (15.20) itself, so a handout
+// has a throw here too (no lab uses PointPairs).
+double pointPairTerm(double ca, double cb, double r2) {
+    const double invPi = 1.0 / glm::pi<double>();
+    return ca * cb / (r2 * r2) * invPi;
+}
+
 double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayFormFactorConfig& cfg,
             const std::vector<glm::dvec3>& ci, Workspace& ws) {
     if (i == j) return 0.0;
@@ -136,7 +159,7 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
     RayKernel kernel = cfg.kernel;
     if (kernel == RayKernel::Auto)
         kernel = d < cfg.nearFactor * std::max(diameter(ci), diameter(cj)) ? RayKernel::PointToPolygon
-                                                                            : RayKernel::Centres;
+                                                                            : farKernel();
     // 3. The k points on each patch and their random pairing (seeded by the unordered pair,
     //    so F_ij and F_ji use the same rays).
     const int k = cfg.samples;
@@ -180,7 +203,6 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
         for (int s = 0; s < k; ++s) ws.openJ[static_cast<std::size_t>(s)] = !covered(bvh, ws.xj[static_cast<std::size_t>(s)], Pj.normal);
     auto openI = [&](int s) { return ws.openI[static_cast<std::size_t>(i < j ? s : ws.perm[static_cast<std::size_t>(s)])] != 0; };
     auto openJ = [&](int s) { return ws.openJ[static_cast<std::size_t>(i < j ? ws.perm[static_cast<std::size_t>(s)] : s)] != 0; };
-    const double invPi = 1.0 / glm::pi<double>();
     double sum = 0.0;
     int unblocked = 0, counted = 0;
     for (int s = 0; s < k; ++s) {
@@ -199,7 +221,7 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
         if (kernel == RayKernel::PointPairs) {
             if (ca <= 0.0 || cb <= 0.0 || !(r2 > 0.0)) continue;
             if (!bvh.visible(a, b)) continue;
-            sum += ca * cb / (r2 * r2) * invPi;
+            sum += pointPairTerm(ca, cb, r2);
         } else if (kernel == RayKernel::PointToPolygon) {
             // cb <= 0: the point a lies behind P_j's plane and sees only its back. ca <= 0 only
             // for an end on P_i's plane itself (a redrawn end is strictly in front).
@@ -216,13 +238,8 @@ double pair(const PatchMesh& mesh, const PatchBvh& bvh, int i, int j, const RayF
         return polygonArea(cj) * sum / counted; // over P_j's polygon: covered b are invisible
     case RayKernel::PointToPolygon:
         return sum / counted;
-    default: {
-        // (15.20) at the centres, times the visible fraction of the counted rays.
-        const double cosI = glm::dot(Pi.normal, dc) / d, cosJ = -glm::dot(Pj.normal, dc) / d;
-        if (cosI <= 0.0 || cosJ <= 0.0) return 0.0;
-        const double V = static_cast<double>(unblocked) / counted;
-        return V * cosI * cosJ * Pj.area * invPi / (d * d);
-    }
+    default:
+        return centresKernel(Pi, Pj, dc, static_cast<double>(unblocked) / counted);
     }
 }
 

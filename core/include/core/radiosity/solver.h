@@ -58,6 +58,7 @@ class Solver {
 
   private:
     double computeResidual();
+    void jacobiSweep(); // one sweep of B = E + R·F·B from the old B
     const PatchMesh& mesh_;
     const FormFactors& ff_;
     SolverConfig config_;
