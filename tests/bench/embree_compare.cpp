@@ -244,7 +244,8 @@ struct Segment {
 
 } // namespace
 
-std::string embreeSection(int size, int runs, const std::string& meshPath) {
+std::string embreeSection(int size, int runs, const std::string& meshPath,
+                          std::vector<EmbreeGoalRow>* goals) {
     std::ostringstream md;
     md << "\n## Against Embree 3 (one thread, the same rays)\n\n"
        << "Eye rays: the " << (size + 1)
@@ -558,6 +559,9 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                       tShadow[kPk + 1] / tShadow[kPk], tShadow[2] / tShadow[kPk], ourPkHits,
                       emPkHits, ourPkOcc, emPkOcc);
         packetRows << buf0;
+        if (goals)
+            goals->push_back({it.name, tEye[2] / tEye[0], tShadow[2] / tShadow[0],
+                              tEye[kPk + 1] / tEye[kPk], tEye[2] / tEye[kPk]});
         for (long long occ : pathOcc)
             if (occ != ourOcc)
                 std::fprintf(stderr, "%s: the SIMD paths disagree on occlusion\n", it.name.c_str());
