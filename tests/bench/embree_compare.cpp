@@ -592,14 +592,16 @@ std::string embreeSection(int size, int runs, const std::string& meshPath,
         std::size_t floatBytes = 0, quantBytes = 0;
         for (std::size_t k = 0; k < paths.size(); ++k)
             if (paths[k]->stats().width == 8)
-                (paths[k]->stats().quantised ? quantBytes : floatBytes) = paths[k]->stats().nodeBytes;
+                (paths[k]->stats().quantised ? quantBytes : floatBytes) =
+                    paths[k]->stats().nodeBytes;
         std::snprintf(buf, sizeof buf, " | %.1f / %.1f | %s |\n", double(floatBytes) / 1024,
                       double(quantBytes) / 1024, bvh.stats().quantised ? "quantised" : "float");
         pathRows << buf;
     }
     md << "\nThe SIMD paths, each forced (BvhOptions::width and simd), in the same alternated "
           "passes: ours/Embree for eye / shadow rays. The default above is "
-       << defaultPath << " with the node layout of the last column. 'quantised': "
+       << defaultPath
+       << " with the node layout of the last column. 'quantised': "
           "BvhNodes::Quantised, child boxes as 8-bit offsets in the node's box (128-byte nodes "
           "against 256).\n\n| scene";
     for (const PathSpec& ps : pathSpecs())

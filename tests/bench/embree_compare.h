@@ -6,9 +6,9 @@
 // Per scene, the ratios the goals of issue 21 name (ours/Embree: time of Embree's over ours).
 struct EmbreeGoalRow {
     std::string scene;
-    double eye = 0, shadow = 0;     // single rays, ours/Embree
-    double packetsVsPackets = 0;    // our eye packets / Embree's eye packets
-    double packetsVsSingle = 0;     // our eye packets / Embree's single eye rays
+    double eye = 0, shadow = 0;  // single rays, ours/Embree
+    double packetsVsPackets = 0; // our eye packets / Embree's eye packets
+    double packetsVsSingle = 0;  // our eye packets / Embree's single eye rays
 };
 
 // Markdown section: the same eye and shadow rays of each bench scene through our BVH

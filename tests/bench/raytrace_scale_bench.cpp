@@ -631,7 +631,8 @@ int main(int argc, char** argv) {
             for (const char* n : names) {
                 const EmbreeGoalRow* g = row(n);
                 if (!g) continue;
-                measured += (measured.empty() ? "" : ", ") + std::string(n) + " " + fmt("%.2f", g->*field);
+                measured +=
+                    (measured.empty() ? "" : ", ") + std::string(n) + " " + fmt("%.2f", g->*field);
                 if (g->*field < target) met = "**no**";
             }
             md << "| " << goal << " | " << measured << " | " << met << " |\n";

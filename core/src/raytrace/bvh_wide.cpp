@@ -432,8 +432,7 @@ bool Bvh::quantiseNodes() {
             float scale = std::ldexp(1.0f, std::max(e, -126));
             while (std::isfinite(scale) && quantDecode(lo, scale, 255) < hi)
                 scale *= 2;
-            if (!std::isfinite(scale) || !std::isfinite(quantDecode(lo, scale, 255)))
-                return false;
+            if (!std::isfinite(scale) || !std::isfinite(quantDecode(lo, scale, 255))) return false;
             q.org[a] = lo;
             q.scale[a] = scale;
             for (int c = 0; c < 8; ++c) {
@@ -448,8 +447,9 @@ bool Bvh::quantiseNodes() {
                 int qh = std::clamp(int(std::ceil((double(w.hi[a][c]) - lo) / scale)), 0, 255);
                 while (qh < 255 && quantDecode(lo, scale, qh) < w.hi[a][c])
                     ++qh;
-                if (quantDecode(lo, scale, ql) > w.lo[a][c] || quantDecode(lo, scale, qh) < w.hi[a][c])
-                    return false; // cannot happen (q 0 and 255 hold them); kept as the proof's check
+                if (quantDecode(lo, scale, ql) > w.lo[a][c] ||
+                    quantDecode(lo, scale, qh) < w.hi[a][c])
+                    return false; // cannot happen (q 0 and 255 hold them): the proof, checked
                 q.q[a][c] = std::uint8_t(ql);
                 q.q[3 + a][c] = std::uint8_t(qh);
             }

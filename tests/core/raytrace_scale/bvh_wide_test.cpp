@@ -107,8 +107,8 @@ struct WidePaths {
         // quantise keeps float nodes: quantisedNodes tests that).
         if (avx2)
             for (BvhSimd simd : {BvhSimd::Avx2, BvhSimd::Avx512}) {
-                if (simd == BvhSimd::Avx512 && !(__builtin_cpu_supports("avx512f") &&
-                                                 __builtin_cpu_supports("avx512vl")))
+                if (simd == BvhSimd::Avx512 &&
+                    !(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")))
                     continue;
                 BvhOptions o = base;
                 o.width = 8;
@@ -730,7 +730,8 @@ TEST_CASE("rt_bvh_wide: quantised nodes hold the float boxes and lose no hit",
                 for (int a = 0; a < 3; ++a) {
                     REQUIRE(dn[i].lo[a][c] <= fn[i].lo[a][c]); // rounded outward
                     REQUIRE(dn[i].hi[a][c] >= fn[i].hi[a][c]);
-                    same = same && dn[i].lo[a][c] == fn[i].lo[a][c] && dn[i].hi[a][c] == fn[i].hi[a][c];
+                    same = same && dn[i].lo[a][c] == fn[i].lo[a][c] &&
+                           dn[i].hi[a][c] == fn[i].hi[a][c];
                 }
                 tight += same;
             }
@@ -759,7 +760,8 @@ TEST_CASE("rt_bvh_wide: quantised nodes hold the float boxes and lose no hit",
         Scene sc;
         sc.add(Sphere({0, 0, 0}, 1), 0);
         sc.add(Triangle({2, 0, 0}, {3, 0, 0}, {2, 1, 0}), 0);
-        for (int k = 0; k < 3; ++k) sc.add(Sphere({5.0 + k, 1, 0}, 0.25), 0);
+        for (int k = 0; k < 3; ++k)
+            sc.add(Sphere({5.0 + k, 1, 0}, 0.25), 0);
         sc.add(Triangle({-3, -3, 0.5}, {-3, -2, 0.5}, {-2, -3, 0.5}), 0);
         checkHolds(sc.primitives);
         const Refs r(sc.primitives);
