@@ -440,7 +440,11 @@ int main(int argc, char** argv) {
           "threads in the all-threads frame): the speed-up the frame would have on otherwise "
           "idle cores if its threads never waited (TBB's idle spinning counts against it). "
           "Load average at the start (1, 5, 15 min): "
-       << loadAverage() << ".\n\n";
+       << loadAverage()
+       << ".\n\nRegenerate the whole report, with the Embree tables and the goals of issue 21 at "
+          "the end, with one command: `scripts/bench/raytrace_report.sh` (configures build-bench "
+          "with -DWORKBENCH_EMBREE=ON, builds, runs this program between two `uptime`s; 4.5 "
+          "minutes of bench on the 2-core machine at load 8-13, plus the build).\n\n";
 
     const std::string meshPath = writeMesh(o.workDir);
     const std::vector<BenchScene> scenes = benchScenes(meshPath);
