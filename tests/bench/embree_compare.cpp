@@ -216,6 +216,7 @@ struct PathSpec {
     const char* name;
     int width;
     BvhSimd simd;
+    BvhNodes nodes = BvhNodes::Float;
 };
 
 // The wide BVH's SIMD paths this CPU can run.
@@ -225,9 +226,12 @@ const std::vector<PathSpec>& pathSpecs() {
         if (__builtin_cpu_supports("avx2")) {
             v.push_back({"AVX2 4-wide", 4, BvhSimd::Avx2});
             v.push_back({"AVX2 8-wide", 8, BvhSimd::Avx2});
+            v.push_back({"AVX2 8-wide quantised", 8, BvhSimd::Avx2, BvhNodes::Quantised});
         }
-        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl"))
+        if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
             v.push_back({"AVX-512 8-wide", 8, BvhSimd::Avx512});
+            v.push_back({"AVX-512 8-wide quantised", 8, BvhSimd::Avx512, BvhNodes::Quantised});
+        }
         return v;
     }();
     return specs;
@@ -241,7 +245,8 @@ struct Segment {
 
 } // namespace
 
-std::string embreeSection(int size, int runs, const std::string& meshPath) {
+std::string embreeSection(int size, int runs, const std::string& meshPath,
+                          std::vector<EmbreeGoalRow>* goals) {
     std::ostringstream md;
     md << "\n## Against Embree 3 (one thread, the same rays)\n\n"
        << "Eye rays: the " << (size + 1)
@@ -291,6 +296,7 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
             BvhOptions po;
             po.width = ps.width;
             po.simd = ps.simd;
+            po.nodes = ps.nodes;
             paths.push_back(std::make_unique<Bvh>(sf.scene->primitives, po));
         }
         BvhOptions binOpt;
@@ -554,6 +560,9 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                       tShadow[kPk + 1] / tShadow[kPk], tShadow[2] / tShadow[kPk], ourPkHits,
                       emPkHits, ourPkOcc, emPkOcc);
         packetRows << buf0;
+        if (goals)
+            goals->push_back({it.name, tEye[2] / tEye[0], tShadow[2] / tShadow[0],
+                              tEye[kPk + 1] / tEye[kPk], tEye[2] / tEye[kPk]});
         for (long long occ : pathOcc)
             if (occ != ourOcc)
                 std::fprintf(stderr, "%s: the SIMD paths disagree on occlusion\n", it.name.c_str());
@@ -580,15 +589,26 @@ std::string embreeSection(int size, int runs, const std::string& meshPath) {
                           emShadow / tShadow[3 + k]);
             pathRows << buf;
         }
-        pathRows << " |\n";
+        // Node bytes of the 8-wide float and quantised trees, and the default's layout.
+        std::size_t floatBytes = 0, quantBytes = 0;
+        for (std::size_t k = 0; k < paths.size(); ++k)
+            if (paths[k]->stats().width == 8)
+                (paths[k]->stats().quantised ? quantBytes : floatBytes) =
+                    paths[k]->stats().nodeBytes;
+        std::snprintf(buf, sizeof buf, " | %.1f / %.1f | %s |\n", double(floatBytes) / 1024,
+                      double(quantBytes) / 1024, bvh.stats().quantised ? "quantised" : "float");
+        pathRows << buf;
     }
     md << "\nThe SIMD paths, each forced (BvhOptions::width and simd), in the same alternated "
           "passes: ours/Embree for eye / shadow rays. The default above is "
-       << defaultPath << ".\n\n| scene";
+       << defaultPath
+       << " with the node layout of the last column. 'quantised': "
+          "BvhNodes::Quantised, child boxes as 8-bit offsets in the node's box (128-byte nodes "
+          "against 256).\n\n| scene";
     for (const PathSpec& ps : pathSpecs())
         md << " | " << ps.name;
-    md << " |\n|---";
-    for (std::size_t k = 0; k < pathSpecs().size(); ++k)
+    md << " | 8-wide node KB float / quantised | default nodes (BvhNodes::Auto) |\n|---";
+    for (std::size_t k = 0; k < pathSpecs().size() + 2; ++k)
         md << "|---";
     md << "|\n" << pathRows.str();
     md << "\nPackets (issue 21), in the same alternated passes: eye rays 8 neighbouring corner "

@@ -457,10 +457,15 @@ int main(int argc, char** argv) {
           "threads in the all-threads frame): the speed-up the frame would have on otherwise "
           "idle cores if its threads never waited (TBB's idle spinning counts against it). "
           "Load average at the start (1, 5, 15 min): "
-       << loadAverage() << ".\n\n";
+       << loadAverage()
+       << ".\n\nRegenerate the whole report, with the Embree tables and the goals of issue 21 at "
+          "the end, with one command: `scripts/bench/raytrace_report.sh` (configures build-bench "
+          "with -DWORKBENCH_EMBREE=ON, builds, runs this program between two `uptime`s; 4.5 "
+          "minutes of bench on the 2-core machine at load 8-13, plus the build).\n\n";
 
     const std::string meshPath = writeMesh(o.workDir);
     const std::vector<BenchScene> scenes = benchScenes(meshPath);
+    double balls4Packets = 0; // the balls 4 frame, packets / single rays (issue 21's goal)
     md << "## Frames\n\n"
        << "| scene | primitives | setup ms | of it BVH build ms | BVH nodes/depth | frame ms, 1 "
           "thread "
@@ -488,6 +493,7 @@ int main(int argc, char** argv) {
            << fmt("%.2f", rays / r.frameN / 1e6) << " | " << fmt("%.2f", r.traversal1) << " | "
            << fmt("%.1f", r.frame1Single * 1e3) << " | "
            << fmt("%.3f", r.frame1 / r.frame1Single) << " |\n";
+        if (bs.name == "balls 4") balls4Packets = r.frame1 / r.frame1Single;
         std::fprintf(stderr, "  build %.2f ms, frame %.1f / %.1f ms\n", r.buildS * 1e3,
                      r.frame1 * 1e3, r.frameN * 1e3);
     }
@@ -631,8 +637,39 @@ int main(int argc, char** argv) {
        << "): x = frame time in ms, y = mean error in 8-bit levels. The reference, the "
           "cut-off 0.01 and the binary tree give the same image (error 0).\n";
 #ifdef WB_EMBREE
-    md << embreeSection(o.size, quick ? 1 : o.runs, meshPath);
+    std::vector<EmbreeGoalRow> goals;
+    md << embreeSection(o.size, quick ? 1 : o.runs, meshPath, &goals);
+    // Issue 21's goals, from the tables above (this run).
+    {
+        auto row = [&](const std::string& name) -> const EmbreeGoalRow* {
+            for (const EmbreeGoalRow& g : goals)
+                if (g.scene.rfind(name, 0) == 0) return &g;
+            return nullptr;
+        };
+        const char* names[3] = {"balls 4", "jacks 4", "mesh"};
+        auto line = [&](const char* goal, double EmbreeGoalRow::*field, double target) {
+            std::string measured, met = "yes";
+            for (const char* n : names) {
+                const EmbreeGoalRow* g = row(n);
+                if (!g) continue;
+                measured +=
+                    (measured.empty() ? "" : ", ") + std::string(n) + " " + fmt("%.2f", g->*field);
+                if (g->*field < target) met = "**no**";
+            }
+            md << "| " << goal << " | " << measured << " | " << met << " |\n";
+        };
+        md << "\n## Goals of issue 21 (this run)\n\n| goal | measured | met? |\n|---|---|---|\n";
+        line("single eye rays ours/Embree >= 1.0", &EmbreeGoalRow::eye, 1.0);
+        line("single shadow rays ours/Embree >= 1.0", &EmbreeGoalRow::shadow, 1.0);
+        line("eye packets ours/Embree packets >= 1.0", &EmbreeGoalRow::packetsVsPackets, 1.0);
+        line("our eye packets / Embree single rays >= 1.5", &EmbreeGoalRow::packetsVsSingle, 1.5);
+        if (balls4Packets > 0)
+            md << "| balls 4 SPD frame, packets / single rays <= 0.67 (one thread) | "
+               << fmt("%.3f", balls4Packets) << " | " << (balls4Packets <= 0.67 ? "yes" : "**no**")
+               << " |\n";
+    }
 #endif
+    (void)balls4Packets; // read only with Embree
     md << "\nLoad average at the end (1, 5, 15 min): " << loadAverage() << ".\n";
     const std::string mdPath = o.outDir + "/raytrace.md";
     std::ofstream(mdPath) << md.str();

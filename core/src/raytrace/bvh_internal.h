@@ -70,6 +70,13 @@ inline void floatBoxOutward(const double* lo, const double* hi, __m128& flo, __m
     fhi = round(hi, false);
 }
 
+// A quantised box plane (Bvh::QuantNode8): org + q·scale, the product and the sum each
+// rounded to float, as the walk's lanes compute it (no FMA anywhere it is compiled).
+inline float quantDecode(float org, float scale, int q) {
+    const float prod = float(q) * scale;
+    return org + prod;
+}
+
 // A node of the binary tree as built (depth first, left child right after its parent).
 // Its box is a union of float boxes rounded outward, so it is exact in float.
 struct BuildNode {

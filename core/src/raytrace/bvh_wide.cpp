@@ -304,7 +304,7 @@ template <int W> void Bvh::collapseInto(const void* buildNodes, std::vector<Wide
 
 void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     const PathChoice pc = choosePath(options_);
-    path_ = pc.avx512 ? avx512Path() : pc.avx2 ? avx2Path(pc.width) : ssePath(pc.width);
+    path_ = pc.avx512 ? avx512Path(false) : pc.avx2 ? avx2Path(pc.width, false) : ssePath(pc.width);
     options_.width = pc.width;
     options_.simd = pc.avx512 ? BvhSimd::Avx512 : pc.avx2 ? BvhSimd::Avx2 : BvhSimd::Sse2;
     stats_.width = pc.width;
@@ -380,12 +380,105 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         wnodes8_.reserve(std::min<std::size_t>(count / 7 + 1, 4096)); // the top; tasks append
         collapseInto<8>(buildNodes, wnodes8_);
         stats_.wideNodes = int(wnodes8_.size());
+        stats_.nodeBytes = wnodes8_.size() * sizeof(WideNode8);
+        // The collapse's output stage: the node layout (BvhNodes). Auto keeps float nodes
+        // on every kind of scene: quantised ones measured slower on all of them (the
+        // decode costs more than the halved node loads save; docs/raytrace-scale.md).
+        const bool quantise = options_.nodes == BvhNodes::Quantised;
+        if (quantise && quantiseNodes()) {
+            stats_.quantised = true;
+            stats_.nodeBytes = qnodes8_.size() * sizeof(QuantNode8);
+            path_ = pc.avx512 ? avx512Path(true) : avx2Path(8, true);
+        }
     } else {
         wnodes_.reserve(std::min<std::size_t>(count / 3 + 1, 4096));
         collapseInto<4>(buildNodes, wnodes_);
         stats_.wideNodes = int(wnodes_.size());
+        stats_.nodeBytes = wnodes_.size() * sizeof(WideNode);
     }
     fill();
+}
+
+// Child boxes as 8-bit offsets in the node's box (Embree's compressed nodes do the same):
+// per axis the node's lower corner org (the children's smallest lo, a float) and a
+// power of two scale with org + 255·scale >= the children's largest hi; each child's lo
+// rounded down to a q with org + q·scale <= lo, its hi up to one with org + q·scale >= hi,
+// both checked with the walk's own decode (quantDecode), so every decoded box holds the
+// float box it replaces and the float tests on it stay conservative (no hit is lost).
+// Node boxes float cannot quantise (infinite, or a span beyond 255·2^127) keep the
+// whole tree float.
+bool Bvh::quantiseNodes() {
+    std::vector<QuantNode8> out(wnodes8_.size());
+    for (std::size_t i = 0; i < wnodes8_.size(); ++i) {
+        const WideNode8& w = wnodes8_[i];
+        QuantNode8& q = out[i];
+        std::memset(&q, 0, sizeof q); // padding too: trees compare bytewise (tests)
+        for (int c = 0; c < 8; ++c) {
+            q.child[c] = w.child[c];
+            q.count[c] = w.count[c];
+            if (w.lo[0][c] <= w.hi[0][c]) q.valid |= std::uint8_t(1u << c);
+        }
+        for (int a = 0; a < 3; ++a) {
+            float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+            for (int c = 0; c < 8; ++c)
+                if ((q.valid >> c) & 1) {
+                    lo = std::min(lo, w.lo[a][c]);
+                    hi = std::max(hi, w.hi[a][c]);
+                }
+            if (!std::isfinite(lo) || !std::isfinite(hi)) return false;
+            // The smallest power of two with 255·scale >= hi − lo (then checked in float).
+            int e = 0;
+            std::frexp((double(hi) - double(lo)) / 255, &e);
+            float scale = std::ldexp(1.0f, std::max(e, -126));
+            while (std::isfinite(scale) && quantDecode(lo, scale, 255) < hi)
+                scale *= 2;
+            if (!std::isfinite(scale) || !std::isfinite(quantDecode(lo, scale, 255))) return false;
+            q.org[a] = lo;
+            q.scale[a] = scale;
+            for (int c = 0; c < 8; ++c) {
+                if (!((q.valid >> c) & 1)) { // never entered (valid); an inverted box anyway
+                    q.q[a][c] = 255;
+                    q.q[3 + a][c] = 0;
+                    continue;
+                }
+                int ql = std::clamp(int(std::floor((double(w.lo[a][c]) - lo) / scale)), 0, 255);
+                while (ql > 0 && quantDecode(lo, scale, ql) > w.lo[a][c])
+                    --ql;
+                int qh = std::clamp(int(std::ceil((double(w.hi[a][c]) - lo) / scale)), 0, 255);
+                while (qh < 255 && quantDecode(lo, scale, qh) < w.hi[a][c])
+                    ++qh;
+                if (quantDecode(lo, scale, ql) > w.lo[a][c] ||
+                    quantDecode(lo, scale, qh) < w.hi[a][c])
+                    return false; // cannot happen (q 0 and 255 hold them): the proof, checked
+                q.q[a][c] = std::uint8_t(ql);
+                q.q[3 + a][c] = std::uint8_t(qh);
+            }
+        }
+    }
+    qnodes8_ = std::move(out);
+    std::vector<WideNode8>().swap(wnodes8_);
+    return true;
+}
+
+std::vector<Bvh::WideNode8> Bvh::decodedQuantNodes8() const {
+    std::vector<WideNode8> out(qnodes8_.size());
+    for (std::size_t i = 0; i < qnodes8_.size(); ++i) {
+        const QuantNode8& q = qnodes8_[i];
+        WideNode8& w = out[i];
+        std::memset(&w, 0, sizeof w);
+        for (int c = 0; c < 8; ++c) {
+            w.child[c] = q.child[c];
+            w.count[c] = q.count[c];
+            for (int a = 0; a < 3; ++a) {
+                const bool valid = (q.valid >> c) & 1;
+                w.lo[a][c] = valid ? quantDecode(q.org[a], q.scale[a], q.q[a][c])
+                                   : std::numeric_limits<float>::infinity();
+                w.hi[a][c] = valid ? quantDecode(q.org[a], q.scale[a], q.q[3 + a][c])
+                                   : -std::numeric_limits<float>::infinity();
+            }
+        }
+    }
+    return out;
 }
 
 } // namespace wb::rt

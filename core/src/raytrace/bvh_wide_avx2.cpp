@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #if defined(__clang__)
 #pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
@@ -36,6 +37,12 @@ struct L8 {
     static V set1(float x) { return _mm256_set1_ps(x); }
     static V load(const float* p) { return _mm256_load_ps(p); }
     static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+    static V add(V a, V b) { return _mm256_add_ps(a, b); }
+    // Eight bytes as floats (the quantised nodes' offsets): exact.
+    static V fromU8(const std::uint8_t* p) {
+        return _mm256_cvtepi32_ps(
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))));
+    }
     static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
     static V min(V a, V b) { return _mm256_min_ps(a, b); }
     static V max(V a, V b) { return _mm256_max_ps(a, b); }
@@ -53,6 +60,7 @@ namespace wb::rt {
 // Instantiated here, inside the AVX2 region.
 template struct Bvh::WideWalk<Lanes4<1>>;
 template struct Bvh::WideWalk<avx2::L8>;
+template struct Bvh::WideWalk<avx2::L8, true>;
 } // namespace wb::rt
 
 #if defined(__clang__)
@@ -63,8 +71,10 @@ template struct Bvh::WideWalk<avx2::L8>;
 
 namespace wb::rt {
 
-const Bvh::WidePath* Bvh::avx2Path(int width) {
-    return width == 8 ? WideWalk<avx2::L8>::path(true) : WideWalk<Lanes4<1>>::path(true);
+const Bvh::WidePath* Bvh::avx2Path(int width, bool quantised) {
+    if (width == 8)
+        return quantised ? WideWalk<avx2::L8, true>::path(true) : WideWalk<avx2::L8>::path(true);
+    return WideWalk<Lanes4<1>>::path(true);
 }
 
 } // namespace wb::rt

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #if defined(__clang__)
 #pragma clang attribute push(__attribute__((target("avx512f,avx512vl"))), apply_to = function)
@@ -41,6 +42,12 @@ struct L8 {
     static V set1(float x) { return _mm256_set1_ps(x); }
     static V load(const float* p) { return _mm256_load_ps(p); }
     static V sub(V a, V b) { return _mm256_sub_ps(a, b); }
+    static V add(V a, V b) { return _mm256_add_ps(a, b); }
+    // Eight bytes as floats (the quantised nodes' offsets): exact.
+    static V fromU8(const std::uint8_t* p) {
+        return _mm256_cvtepi32_ps(
+            _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))));
+    }
     static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
     static V min(V a, V b) { return _mm256_min_ps(a, b); }
     static V max(V a, V b) { return _mm256_max_ps(a, b); }
@@ -57,6 +64,7 @@ struct L8 {
 namespace wb::rt {
 // Instantiated here, inside the AVX-512 region.
 template struct Bvh::WideWalk<avx512::L8>;
+template struct Bvh::WideWalk<avx512::L8, true>;
 } // namespace wb::rt
 
 #if defined(__clang__)
@@ -67,8 +75,8 @@ template struct Bvh::WideWalk<avx512::L8>;
 
 namespace wb::rt {
 
-const Bvh::WidePath* Bvh::avx512Path() {
-    return WideWalk<avx512::L8>::path(true);
+const Bvh::WidePath* Bvh::avx512Path(bool quantised) {
+    return quantised ? WideWalk<avx512::L8, true>::path(true) : WideWalk<avx512::L8>::path(true);
 }
 
 } // namespace wb::rt

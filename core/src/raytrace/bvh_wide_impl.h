@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace wb::rt {
 
@@ -60,10 +61,12 @@ template <int Tag> struct Lanes4 {
     static __m128 low(V v) { return v; }
 };
 
-template <class L> struct Bvh::WideWalk {
+template <class L, bool Q> struct Bvh::WideWalk {
     static constexpr int W = L::W;
     using V = typename L::V;
-    using Node = WideNodeT<W>;
+    // Q: quantised 8-wide nodes (QuantNode8), each plane decoded in the lanes as
+    // quantDecode does it; else float nodes.
+    using Node = std::conditional_t<Q, QuantNode8, WideNodeT<W>>;
     // At most W − 1 pushes per wide node, at most one wide node per binary level.
     static constexpr int kStack = (W - 1) * bvh_detail::kMaxDepth;
 
@@ -121,10 +124,19 @@ template <class L> struct Bvh::WideWalk {
     };
     static constexpr Offsets makeOffsets() {
         Offsets t{};
-        constexpr std::size_t kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
+        std::size_t kHiMinusLo = 0, loBase = 0, plane = 0;
+        if constexpr (Q) {
+            kHiMinusLo = 3 * W;
+            loBase = offsetof(Node, q);
+            plane = W;
+        } else {
+            kHiMinusLo = offsetof(Node, hi) - offsetof(Node, lo);
+            loBase = offsetof(Node, lo);
+            plane = W * sizeof(float);
+        }
         for (int signs = 0; signs < 8; ++signs)
             for (int a = 0; a < 3; ++a) {
-                const std::size_t lo = offsetof(Node, lo) + std::size_t(a) * W * sizeof(float);
+                const std::size_t lo = loBase + std::size_t(a) * plane;
                 const bool neg = (signs >> a) & 1;
                 t.v[signs][a] = lo + (neg ? kHiMinusLo : 0);
                 t.v[signs][3 + a] = lo + (neg ? 0 : kHiMinusLo);
@@ -133,8 +145,43 @@ template <class L> struct Bvh::WideWalk {
     }
     static constexpr Offsets kOffsets = makeOffsets();
 
+    // The W planes of axis a at byte offset off in the node (near or far planes).
+    __attribute__((always_inline)) static V planes(const Node& nd, std::size_t off, int a) {
+        const char* base = reinterpret_cast<const char*>(&nd);
+        if constexpr (Q) {
+            const V qv = L::fromU8(reinterpret_cast<const std::uint8_t*>(base + off));
+            return L::add(L::set1(nd.org[a]), L::mul(qv, L::set1(nd.scale[a])));
+        } else {
+            (void)a;
+            return L::load(reinterpret_cast<const float*>(base + off));
+        }
+    }
+    // The slots holding a child (the float nodes' empty slots have inverted infinite
+    // boxes and are never entered).
+    static int validMask(const Node& nd) {
+        if constexpr (Q)
+            return nd.valid;
+        else
+            return (1 << W) - 1;
+    }
+    // Child c's box on axis a, as the lanes decode it.
+    static float boxLo(const Node& nd, int a, int c) {
+        if constexpr (Q)
+            return bvh_detail::quantDecode(nd.org[a], nd.scale[a], nd.q[a][c]);
+        else
+            return nd.lo[a][c];
+    }
+    static float boxHi(const Node& nd, int a, int c) {
+        if constexpr (Q)
+            return bvh_detail::quantDecode(nd.org[a], nd.scale[a], nd.q[3 + a][c]);
+        else
+            return nd.hi[a][c];
+    }
+
     static const std::vector<Node>& nodesOf(const Bvh& b) {
-        if constexpr (W == 4)
+        if constexpr (Q)
+            return b.qnodes8_;
+        else if constexpr (W == 4)
             return b.wnodes_;
         else
             return b.wnodes8_;
@@ -372,27 +419,28 @@ template <class L> struct Bvh::WideWalk {
             alignas(32) float t[W];
             int mask;
             if (r.useFloat) {
-                const char* base = reinterpret_cast<const char*>(&nd);
                 V t0 = r.tMin, t1 = L::set1(flim);
                 for (int a = 0; a < 3; ++a) {
-                    const V nearP = L::load(reinterpret_cast<const float*>(base + r.off[a]));
-                    const V farP = L::load(reinterpret_cast<const float*>(base + r.off[3 + a]));
+                    const V nearP = planes(nd, r.off[a], a);
+                    const V farP = planes(nd, r.off[3 + a], a);
                     // max/min return the second operand for NaN (0·inf: a ray in the slab's
                     // plane): that slab is no limit.
                     t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
                     t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
                 }
                 mask = L::le(t0, t1);
+                if constexpr (Q) mask &= validMask(nd);
                 if (!kAnyHit) L::store(t, t0);
             } else {
                 mask = 0;
                 const double lim = tMax * kFarScale;
                 for (int c = 0; c < W; ++c) {
-                    if (nd.lo[0][c] > nd.hi[0][c]) continue; // empty slot
+                    if (!((validMask(nd) >> c) & 1) || boxLo(nd, 0, c) > boxHi(nd, 0, c))
+                        continue; // empty slot
                     double t0 = tMin, t1 = lim;
                     for (int a = 0; a < 3; ++a) {
-                        const double nearP = r.neg[a] ? nd.hi[a][c] : nd.lo[a][c];
-                        const double farP = r.neg[a] ? nd.lo[a][c] : nd.hi[a][c];
+                        const double nearP = r.neg[a] ? boxHi(nd, a, c) : boxLo(nd, a, c);
+                        const double farP = r.neg[a] ? boxLo(nd, a, c) : boxHi(nd, a, c);
                         const double tn = (nearP - o[a]) * r.invd[a];
                         const double tf = (farP - o[a]) * r.invd[a] * kFarScale;
                         t0 = tn > t0 ? tn : t0;
@@ -638,15 +686,23 @@ template <class L> struct Bvh::WideWalk {
             const Node& nd = nodes[cur];
             if constexpr (sizeof(Node) > 128)
                 _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
-            const char* base = reinterpret_cast<const char*>(&nd);
+            alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
             const float* nearP[3];
             const float* farP[3];
             // The interval test: the W children against the whole packet at once.
             V t0 = iaTMin, t1 = L::set1(limHi);
             for (int a = 0; a < 3; ++a) {
-                nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
-                farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
-                const V n = L::load(nearP[a]), f = L::load(farP[a]);
+                const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
+                if constexpr (Q) {
+                    L::store(nearA[a], n);
+                    L::store(farA[a], f);
+                    nearP[a] = nearA[a];
+                    farP[a] = farA[a];
+                } else {
+                    const char* base = reinterpret_cast<const char*>(&nd);
+                    nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
+                    farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
+                }
                 t0 = L::max(minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a],
                                        iaInvHi[a]),
                             t0);
@@ -654,7 +710,7 @@ template <class L> struct Bvh::WideWalk {
                                        iaFarHi[a]),
                             t1);
             }
-            int cand = L::le(t0, t1);
+            int cand = L::le(t0, t1) & validMask(nd);
             // Each candidate child against each ray (lane j: ray j's own test).
             unsigned rays[W];
             alignas(32) float tc[W];

@@ -103,6 +103,19 @@ struct WidePaths {
             trees.push_back(std::make_unique<Bvh>(prims, o));
             REQUIRE(trees.back()->stats().avx512);
         }
+        // Issue 21: the quantised 8-wide nodes on each 8-wide path (a scene float cannot
+        // quantise keeps float nodes: quantisedNodes tests that).
+        if (avx2)
+            for (BvhSimd simd : {BvhSimd::Avx2, BvhSimd::Avx512}) {
+                if (simd == BvhSimd::Avx512 &&
+                    !(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")))
+                    continue;
+                BvhOptions o = base;
+                o.width = 8;
+                o.simd = simd;
+                o.nodes = BvhNodes::Quantised;
+                trees.push_back(std::make_unique<Bvh>(prims, o));
+            }
     }
 };
 
@@ -232,11 +245,22 @@ int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt1993
     return hits;
 }
 
-// The same on the boxes of the 4-wide and of the 8-wide tree (the AVX2 path's).
+// The same on the boxes of the 4-wide and of the 8-wide float tree, and on the rounded
+// boxes of the quantised one (decoded as the walk decodes them: their corners and edges
+// are where an inward rounding would lose a hit).
 int adversarialRays(const Refs& r, std::mt19937_64& g, int count, double scale) {
     int hits = adversarialRaysOf(r, r.paths.trees.front()->wideNodes(), g, count, scale);
-    if (r.paths.trees.size() >= 3)
-        hits += adversarialRaysOf(r, r.paths.trees.back()->wideNodes8(), g, count, scale);
+    bool float8 = false, quant8 = false;
+    for (const auto& t : r.paths.trees) {
+        if (!float8 && !t->wideNodes8().empty()) {
+            hits += adversarialRaysOf(r, t->wideNodes8(), g, count, scale);
+            float8 = true;
+        }
+        if (!quant8 && !t->quantNodes8().empty()) {
+            hits += adversarialRaysOf(r, t->decodedQuantNodes8(), g, count, scale);
+            quant8 = true;
+        }
+    }
     return hits;
 }
 
@@ -752,4 +776,112 @@ TEST_CASE("rt_bvh_wide: the build that stops at the wide leaves gives the wide t
                     CHECK(a.occluded(ray, 1e-9, 1e9) == b.occluded(ray, 1e-9, 1e9));
                 }
             }
+}
+
+// Issue 21, item 2: quantised 8-wide nodes. Each decoded child box holds the float box
+// it replaces (same tree, same links), nodes take half the bytes, and the walk on them
+// gives the plain loop's hits for rays through the rounded boxes' corners and edges, on
+// tiny and huge scenes and near float's limits; boxes float cannot quantise keep the
+// tree float (and exact).
+TEST_CASE("rt_bvh_wide: quantised nodes hold the float boxes and lose no hit",
+          "[raytrace][bvh][quantised]") {
+    if (!__builtin_cpu_supports("avx2")) return; // 8-wide nodes need AVX2
+    auto checkHolds = [](const std::vector<std::unique_ptr<Primitive>>& prims) {
+        BvhOptions fo, qo;
+        fo.width = qo.width = 8;
+        fo.simd = qo.simd = BvhSimd::Avx2;
+        fo.nodes = BvhNodes::Float;
+        qo.nodes = BvhNodes::Quantised;
+        const Bvh f(prims, fo), q(prims, qo);
+        REQUIRE(q.stats().quantised);
+        REQUIRE_FALSE(f.stats().quantised);
+        const auto& fn = f.wideNodes8();
+        const auto dn = q.decodedQuantNodes8();
+        REQUIRE(fn.size() == dn.size());
+        REQUIRE(q.stats().nodeBytes * 2 == f.stats().nodeBytes); // 128 bytes against 256
+        int tight = 0, boxes = 0;
+        for (std::size_t i = 0; i < fn.size(); ++i)
+            for (int c = 0; c < 8; ++c) {
+                REQUIRE(dn[i].child[c] == fn[i].child[c]);
+                REQUIRE(dn[i].count[c] == fn[i].count[c]);
+                if (fn[i].lo[0][c] > fn[i].hi[0][c]) {
+                    REQUIRE_FALSE((q.quantNodes8()[i].valid >> c) & 1); // empty slot
+                    continue;
+                }
+                ++boxes;
+                bool same = true;
+                for (int a = 0; a < 3; ++a) {
+                    REQUIRE(dn[i].lo[a][c] <= fn[i].lo[a][c]); // rounded outward
+                    REQUIRE(dn[i].hi[a][c] >= fn[i].hi[a][c]);
+                    same = same && dn[i].lo[a][c] == fn[i].lo[a][c] &&
+                           dn[i].hi[a][c] == fn[i].hi[a][c];
+                }
+                tight += same;
+            }
+        // Rounded outward: on a scene of many boxes most move a little (not all exact).
+        if (boxes > 50) CHECK(tight < boxes);
+        return boxes;
+    };
+    for (double s : {1.0, 1e-30, 1e25, 1e36}) {
+        INFO("scale " << s);
+        std::mt19937_64 g(21);
+        Scene sc;
+        mixedScene(sc, 1200, g, s);
+        REQUIRE(checkHolds(sc.primitives) > 100);
+        const Refs r(sc.primitives);
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            Ray ray;
+            ray.origin = rnd3(g, -12 * s, 12 * s);
+            ray.direction = glm::normalize(rnd3(g, -1, 1));
+            hits += compareRay(r, ray);
+        }
+        hits += adversarialRays(r, g, 600, s);
+        CHECK(hits > 100);
+    }
+    SECTION("tiny scenes: two primitives, one wide node") {
+        Scene sc;
+        sc.add(Sphere({0, 0, 0}, 1), 0);
+        sc.add(Triangle({2, 0, 0}, {3, 0, 0}, {2, 1, 0}), 0);
+        for (int k = 0; k < 3; ++k)
+            sc.add(Sphere({5.0 + k, 1, 0}, 0.25), 0);
+        sc.add(Triangle({-3, -3, 0.5}, {-3, -2, 0.5}, {-2, -3, 0.5}), 0);
+        checkHolds(sc.primitives);
+        const Refs r(sc.primitives);
+        std::mt19937_64 g(22);
+        CHECK(adversarialRays(r, g, 400, 1.0) > 20);
+    }
+    SECTION("flat scene: a zero-width axis (every box in z = 0)") {
+        Scene sc;
+        std::mt19937_64 g(23);
+        for (int i = 0; i < 300; ++i) {
+            glm::dvec3 a = rnd3(g, -10, 10), b = a + rnd3(g, -1, 1), c = a + rnd3(g, -1, 1);
+            a.z = b.z = c.z = 0;
+            sc.add(Triangle(a, b, c), 0);
+        }
+        checkHolds(sc.primitives);
+        const Refs r(sc.primitives);
+        CHECK(adversarialRays(r, g, 600, 1.0) > 10); // rays in z = 0 planes mostly graze
+    }
+    SECTION("boxes at float's limit stay float, and exact") {
+        // Spheres near ±3e38: their boxes round to ±FLT_MAX or infinity in float.
+        Scene sc;
+        for (int i = 0; i < 40; ++i)
+            sc.add(Sphere({(i % 2 ? 1 : -1) * 3.3e38, double(i), 0}, 1e37), 0);
+        BvhOptions qo;
+        qo.width = 8;
+        qo.simd = BvhSimd::Avx2;
+        qo.nodes = BvhNodes::Quantised;
+        const Bvh q(sc.primitives, qo);
+        CHECK_FALSE(q.stats().quantised);
+        CHECK(q.quantNodes8().empty());
+        const Refs r(sc.primitives);
+        std::mt19937_64 g(24);
+        for (int i = 0; i < 200; ++i) {
+            Ray ray;
+            ray.origin = {0, 20, 1e36};
+            ray.direction = glm::normalize(rnd3(g, -1, 1));
+            compareRay(r, ray);
+        }
+    }
 }

@@ -96,6 +96,19 @@ struct Trees {
         BvhOptions bin;
         bin.width = 2;
         bvhs.push_back(std::make_unique<Bvh>(sc.primitives, bin));
+        // Issue 21: the quantised 8-wide nodes (BvhNodes::Quantised) on the 8-wide paths.
+        if (avx2)
+            for (BvhSimd simd : {BvhSimd::Avx2, BvhSimd::Avx512}) {
+                if (simd == BvhSimd::Avx512 &&
+                    !(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")))
+                    continue;
+                BvhOptions q;
+                q.width = 8;
+                q.simd = simd;
+                q.nodes = BvhNodes::Quantised;
+                bvhs.push_back(std::make_unique<Bvh>(sc.primitives, q));
+                REQUIRE(bvhs.back()->packetWidth() == 8);
+            }
         BvhOptions off;
         off.packets = false;
         bvhs.push_back(std::make_unique<Bvh>(sc.primitives, off));
@@ -274,7 +287,10 @@ TEST_CASE("packets: rays at the wide nodes' box corners, edges and faces", "[bvh
         const Trees t(sc);
         PacketCounts n;
         cornerPackets(t, t.bvhs.front()->wideNodes(), g, 300, s, n);
-        if (t.bvhs.size() >= 5) cornerPackets(t, t.bvhs[2]->wideNodes8(), g, 300, s, n);
+        if (!t.bvhs[2]->wideNodes8().empty())
+            cornerPackets(t, t.bvhs[2]->wideNodes8(), g, 300, s, n);
+        for (const auto& b : t.bvhs) // the quantised trees' rounded boxes
+            if (!b->quantNodes8().empty()) cornerPackets(t, b->decodedQuantNodes8(), g, 300, s, n);
         INFO(n.lanes << " lanes, " << n.hits << " hits");
         REQUIRE(n.hits > n.lanes / 10);
     }

@@ -38,6 +38,8 @@ enum class BvhSimd {
     Avx512,
 };
 
+enum class BvhNodes { Auto, Float, Quantised };
+
 struct BvhOptions {
     int bins = 16;                 // SAH bins per axis (binned build, Wald 2007); 2..256
     int maxLeafSize = 4;           // a node with at most this many primitives may become a leaf
@@ -60,6 +62,12 @@ struct BvhOptions {
     // split every node down to the SAH's leaves first, as before (the reference the tests
     // compare the wide trees against). Width 2 always builds the whole binary tree.
     bool fullBinary = false;
+    // Node layout of the 8-wide tree (issue 21): Float (each child box as 6 floats, 256
+    // bytes a node), Quantised (each child box as 8-bit offsets in the node's own box,
+    // rounded outward, 128 bytes a node) or Auto (docs/raytrace-scale.md says which kind
+    // of scene gets which, and why). 4-wide trees stay float (quantised they would still
+    // take two cache lines). A tree whose boxes float cannot quantise stays float.
+    BvhNodes nodes = BvhNodes::Auto;
 };
 
 struct BvhStats {
@@ -75,6 +83,8 @@ struct BvhStats {
     int width = 2;                // the tree traversed: 2 (binary), 4 or 8
     bool avx2 = false;            // the wide traversal runs AVX2 (or AVX-512) code, else SSE2
     bool avx512 = false;          // ... the AVX-512 code (BvhSimd::Avx512)
+    bool quantised = false;       // 8-wide nodes with quantised child boxes (BvhNodes)
+    std::size_t nodeBytes = 0;    // bytes of the wide nodes traversed
 };
 
 class Bvh : public Aggregate {
@@ -136,10 +146,25 @@ class Bvh : public Aggregate {
     };
     using WideNode = WideNodeT<4>;
     using WideNode8 = WideNodeT<8>;
+    // An 8-wide node with quantised child boxes: child c's box on axis a is
+    // [org[a] + qlo·scale[a], org[a] + qhi·scale[a]] with qlo = q[a][c], qhi = q[3 + a][c],
+    // each product and sum rounded to float as written (scale a power of two, so the
+    // product is exact); rounded outward, so it holds the child's float box. 128 bytes.
+    struct alignas(64) QuantNode8 {
+        float org[3], scale[3];
+        std::uint8_t q[6][8];
+        std::uint32_t child[8];
+        std::uint16_t count[8];
+        std::uint8_t valid; // bit c: slot c holds a child (empty slots are never entered)
+    };
     // The wide nodes of the tree traversed (empty for width 2, for the other width and
     // for a tree of one leaf): the tests aim rays at their boxes' corners, edges and faces.
     const std::vector<WideNode>& wideNodes() const { return wnodes_; }
     const std::vector<WideNode8>& wideNodes8() const { return wnodes8_; }
+    // The quantised nodes (empty unless BvhStats::quantised), and the same nodes with
+    // their boxes decoded as the walk decodes them (for the tests: rays at their corners).
+    const std::vector<QuantNode8>& quantNodes8() const { return qnodes8_; }
+    std::vector<WideNode8> decodedQuantNodes8() const;
 
   private:
     template <class Visit>
@@ -162,10 +187,12 @@ class Bvh : public Aggregate {
         unsigned (*occludedPacket)(const Bvh&, const Ray*, const double*, const double*,
                                    const Primitive* const*, unsigned);
     };
-    template <class Lanes> struct WideWalk;
+    template <class Lanes, bool Quantised = false> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
-    static const WidePath* avx2Path(int width); // bvh_wide_avx2.cpp: width 4 or 8
-    static const WidePath* avx512Path();        // bvh_wide_avx512.cpp: width 8
+    // bvh_wide_avx2.cpp: width 4 or 8 (quantised: 8 only)
+    static const WidePath* avx2Path(int width, bool quantised);
+    static const WidePath* avx512Path(bool quantised); // bvh_wide_avx512.cpp: width 8
+    bool quantiseNodes(); // wnodes8_ into qnodes8_; false (nothing changed) if a box cannot be
     void collapseWide(const void* buildNodes, std::size_t count);
     template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
@@ -198,6 +225,7 @@ class Bvh : public Aggregate {
     const WidePath* path_ = nullptr;            // the SIMD path and width traversed
     std::vector<WideNode> wnodes_;              // width 4
     std::vector<WideNode8> wnodes8_;            // width 8
+    std::vector<QuantNode8> qnodes8_;           // width 8, quantised (wnodes8_ then empty)
     std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
