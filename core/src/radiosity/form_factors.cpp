@@ -46,6 +46,23 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         groupReady_ = std::make_unique<std::atomic<bool>[]>(groups);
         for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
     }
+    nearFields_.resize(groups);
+}
+
+const GroupNearField* FormFactors::nearField(int g) const {
+    if (!(config_.groupNearField > 0.0)) return nullptr;
+    if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size())
+        throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& slot = nearFields_[static_cast<std::size_t>(g)];
+    if (!slot) {
+        const auto t0 = Clock::now();
+        const double diagonal = std::sqrt(2.0 * mesh_.groups[static_cast<std::size_t>(g)].area);
+        slot = std::make_unique<GroupNearField>(
+            groupNearField(mesh_, *bvh_, g, config_.groupNearField * diagonal));
+        nanos_ += nanosSince(t0);
+    }
+    return slot.get();
 }
 
 const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
