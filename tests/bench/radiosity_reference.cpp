@@ -36,6 +36,18 @@ struct Setting {
     double tolerance = 1e-5; // unshot power / emitted at the stop
 };
 
+// Lab 08's default patch edge (RadiosityLab::defaultPatchSize, copied: the lab's class is not
+// in core): e = √(A/3700), corrected twice by the count the mesher makes of it. The Cornell
+// box: 0.02359 m, 3,716 patches; its shooting groups are 4.25 e (kShooterPatches).
+double labPatch(const Scene& scene) {
+    double area = 0;
+    for (const Surface& sf : scene.surfaces) area += polygonArea(sf.vertices);
+    double e = std::sqrt(area / 3700.0);
+    for (int pass = 0; pass < 2; ++pass)
+        e *= std::sqrt(double(meshScene(scene, MeshConfig{e, 0.0}).patches.size()) / 3700.0);
+    return e;
+}
+
 Setting parse(const std::string& s) {
     Setting out;
     std::stringstream ss(s);
@@ -46,10 +58,14 @@ Setting parse(const std::string& s) {
     if (parts.size() < 4 || parts.size() > 6)
         throw std::invalid_argument(
             "--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
-    if (parts.size() > 4) out.shooter = std::stod(parts[4]);
+    // "lab": lab 08's default patch edge; a shooter edge "lab" is 4.25 of it.
+    const double lab = parts[1] == "lab" || (parts.size() > 4 && parts[4] == "lab")
+                           ? labPatch(cornellBox())
+                           : 0.0;
+    if (parts.size() > 4) out.shooter = parts[4] == "lab" ? 4.25 * lab : std::stod(parts[4]);
     if (parts.size() > 5) out.tolerance = std::stod(parts[5]);
     out.name = parts[0];
-    out.patch = std::stod(parts[1]);
+    out.patch = parts[1] == "lab" ? lab : std::stod(parts[1]);
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
     if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays")
@@ -107,16 +123,16 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (settings.empty())
-        settings = {// Lab 08's defaults before issue 19 (0.05 m, 128², no groups, stop at 1e-3).
-                    parse("old-default:0.05:hemicube:128:0:1e-3"),
-                    // Lab 08's defaults of issue 19 item 7 (/work/wt/brief/lab08-defaults.md):
-                    // 0.0283 m, shooting groups 0.311 m, stop at 1e-3; GL hemicube 512² (core's
-                    // CPU hemicube at 512² stands in: the two differ at edge pixels only) and the
-                    // CPU hemicube's 128².
-                    parse("default-gl512:0.0283:hemicube:512:0.311:1e-3"),
-                    parse("default-cpu128:0.0283:hemicube:128:0.311:1e-3"),
-                    // Finer: 0.02 m, groups 0.1 m, 512², stop at 1e-5.
-                    parse("fine:0.02:hemicube:512:0.1:1e-5")};
+        settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
+                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-3, rows by
+                    // the keys' methods: rays k = 4 gathered at the receivers (key 1, the
+                    // default), CPU hemicube 128² (key 2), GL hemicube 512² (key 3: core's CPU
+                    // hemicube at 512² stands in, they differ at edge pixels only).
+                    parse("default, rays k=4:lab:grouprays:4:lab:1e-3"),
+                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-3"),
+                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-3"),
+                    // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
+                    parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
     Scene scene = cornellBox();
     if (!keepLit.empty())
         for (Surface& f : scene.surfaces)
