@@ -9,7 +9,11 @@
 //   ...] METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
 //   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
-// Default settings: see `settings.empty()` below (lab 08's old and new defaults, and finer).
+// METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); PATCH_M
+// and SHOOTER_M "lab" = lab 08's default edges. Default settings: `settings.empty()` below.
+// Experiments (docs/bench/radiosity.md, "Why ours was off"): --black-except NAME sets every
+// other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
+// FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
 #include "core/radiosity/point_rays.h"
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
