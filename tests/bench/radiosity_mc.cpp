@@ -106,7 +106,8 @@ struct Tracer {
         const double r2 = glm::dot(d, d);
         const double r = std::sqrt(r2);
         d /= r;
-        const double cx = glm::dot(n, d), cl = -glm::dot(normal[static_cast<std::size_t>(light)], d);
+        const double cx = glm::dot(n, d),
+                     cl = -glm::dot(normal[static_cast<std::size_t>(light)], d);
         if (cx <= 0 || cl <= 0) return V(0.0);
         rt::Ray ray;
         ray.origin = x;
@@ -195,9 +196,11 @@ int main(int argc, char** argv) {
             means.push_back(acc / static_cast<double>(n));
         }
         V mean(0.0), se(0.0);
-        for (const V& m : means) mean += m;
+        for (const V& m : means)
+            mean += m;
         mean /= static_cast<double>(batches);
-        for (const V& m : means) se += (m - mean) * (m - mean);
+        for (const V& m : means)
+            se += (m - mean) * (m - mean);
         se = glm::sqrt(se / static_cast<double>(batches - 1) / static_cast<double>(batches));
         std::printf("MC %-26s B = %.5f %.5f %.5f  se %.3f%% %.3f%% %.3f%%  exposed %.4f\n",
                     f.name.c_str(), mean.x, mean.y, mean.z, 100 * se.x / mean.x,

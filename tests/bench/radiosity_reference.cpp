@@ -45,7 +45,8 @@ struct Setting {
 // box: 0.02359 m, 3,716 patches; its shooting groups are 4.25 e (kShooterPatches).
 double labPatch(const Scene& scene) {
     double area = 0;
-    for (const Surface& sf : scene.surfaces) area += polygonArea(sf.vertices);
+    for (const Surface& sf : scene.surfaces)
+        area += polygonArea(sf.vertices);
     double e = std::sqrt(area / 3700.0);
     for (int pass = 0; pass < 2; ++pass)
         e *= std::sqrt(double(meshScene(scene, MeshConfig{e, 0.0}).patches.size()) / 3700.0);
@@ -63,9 +64,8 @@ Setting parse(const std::string& s) {
         throw std::invalid_argument(
             "--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
     // "lab": lab 08's default patch edge; a shooter edge "lab" is 4.25 of it.
-    const double lab = parts[1] == "lab" || (parts.size() > 4 && parts[4] == "lab")
-                           ? labPatch(cornellBox())
-                           : 0.0;
+    const double lab =
+        parts[1] == "lab" || (parts.size() > 4 && parts[4] == "lab") ? labPatch(cornellBox()) : 0.0;
     if (parts.size() > 4) out.shooter = parts[4] == "lab" ? 4.25 * lab : std::stod(parts[4]);
     if (parts.size() > 5) out.tolerance = std::stod(parts[5]);
     out.name = parts[0];

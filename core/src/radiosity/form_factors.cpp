@@ -66,8 +66,8 @@ const GroupNearField* FormFactors::nearField(int g) const {
         // tall block's front face, lit at a grazing angle (a few pixels per patch at 128²).
         const bool emits =
             glm::length(mesh_.surfaces[static_cast<std::size_t>(sg.surface)].emission) > 0.0;
-        const double radius = emits ? std::numeric_limits<double>::infinity()
-                                    : config_.groupNearField * diagonal;
+        const double radius =
+            emits ? std::numeric_limits<double>::infinity() : config_.groupNearField * diagonal;
         slot = std::make_unique<GroupNearField>(groupNearField(mesh_, *bvh_, g, radius));
         nanos_ += nanosSince(t0);
     }

@@ -48,7 +48,8 @@ std::vector<std::vector<glm::dvec3>> exposedPieces(const PatchMesh& mesh, const 
                 continue;
             }
             int e = a + 1;
-            while (e < g && !covered(at((e + 0.5) / g, (b + 0.5) / g))) ++e;
+            while (e < g && !covered(at((e + 0.5) / g, (b + 0.5) / g)))
+                ++e;
             const double u0 = double(a) / g, u1 = double(e) / g, v0 = double(b) / g,
                          v1 = double(b + 1) / g;
             out.push_back({at(u0, v0), at(u1, v0), at(u1, v1), at(u0, v1)});
@@ -147,7 +148,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         if (!ragged) return pointToPolygon(x, nrm, hull);
         double f = 0.0;
         for (const auto& pieces : memberPieces)
-            for (const auto& piece : pieces) f += pointToPolygon(x, nrm, piece);
+            for (const auto& piece : pieces)
+                f += pointToPolygon(x, nrm, piece);
         return f;
     };
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t j) {
@@ -260,7 +262,8 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         for (std::size_t m = 0; m < members; ++m) {
             double f = 0.0;
             for (const glm::dvec3& x : pts)
-                for (const auto& piece : pieces[m]) f += pointToPolygon(x, p.normal, piece);
+                for (const auto& piece : pieces[m])
+                    f += pointToPolygon(x, p.normal, piece);
             f /= static_cast<double>(pts.size());
             if (f <= 0.0 || !bvh.visible(from, target[m])) continue;
             nf.w[r * members + m] = static_cast<float>(f);

@@ -81,7 +81,8 @@ TEST_CASE("group rays: rows of a closed cube sum to 1; the hull is the group", "
     const PatchMesh c = meshScene(sceneByName("cornell"), MeshConfig{0.05, 0.311});
     for (size_t g = 0; g < c.groups.size(); ++g) {
         double polygons = 0;
-        for (int id : c.groups[g].members) polygons += areaOf(c.cornersOf(id));
+        for (int id : c.groups[g].members)
+            polygons += areaOf(c.cornersOf(id));
         // Floor groups that lost members wholly under a block are ragged (2 here): their
         // hull is larger and groupGatherRow sums over the members' exposed parts instead.
         if (c.surfaces[size_t(c.groups[g].surface)].name == "floor")
@@ -106,7 +107,8 @@ Scene cubeWithBlock() {
     const glm::dvec3 up(0, h, 0), centre = at(0, 0, h / 2);
     auto add = [&](std::vector<glm::dvec3> p, const char* name) {
         glm::dvec3 mid(0.0);
-        for (auto& x : p) mid += x / double(p.size());
+        for (auto& x : p)
+            mid += x / double(p.size());
         if (glm::dot(polygonNormal(p), mid - centre) < 0) std::reverse(p.begin(), p.end());
         s.surfaces.push_back(Surface{p, glm::dvec3(0.5), glm::dvec3(0.0), name});
     };
@@ -129,10 +131,12 @@ TEST_CASE("group rays: a floor group cut by a block's footprint sends out no mor
         if (m.surfaces[size_t(sg.surface)].name != "floor") continue;
         if (sg.area > (1 - 1e-6) * areaOf(groupHull(m, int(g)))) continue; // not cut
         ++ragged;
-        INFO("group " << g << ": exposed " << sg.area << " of hull " << areaOf(groupHull(m, int(g))));
+        INFO("group " << g << ": exposed " << sg.area << " of hull "
+                      << areaOf(groupHull(m, int(g))));
         groupGatherRow(m, bvh, int(g), 16, row);
         double sum = 0;
-        for (float f : row) sum += double(f);
+        for (float f : row)
+            sum += double(f);
         // Closed: the row sums to 1. With F taken to the hull (the covered floor emitting too)
         // these 7 rows summed to 1.06-4.6 (measured); to the members' exposed cells 0.945-0.993
         // (the 8×8 cells' staircase along the footprint, 16 visibility rays to member centres
@@ -148,7 +152,8 @@ TEST_CASE("group near field: shooting members one by one near the group", "[radi
     // Member by member everywhere (radius 100 diagonals) is the answer without pooling; the
     // lab's radius (2 diagonals) must be closer to it than pooling and within 1%.
     Scene s = cubeWithBlock();
-    for (auto& f : s.surfaces) f.emission = glm::dvec3(0.0);
+    for (auto& f : s.surfaces)
+        f.emission = glm::dvec3(0.0);
     s.surfaces[1].emission = glm::dvec3(1.0); // the ceiling (addRoom's order): shadows on the floor
     auto solve = [&](double shooter, double near) {
         const PatchMesh m = meshScene(s, MeshConfig{0.05, shooter});
