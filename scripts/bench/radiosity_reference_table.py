@@ -12,8 +12,16 @@ import json
 import math
 import sys
 
-ours = json.load(open(sys.argv[1]))
-refs = [json.load(open(p)) for p in sys.argv[2:]]
+# --mc MC.json: tests/bench/radiosity_mc's brute-force path tracing, a second independent
+# estimate, shown as its difference from the reference (± its own noise).
+args = sys.argv[1:]
+mc = None
+if "--mc" in args:
+    k = args.index("--mc")
+    mc = json.load(open(args[k + 1]))
+    del args[k:k + 2]
+ours = json.load(open(args[0]))
+refs = [json.load(open(p)) for p in args[1:]]
 names = [s["name"] for s in ours["surfaces"]]
 xs = [1.0 / r["pixels"] for r in refs]
 camera = all(r.get("mode", "camera") == "camera" for r in refs)
@@ -48,12 +56,14 @@ def worst(a, b):
 print("Reference: Cycles, %s; runs: %s.\n" % (how, "; ".join(
     "%d px, %d samples × %d seeds" % (r["pixels"], r["samples"], r["seeds"]) for r in refs)))
 rimCol = " rim bias of the %d px run |" % refs[0]["pixels"] if camera else ""
+if mc:
+    rimCol += " Monte Carlo (radiosity_mc, %d paths) − reference, ± its noise |" % mc["paths"]
 print("| surface | reference B (R, G, B) | noise (std. error), %% |" % () + rimCol + " " +
       " | ".join("%s: %.4g m, %s %d%s, stop %.0e, %d patches" % (
           s["name"], s["patch"], s["method"], s["res_or_k"],
           (", groups %.3g m (%d)" % (s["shooter"], s["groups"])) if s.get("groups") else "",
           s.get("tolerance", 1e-5), s["patches"]) for s in ours["settings"]) + " |")
-print("|---|---|---:|" + ("---:|" if camera else "") + "---:|" * len(ours["settings"]))
+print("|---|---|---:|" + ("---:|" if camera else "") + ("---:|" if mc else "") + "---:|" * len(ours["settings"]))
 tot = [0.0] * len(ours["settings"])
 noiseMax = 0.0
 for name in [s["name"] for s in refs[0]["surfaces"]]:
@@ -67,8 +77,12 @@ for name in [s["name"] for s in refs[0]["surfaces"]]:
         tot[k] = max(tot[k], abs(d))
         cells.append("%+.2f%%%s" % (100 * d, "" if abs(d) <= 0.01 else " ✗"))
     rimCell = " %+.2f%% |" % (100 * rim) if camera else ""
+    if mc:
+        m = next(x for x in mc["surfaces"] if x["name"] == name)
+        d = worst(m["B"], B)
+        rimCell += " %+.2f%% ± %.2f |" % (100 * d, max(100 * m["stderr"][c] / m["B"][c] for c in range(3)))
     print("| %s | %.4f, %.4f, %.4f | %.2f |%s %s |" % (name, B[0], B[1], B[2], noise, rimCell, " | ".join(cells)))
-print("| **worst** | | %.2f |%s %s |" % (noiseMax, " |" if camera else "", " | ".join("%.2f%%" % (100 * t) for t in tot)))
+print("| **worst** | | %.2f |%s %s |" % (noiseMax, (" |" if camera else "") + (" |" if mc else ""), " | ".join("%.2f%%" % (100 * t) for t in tot)))
 for extra in checks:
     big, bigSigma = 0.0, 0.0
     for r2 in extra["surfaces"]:

@@ -18,3 +18,8 @@ endif()
 add_executable(radiosity_reference radiosity_reference.cpp)
 target_compile_options(radiosity_reference PRIVATE ${WB_WARNINGS})
 target_link_libraries(radiosity_reference PRIVATE core)
+# A second, independent estimate for that comparison: brute-force Monte Carlo path tracing on
+# the scene's polygons (tests/bench/radiosity_mc.cpp). A bench, not a test.
+add_executable(radiosity_mc radiosity_mc.cpp)
+target_compile_options(radiosity_mc PRIVATE ${WB_WARNINGS})
+target_link_libraries(radiosity_mc PRIVATE core)

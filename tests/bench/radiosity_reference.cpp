@@ -9,7 +9,12 @@
 //   ...] METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
 //   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
-// Default settings: see `settings.empty()` below (lab 08's old and new defaults, and finer).
+// METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); PATCH_M
+// and SHOOTER_M "lab" = lab 08's default edges. Default settings: `settings.empty()` below.
+// Experiments (docs/bench/radiosity.md, "Why ours was off"): --black-except NAME sets every
+// other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
+// FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
+#include "core/radiosity/point_rays.h"
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
 
@@ -35,6 +40,19 @@ struct Setting {
     double tolerance = 1e-5; // unshot power / emitted at the stop
 };
 
+// Lab 08's default patch edge (RadiosityLab::defaultPatchSize, copied: the lab's class is not
+// in core): e = √(A/3700), corrected twice by the count the mesher makes of it. The Cornell
+// box: 0.02359 m, 3,716 patches; its shooting groups are 4.25 e (kShooterPatches).
+double labPatch(const Scene& scene) {
+    double area = 0;
+    for (const Surface& sf : scene.surfaces)
+        area += polygonArea(sf.vertices);
+    double e = std::sqrt(area / 3700.0);
+    for (int pass = 0; pass < 2; ++pass)
+        e *= std::sqrt(double(meshScene(scene, MeshConfig{e, 0.0}).patches.size()) / 3700.0);
+    return e;
+}
+
 Setting parse(const std::string& s) {
     Setting out;
     std::stringstream ss(s);
@@ -45,53 +63,35 @@ Setting parse(const std::string& s) {
     if (parts.size() < 4 || parts.size() > 6)
         throw std::invalid_argument(
             "--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
-    if (parts.size() > 4) out.shooter = std::stod(parts[4]);
+    // "lab": lab 08's default patch edge; a shooter edge "lab" is 4.25 of it.
+    const double lab =
+        parts[1] == "lab" || (parts.size() > 4 && parts[4] == "lab") ? labPatch(cornellBox()) : 0.0;
+    if (parts.size() > 4) out.shooter = parts[4] == "lab" ? 4.25 * lab : std::stod(parts[4]);
     if (parts.size() > 5) out.tolerance = std::stod(parts[5]);
     out.name = parts[0];
-    out.patch = std::stod(parts[1]);
+    out.patch = parts[1] == "lab" ? lab : std::stod(parts[1]);
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
-    if (out.method != "hemicube" && out.method != "rays")
+    if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays")
         throw std::invalid_argument("method " + out.method);
     return out;
 }
 
-// A point is exposed unless the first surface along its normal is met from behind (the inside
-// of a body): nearestPatch gives −1 for a back side AND for nothing, `visible` tells them apart.
-bool exposed(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
-    const glm::dvec3 o = p + 1e-6 * n;
-    if (bvh.nearestPatch(o, n, 0.0, 100.0) >= 0) return true;
-    return bvh.visible(o, o + 100.0 * n);
-}
-
-// Per surface: Σ B·A_exposed / Σ A_exposed, with each patch's exposed fraction from an 8×8 grid.
-std::vector<glm::dvec3> surfaceMeans(const PatchMesh& m, const PatchBvh& bvh,
-                                     const std::vector<glm::dvec3>& B,
+// Per surface: Σ B·A / Σ A over the patches. meshScene already gives each patch its EXPOSED
+// area (the part inside a body, e.g. the floor under a block, is seen by nobody and left out,
+// as the references leave it out). Before, this bench sampled each patch's exposure again and
+// multiplied the (already exposed) area by it: the patches straddling the blocks' outlines,
+// darker than the floor's mean, were counted with f² of their area instead of f, and the floor
+// read 1-3% bright (the exposed floor area 0.2435 m² instead of 0.2531 at 0.05 m).
+std::vector<glm::dvec3> surfaceMeans(const PatchMesh& m, const std::vector<glm::dvec3>& B,
                                      std::vector<double>& exposedArea) {
     const std::size_t ns = m.surfaces.size();
     std::vector<glm::dvec3> sum(ns, glm::dvec3(0.0));
     exposedArea.assign(ns, 0.0);
     for (std::size_t i = 0; i < m.patches.size(); ++i) {
         const Patch& p = m.patches[i];
-        const auto c = m.cornersOf(static_cast<int>(i));
-        int hits = 0;
-        const int g = 8;
-        for (int a = 0; a < g; ++a)
-            for (int b = 0; b < g; ++b) {
-                const double u = (a + 0.5) / g, v = (b + 0.5) / g;
-                glm::dvec3 q;
-                if (p.cornerCount == 3) {
-                    const double su = std::sqrt(u);
-                    q = c[0] + su * (1 - v) * (c[1] - c[0]) + su * v * (c[2] - c[0]);
-                } else {
-                    q = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] +
-                        (1 - u) * v * c[3];
-                }
-                hits += exposed(bvh, q, p.normal) ? 1 : 0;
-            }
-        const double a = p.area * hits / (g * g);
-        sum[static_cast<std::size_t>(p.surface)] += a * B[i];
-        exposedArea[static_cast<std::size_t>(p.surface)] += a;
+        sum[static_cast<std::size_t>(p.surface)] += p.area * B[i];
+        exposedArea[static_cast<std::size_t>(p.surface)] += p.area;
     }
     for (std::size_t s = 0; s < ns; ++s)
         if (exposedArea[s] > 0) sum[s] /= exposedArea[s];
@@ -109,11 +109,14 @@ std::string vec(const glm::dvec3& v) {
 int main(int argc, char** argv) {
     std::string outPath = "radiosity_reference_ours.json";
     std::vector<Setting> settings;
+    std::string keepLit; // --black-except NAME: every other surface's R set to 0 (experiments)
     try {
         for (int a = 1; a < argc; ++a) {
             const std::string arg = argv[a];
             if (arg == "--out" && a + 1 < argc)
                 outPath = argv[++a];
+            else if (arg == "--black-except" && a + 1 < argc)
+                keepLit = argv[++a];
             else if (arg == "--setting" && a + 1 < argc)
                 settings.push_back(parse(argv[++a]));
             else
@@ -124,17 +127,20 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (settings.empty())
-        settings = {// Lab 08's defaults before issue 19 (0.05 m, 128², no groups, stop at 1e-3).
-                    parse("old-default:0.05:hemicube:128:0:1e-3"),
-                    // Lab 08's defaults of issue 19 item 7 (/work/wt/brief/lab08-defaults.md):
-                    // 0.0283 m, shooting groups 0.311 m, stop at 1e-3; GL hemicube 512² (core's
-                    // CPU hemicube at 512² stands in: the two differ at edge pixels only) and the
-                    // CPU hemicube's 128².
-                    parse("default-gl512:0.0283:hemicube:512:0.311:1e-3"),
-                    parse("default-cpu128:0.0283:hemicube:128:0.311:1e-3"),
-                    // Finer: 0.02 m, groups 0.1 m, 512², stop at 1e-5.
-                    parse("fine:0.02:hemicube:512:0.1:1e-5")};
-    const Scene scene = cornellBox();
+        settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
+                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-3, rows by
+                    // the keys' methods: rays k = 4 gathered at the receivers (key 1, the
+                    // default), CPU hemicube 128² (key 2), GL hemicube 512² (key 3: core's CPU
+                    // hemicube at 512² stands in, they differ at edge pixels only).
+                    parse("default, rays k=4:lab:grouprays:4:lab:1e-3"),
+                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-3"),
+                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-3"),
+                    // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
+                    parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
+    Scene scene = cornellBox();
+    if (!keepLit.empty())
+        for (Surface& f : scene.surfaces)
+            if (f.name.find(keepLit) == std::string::npos) f.reflectivity = glm::dvec3(0.0);
     std::ostringstream js;
     js << "{\n  \"scene\": \"" << scene.name << "\",\n  \"surfaces\": [\n";
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
@@ -152,25 +158,48 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         const PatchMesh mesh = meshScene(scene, {st.patch, st.shooter});
         FormFactorConfig fc;
-        if (st.method == "rays") {
+        if (st.method == "rays" || st.method == "grouprays") {
             fc.method = FormFactorMethod::Rays;
             fc.rays.samples = st.resOrK;
         } else {
             fc.method = FormFactorMethod::Hemicube;
             fc.hemicubeResolution = st.resOrK;
         }
+        // grouprays: lab 08's rays method (key 1) with shooting groups: each receiver gathers
+        // from the group's outline (core/radiosity/point_rays.h), as the lab's provider does.
+        const FormFactors* ffp = nullptr;
+        if (st.method == "grouprays")
+            fc.groupRowProvider = [&mesh, &ffp, k = st.resOrK](int g, const HemicubeFrame&,
+                                                               std::vector<float>& out) {
+                groupGatherRow(mesh, ffp->bvh(), g, k, out);
+            };
+        if (const char* nf = std::getenv("WB_RADREF_NEAR")) fc.groupNearField = std::atof(nf);
         FormFactors ff(mesh, fc);
+        ffp = &ff;
         SolverConfig sc;
         sc.kind = SolverKind::Progressive;
         sc.ambient = true;
         sc.tolerance = st.tolerance;
+        if (std::getenv("WB_RADREF_FLOORF")) { // experiment: Σ F(light patch -> floor) per row
+            std::vector<float> scratch;
+            for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
+                if (glm::length(mesh.patches[i].emission) == 0) continue;
+                const float* f = ff.row(static_cast<int>(i), scratch);
+                double sf = 0, all = 0;
+                for (std::size_t j = 0; j < mesh.patches.size(); ++j) {
+                    all += f[j];
+                    if (mesh.patches[j].surface == 0) sf += f[j];
+                }
+                std::fprintf(stderr, "row %zu centre %.4f %.4f floor %.6f all %.6f\n", i,
+                             mesh.patches[i].centre.x, mesh.patches[i].centre.z, sf, all);
+            }
+        }
         Solver solver(mesh, ff, sc);
         solver.run();
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        PatchBvh bvh(mesh);
         std::vector<double> area;
-        const auto means = surfaceMeans(mesh, bvh, solver.displayRadiosity(), area);
+        const auto means = surfaceMeans(mesh, solver.displayRadiosity(), area);
         std::cerr << st.name << ": " << mesh.patches.size() << " patches, " << mesh.groups.size()
                   << " groups, " << solver.steps() << " shots, residual " << solver.residual()
                   << ", " << secs << " s\n";

@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -46,6 +47,31 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         groupReady_ = std::make_unique<std::atomic<bool>[]>(groups);
         for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
     }
+    nearFields_.resize(groups);
+}
+
+const GroupNearField* FormFactors::nearField(int g) const {
+    if (!(config_.groupNearField > 0.0)) return nullptr;
+    if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size())
+        throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto& slot = nearFields_[static_cast<std::size_t>(g)];
+    if (!slot) {
+        const auto t0 = Clock::now();
+        const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(g)];
+        const double diagonal = std::sqrt(2.0 * sg.area);
+        // An emitter's groups (the light: 1-2 of them) reach every receiver member by member:
+        // the direct light is most of every B, and the hemicube from the group's centre put
+        // it 1-3% off per row (the box's edges alias at one sub-pixel phase) and speckled the
+        // tall block's front face, lit at a grazing angle (a few pixels per patch at 128²).
+        const bool emits =
+            glm::length(mesh_.surfaces[static_cast<std::size_t>(sg.surface)].emission) > 0.0;
+        const double radius =
+            emits ? std::numeric_limits<double>::infinity() : config_.groupNearField * diagonal;
+        slot = std::make_unique<GroupNearField>(groupNearField(mesh_, *bvh_, g, radius));
+        nanos_ += nanosSince(t0);
+    }
+    return slot.get();
 }
 
 const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {

@@ -14,6 +14,53 @@
 
 namespace wb::rad {
 
+namespace {
+
+// The exposed part of patch `id` as convex pieces. A patch straddling a body's outline (the floor
+// at a block's foot) keeps its whole polygon in the mesh and gets its exposed AREA from an 8×8
+// sample grid (mesh.h); here the same grid's exposed cells, merged into strips along each grid
+// row, stand for its exposed SHAPE: a receiver next to the block (its face) must not get F
+// from the floor under it, nor lose the part in front of it to a uniform scale. A patch whose
+// area is its polygon's is one piece.
+std::vector<std::vector<glm::dvec3>> exposedPieces(const PatchMesh& mesh, const PatchBvh& bvh,
+                                                   int id) {
+    const Patch& p = mesh.patches[static_cast<std::size_t>(id)];
+    auto c = mesh.cornersOf(id);
+    const double full = polygonArea(c);
+    if (p.area >= (1.0 - 1e-9) * full || c.size() != 4) return {c};
+    auto at = [&](double u, double v) {
+        return (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+    };
+    // The meshing's test (mesh.cpp, covered()): the first surface along the normal met from
+    // behind means inside a body.
+    auto covered = [&](const glm::dvec3& q) {
+        const glm::dvec3 o = q + 1e-7 * (1.0 + glm::length(q)) * p.normal;
+        if (bvh.nearestPatch(o, p.normal, 0.0, 1e4) >= 0) return false;
+        return !bvh.visible(o, o + 1e4 * p.normal);
+    };
+    constexpr int g = 8; // mesh.cpp's exposure grid
+    std::vector<std::vector<glm::dvec3>> out;
+    for (int b = 0; b < g; ++b) {
+        int a = 0;
+        while (a < g) {
+            if (covered(at((a + 0.5) / g, (b + 0.5) / g))) {
+                ++a;
+                continue;
+            }
+            int e = a + 1;
+            while (e < g && !covered(at((e + 0.5) / g, (b + 0.5) / g)))
+                ++e;
+            const double u0 = double(a) / g, u1 = double(e) / g, v0 = double(b) / g,
+                         v1 = double(b + 1) / g;
+            out.push_back({at(u0, v0), at(u1, v0), at(u1, v1), at(u0, v1)});
+            a = e;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g) {
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
     const glm::dvec3 u = sg.u, v = glm::cross(sg.normal, sg.u);
@@ -81,6 +128,30 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
     for (std::size_t m = 0; m < members; ++m)
         seen[m] = false;
     const std::size_t kk = std::min<std::size_t>(static_cast<std::size_t>(k), members);
+    // A group whose members do not fill its hull: a floor group straddling a block's outline
+    // (its members' exposed areas leave out the floor under the block) or a ragged one at a
+    // surface's edge. Its hull would emit from the covered floor too: such groups shot 2-4%
+    // more power than they had, every wall and the ceiling came out ~+1% against Cycles
+    // (docs/bench/radiosity.md, "Why ours was off"). There F is summed over the members'
+    // exposed parts (meshing keeps a straddling patch's whole polygon and gives it its exposed
+    // area; the covered part lies under the block, behind the faces
+    // that see it: exposedPieces).
+    double hullArea = polygonArea(hull), membersArea = 0.0;
+    std::vector<std::vector<std::vector<glm::dvec3>>> memberPieces;
+    for (std::size_t m = 0; m < members; ++m)
+        membersArea += mesh.patches[static_cast<std::size_t>(sg.members[m])].area;
+    const bool ragged = membersArea < (1.0 - 1e-6) * hullArea;
+    if (ragged)
+        for (std::size_t m = 0; m < members; ++m)
+            memberPieces.push_back(exposedPieces(mesh, bvh, sg.members[m]));
+    auto formFactorAt = [&](const glm::dvec3& x, const glm::dvec3& nrm) {
+        if (!ragged) return pointToPolygon(x, nrm, hull);
+        double f = 0.0;
+        for (const auto& pieces : memberPieces)
+            for (const auto& piece : pieces)
+                f += pointToPolygon(x, nrm, piece);
+        return f;
+    };
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t j) {
         const Patch& p = mesh.patches[j];
         // Receivers behind G's plane or in it get nothing (the ceiling's pieces around the
@@ -91,7 +162,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         // floor group's centroid lay under the block (the face came out 92% dark).
         const double tiny = 1e-9 * std::sqrt(sg.area);
         if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) return;
-        double f = pointToPolygon(p.centre, p.normal, hull);
+        double f = formFactorAt(p.centre, p.normal);
         // Receivers within two of their own sizes of G's plane (the walls meeting G along an
         // edge): the kernel is steep and convex across them and their centre's value runs low
         // (row sums of a closed cube 0.965-0.979): average a 4×4 grid of points instead.
@@ -107,7 +178,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                     const double u = (a + 0.5) / 4, v = (b + 0.5) / 4;
                     const glm::dvec3 x = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] +
                                          u * v * c[2] + (1 - u) * v * c[3];
-                    acc += pointToPolygon(x, p.normal, hull);
+                    acc += formFactorAt(x, p.normal);
                 }
             f = acc / 16.0;
         }
@@ -146,6 +217,59 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
     }
     for (float& x : out)
         x = static_cast<float>(x / live);
+}
+
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius) {
+    const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
+    const std::size_t members = sg.members.size();
+    GroupNearField nf;
+    if (members == 0 || !(radius > 0.0)) return nf;
+    std::vector<std::vector<std::vector<glm::dvec3>>> pieces(members);
+    std::vector<glm::dvec3> target(members);
+    for (std::size_t m = 0; m < members; ++m) {
+        const int id = sg.members[m];
+        const Patch& p = mesh.patches[static_cast<std::size_t>(id)];
+        pieces[m] = exposedPieces(mesh, bvh, id);
+        target[m] = rt::offsetRayOrigin(p.centre, p.normal);
+    }
+    const double tiny = 1e-9 * std::sqrt(sg.area);
+    for (std::size_t j = 0; j < mesh.patches.size(); ++j) {
+        const Patch& p = mesh.patches[j];
+        if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) continue;
+        if (glm::length(p.centre - sg.centre) > radius) continue;
+        nf.receivers.push_back(static_cast<int>(j));
+    }
+    nf.w.assign(nf.receivers.size() * members, 0.0f);
+    tbb::parallel_for(std::size_t(0), nf.receivers.size(), [&](std::size_t r) {
+        const int j = nf.receivers[r];
+        const Patch& p = mesh.patches[static_cast<std::size_t>(j)];
+        // Receivers within two of their sizes of the group's plane (meeting it along an edge):
+        // a 4×4 grid of points, as groupGatherRow does (the kernel is steep across them).
+        const double size = std::sqrt(p.area);
+        std::vector<glm::dvec3> pts;
+        if (glm::dot(sg.normal, p.centre - sg.centre) < 2.0 * size && p.cornerCount == 4) {
+            const auto c = mesh.cornersOf(j);
+            for (int a = 0; a < 4; ++a)
+                for (int b = 0; b < 4; ++b) {
+                    const double u = (a + 0.5) / 4, v = (b + 0.5) / 4;
+                    pts.push_back((1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] +
+                                  (1 - u) * v * c[3]);
+                }
+        } else {
+            pts.push_back(p.centre);
+        }
+        const glm::dvec3 from = rt::offsetRayOrigin(p.centre, p.normal);
+        for (std::size_t m = 0; m < members; ++m) {
+            double f = 0.0;
+            for (const glm::dvec3& x : pts)
+                for (const auto& piece : pieces[m])
+                    f += pointToPolygon(x, p.normal, piece);
+            f /= static_cast<double>(pts.size());
+            if (f <= 0.0 || !bvh.visible(from, target[m])) continue;
+            nf.w[r * members + m] = static_cast<float>(f);
+        }
+    });
+    return nf;
 }
 
 } // namespace wb::rad

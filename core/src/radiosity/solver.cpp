@@ -117,18 +117,40 @@ double Solver::step() {
             }
             // 2. Pool its members' unshot radiosity (area average) and shoot it from the centroid:
             //    j receives R_j ΔB_g F_gj A_g/A_j.
+            //    Receivers in the group's near field (FormFactorConfig::groupNearField) are
+            //    shot member by member instead: j receives R_j Σ_m ΔB_m w_jm (point_rays.h).
             const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(best)];
+            const GroupNearField* near = ff_.nearField(best);
+            memberShot_.resize(sg.members.size());
             glm::dvec3 pooled(0.0);
-            for (int e : sg.members) {
-                pooled += mesh_.patches[static_cast<std::size_t>(e)].area * dB_[static_cast<std::size_t>(e)];
-                dB_[static_cast<std::size_t>(e)] = glm::dvec3(0.0);
+            for (std::size_t m = 0; m < sg.members.size(); ++m) {
+                const auto e = static_cast<std::size_t>(sg.members[m]);
+                memberShot_[m] = dB_[e];
+                pooled += mesh_.patches[e].area * dB_[e];
+                dB_[e] = glm::dvec3(0.0);
             }
             const glm::dvec3 shot = pooled / sg.area;
             const float* f = ff_.shooterRow(best, scratch_);
+            if (near) {
+                nearMark_.resize(static_cast<std::size_t>(n), 0);
+                const std::size_t members = sg.members.size();
+                for (std::size_t r = 0; r < near->receivers.size(); ++r) {
+                    const auto j = static_cast<std::size_t>(near->receivers[r]);
+                    nearMark_[j] = 1;
+                    glm::dvec3 gathered(0.0);
+                    for (std::size_t m = 0; m < members; ++m)
+                        gathered += static_cast<double>(near->w[r * members + m]) * memberShot_[m];
+                    const glm::dvec3 add = mesh_.patches[j].reflectivity * gathered;
+                    B_[j] += add;
+                    dB_[j] += add;
+                }
+            }
             double unshot = 0.0;
             for (int j = 0; j < n; ++j) {
                 const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
-                if (f[j] != 0.0f) {
+                if (near && nearMark_[static_cast<std::size_t>(j)]) {
+                    nearMark_[static_cast<std::size_t>(j)] = 0;
+                } else if (f[j] != 0.0f) {
                     const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * sg.area / p.area);
                     B_[static_cast<std::size_t>(j)] += add;
                     dB_[static_cast<std::size_t>(j)] += add;

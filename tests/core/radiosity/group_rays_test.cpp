@@ -9,7 +9,12 @@
 
 #include <catch2/catch.hpp>
 
+#include "core/radiosity/form_factors.h"
+#include "core/radiosity/solver.h"
+
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 using namespace wb::rad;
 
@@ -70,8 +75,113 @@ TEST_CASE("group rays: rows of a closed cube sum to 1; the hull is the group", "
         CHECK(sum == Approx(1.0).epsilon(0.01));
     }
     // The Cornell box's groups (the ceiling's pieces around the light are where a corner was
-    // lost): hull area = members' area for every group.
+    // lost): hull area = the members' polygons' area for every group. (Not ShooterGroup::area:
+    // that is the EXPOSED area, less for the floor groups cut by a block's footprint; this
+    // check compared with it and failed on main since the fitted mesh: 5 floor groups.)
     const PatchMesh c = meshScene(sceneByName("cornell"), MeshConfig{0.05, 0.311});
-    for (size_t g = 0; g < c.groups.size(); ++g)
-        CHECK(areaOf(groupHull(c, int(g))) == Approx(c.groups[g].area).epsilon(1e-9));
+    for (size_t g = 0; g < c.groups.size(); ++g) {
+        double polygons = 0;
+        for (int id : c.groups[g].members)
+            polygons += areaOf(c.cornersOf(id));
+        // Floor groups that lost members wholly under a block are ragged (2 here): their
+        // hull is larger and groupGatherRow sums over the members' exposed parts instead.
+        if (c.surfaces[size_t(c.groups[g].surface)].name == "floor")
+            CHECK(areaOf(groupHull(c, int(g))) >= polygons * (1 - 1e-9));
+        else
+            CHECK(areaOf(groupHull(c, int(g))) == Approx(polygons).epsilon(1e-9));
+    }
+}
+
+namespace {
+
+// A closed 1 m cube (R 0.5, E 1) with a 0.3 m block standing on its floor, turned 30° so its
+// footprint cuts across the floor's patches and groups (the Cornell box's situation).
+Scene cubeWithBlock() {
+    Scene s = furnace(0.5, 1.0);
+    const double c = std::cos(0.5236), sn = std::sin(0.5236), h = 0.3;
+    auto at = [&](double u, double v, double y) {
+        return glm::dvec3(0.45 + c * u - sn * v, y, 0.5 + sn * u + c * v);
+    };
+    const double a = 0.15;
+    const glm::dvec3 q[4] = {at(-a, -a, 0), at(a, -a, 0), at(a, a, 0), at(-a, a, 0)};
+    const glm::dvec3 up(0, h, 0), centre = at(0, 0, h / 2);
+    auto add = [&](std::vector<glm::dvec3> p, const char* name) {
+        glm::dvec3 mid(0.0);
+        for (auto& x : p)
+            mid += x / double(p.size());
+        if (glm::dot(polygonNormal(p), mid - centre) < 0) std::reverse(p.begin(), p.end());
+        s.surfaces.push_back(Surface{p, glm::dvec3(0.5), glm::dvec3(0.0), name});
+    };
+    add({q[0] + up, q[1] + up, q[2] + up, q[3] + up}, "block top");
+    for (int k = 0; k < 4; ++k)
+        add({q[k], q[(k + 1) % 4], q[(k + 1) % 4] + up, q[k] + up}, "block side");
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("group rays: a floor group cut by a block's footprint sends out no more than it has",
+          "[radiosity]") {
+    const PatchMesh m = meshScene(cubeWithBlock(), MeshConfig{0.05, 0.2});
+    const PatchBvh bvh(m);
+    std::vector<float> row;
+    int ragged = 0;
+    for (size_t g = 0; g < m.groups.size(); ++g) {
+        const ShooterGroup& sg = m.groups[g];
+        if (m.surfaces[size_t(sg.surface)].name != "floor") continue;
+        if (sg.area > (1 - 1e-6) * areaOf(groupHull(m, int(g)))) continue; // not cut
+        ++ragged;
+        INFO("group " << g << ": exposed " << sg.area << " of hull "
+                      << areaOf(groupHull(m, int(g))));
+        groupGatherRow(m, bvh, int(g), 16, row);
+        double sum = 0;
+        for (float f : row)
+            sum += double(f);
+        // Closed: the row sums to 1. With F taken to the hull (the covered floor emitting too)
+        // these 7 rows summed to 1.06-4.6 (measured); to the members' exposed cells 0.945-0.993
+        // (the 8×8 cells' staircase along the footprint, 16 visibility rays to member centres
+        // at the block's edges). Bound 6%: fails for every cut group with the hull.
+        CHECK(sum == Approx(1.0).epsilon(0.06));
+    }
+    CHECK(ragged >= 3);
+}
+
+TEST_CASE("group near field: shooting members one by one near the group", "[radiosity]") {
+    // The block's faces next to floor groups that straddle its shadow: pooled (near field off)
+    // they get the group's mean unshot radiosity, member by member what their neighbours hold.
+    // Member by member everywhere (radius 100 diagonals) is the answer without pooling; the
+    // lab's radius (2 diagonals) must be closer to it than pooling and within 1%.
+    Scene s = cubeWithBlock();
+    for (auto& f : s.surfaces)
+        f.emission = glm::dvec3(0.0);
+    s.surfaces[1].emission = glm::dvec3(1.0); // the ceiling (addRoom's order): shadows on the floor
+    auto solve = [&](double shooter, double near) {
+        const PatchMesh m = meshScene(s, MeshConfig{0.05, shooter});
+        FormFactorConfig fc;
+        fc.method = FormFactorMethod::Rays;
+        fc.rays.samples = 16;
+        fc.groupNearField = near;
+        std::unique_ptr<FormFactors> ffp;
+        fc.groupRowProvider = [&](int g, const HemicubeFrame&, std::vector<float>& out) {
+            groupGatherRow(m, ffp->bvh(), g, 16, out);
+        };
+        ffp = std::make_unique<FormFactors>(m, fc);
+        SolverConfig sc;
+        sc.kind = SolverKind::Progressive;
+        sc.tolerance = 1e-4;
+        sc.ambient = false;
+        Solver solver(m, *ffp, sc);
+        solver.run();
+        double b = 0, a = 0;
+        for (size_t i = 0; i < m.patches.size(); ++i)
+            if (m.surfaces[size_t(m.patches[i].surface)].name == "block side") {
+                b += m.patches[i].area * solver.radiosity()[i].y;
+                a += m.patches[i].area;
+            }
+        return b / a;
+    };
+    const double pooled = solve(0.25, 0.0), lab = solve(0.25, 2.0), members = solve(0.25, 100.0);
+    INFO("pooled " << pooled << ", radius 2 " << lab << ", member by member " << members);
+    CHECK(std::abs(lab - members) < std::abs(pooled - members));
+    CHECK(lab == Approx(members).epsilon(0.01));
 }

@@ -21,6 +21,18 @@ namespace wb::rad {
 void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                     std::vector<float>& out);
 
+// The near field of group g: the receivers within `radius` of the group's centroid, and for
+// each the gather form factor to every member m, w_jm = F(dA_j → P_m) · V(j, m) (exact point-
+// to-polygon, scaled by the member's exposed fraction; one visibility ray centre to centre).
+// A group pools its members' unshot radiosity and shoots the mean: a receiver close to it
+// sees its near members most, and where the group straddles a shadow edge (the floor at a
+// block's foot) the mean is far from what those members hold. The solver shoots a near
+// receiver's share member by member: it gets R_j Σ_m ΔB_m w_jm (docs/bench/radiosity.md).
+struct GroupNearField {
+    std::vector<int> receivers; // patch ids
+    std::vector<float> w;       // receivers.size() × members, row-major
+};
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g);
 

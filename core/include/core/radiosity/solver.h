@@ -65,6 +65,8 @@ class Solver {
     std::vector<glm::dvec3> B_, dB_, FB_;
     std::vector<double> history_;
     std::vector<float> scratch_;
+    std::vector<glm::dvec3> memberShot_; // a group's members' ΔB at its shot
+    std::vector<char> nearMark_;         // receivers of the shooting group's near field
     double emittedSum_ = 0.0;
     double residual_ = 1.0;
     int steps_ = 0;
