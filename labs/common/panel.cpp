@@ -43,6 +43,10 @@ const ImWchar* glyphRanges() {
     for (char32_t c = 0x400; c <= 0x45F; ++c)
         chars.insert(c);
     chars.insert(0xFFFD); // ImGui's fallback for what is still missing
+    // The exercise panel's marks (exercise_run.cpp gradeMark/statusMark), not all of them in
+    // a catalogue string: the course's grades ③④⑤ and ✓ ✗.
+    for (char32_t c : {U'③', U'④', U'⑤', U'✓', U'✗'})
+        chars.insert(c);
     auto add = [&](std::string_view text) {
         const std::string s(text);
         for (size_t i = 0; i < s.size();)
