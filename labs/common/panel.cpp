@@ -93,6 +93,14 @@ std::string setupImGuiFonts(float scale) {
     if (isFile(kSansPath) && io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &config, ranges)) {
         if (isFile(kMonoPath))
             g_mono = io.Fonts->AddFontFromFileTTF(kMonoPath, pixels, &config, ranges);
+        if (g_mono) {
+            // DejaVu Sans Mono has no circled digits: the grade marks ③④⑤ from DejaVu Sans,
+            // merged into it (ImGui skips what the font has already).
+            static const ImWchar kMarks[] = {0x2462, 0x2464, 0};
+            ImFontConfig merge = config;
+            merge.MergeMode = true;
+            io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &merge, kMarks);
+        }
     } else {
         message = trf("%s not found (Debian package fonts-dejavu-core): using ImGui's built-in "
                       "font",
