@@ -55,20 +55,15 @@ std::vector<Case> cubeCases(unsigned seed) {
 }
 
 std::string showCubeIn(const Values& in) {
-    char buf[120];
-    std::snprintf(buf, sizeof buf, "centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2],
-                  in[3]);
-    return buf;
+    return trf("centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2], in[3]);
 }
 
 std::string showCubeOut(const Values& v) {
     if (v.size() < 2) return "-";
-    char buf[80];
-    std::snprintf(buf, sizeof buf, "%d vertices, %d normals", int(v[0]), int(v[1]));
-    std::string s = buf;
+    std::string s = trf("%d vertices, %d normals", int(v[0]), int(v[1]));
     const size_t nv = size_t(v[0]);
     if (v.size() == 2 + 6 * nv && nv >= 4) {
-        s += "; first face:";
+        s += tr("; first face:");
         for (size_t i = 0; i < 4; ++i)
             s += " " + vec({v[2 + 3 * i], v[3 + 3 * i], v[4 + 3 * i]});
     }
