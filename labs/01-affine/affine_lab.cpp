@@ -605,14 +605,18 @@ class AffineLab : public Lab {
         std::optional<glm::dmat3> m;
         switch (s.mode) {
         case AffineMode::Mirror:
-            m = ex_.call("01.mirror", [&] { return t->mirror(s.k, s.l); });
+            m = ex_.call(
+                "01.mirror", [&] { return t->mirror(s.k, s.l); }, s.k, s.l);
             break;
         case AffineMode::ShadowDirectional:
-            m = ex_.call("01.shadow-dir",
-                         [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); });
+            m = ex_.call(
+                "01.shadow-dir", [&] { return t->shadowDirectional(s.k, s.l, affineLightDir(s)); },
+                s.k, s.l, affineLightDir(s));
             break;
         case AffineMode::ShadowPoint:
-            m = ex_.call("01.shadow-point", [&] { return t->shadowPoint(s.k, s.l, s.light); });
+            m = ex_.call(
+                "01.shadow-point", [&] { return t->shadowPoint(s.k, s.l, s.light); }, s.k, s.l,
+                s.light);
             break;
         }
         if (!m) return m;

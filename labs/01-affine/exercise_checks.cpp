@@ -46,12 +46,12 @@ std::vector<Case> lineCases(unsigned seed, const char* thirdName, bool direction
         cs.push_back({"seed " + std::to_string(i + 1), {k.x, k.y, l.x, l.y, t.x, t.y}});
     }
     const glm::dvec2 third = direction ? glm::dvec2(0.3, -1.0) : glm::dvec2(1.5, 6.0);
-    cs.push_back({"vertical line (K.x = L.x)", {2, -3, 2, 5, third.x, third.y}});
-    cs.push_back({"horizontal line (K.y = L.y)", {-4, 1, 3, 1, third.x, -third.y}});
-    cs.push_back({"line through the origin", {-2, -1, 4, 2, third.x, third.y}});
-    cs.push_back({"K, L far from the origin (|K| = 1e4)",
+    cs.push_back({N_("vertical line (K.x = L.x)"), {2, -3, 2, 5, third.x, third.y}});
+    cs.push_back({N_("horizontal line (K.y = L.y)"), {-4, 1, 3, 1, third.x, -third.y}});
+    cs.push_back({N_("line through the origin"), {-2, -1, 4, 2, third.x, third.y}});
+    cs.push_back({N_("K, L far from the origin (|K| = 1e4)"),
                   {1e4, 1e4, 1e4 + 3, 1e4 - 2, 1e4 + third.x, 1e4 + third.y}});
-    cs.push_back({"K and L 1e-3 apart", {1, 2, 1.001, 2.0005, third.x, third.y}});
+    cs.push_back({N_("K and L 1e-3 apart"), {1, 2, 1.001, 2.0005, third.x, third.y}});
     (void)thirdName;
     return cs;
 }
@@ -75,20 +75,14 @@ bool finite(const Values& v) {
 
 // What a difference of this kind usually means, for the three matrices.
 Verdict compareMatrix(const Values& expected, const Values& got, const char* degenerateHint) {
-    if (got.size() != 9) return Verdict::fail(tr("not a 3x3 matrix"));
-    if (!finite(got))
-        return Verdict::fail(degenerateHint[0]
-                                 ? degenerateHint
-                                 : tr("NaN or Inf in the matrix: a division by zero?"));
-    if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
-    glm::dmat3 g = glm::make_mat3(got.data());
-    if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
-        return Verdict::fail(tr("your matrix is the transpose of the answer: glm is column-major, "
-                                "m[c][r] is row r of column c (the translation is column 2)"));
-    bool allZero = true;
-    for (double x : got)
-        allZero = allZero && x == 0;
-    if (allZero) return Verdict::fail(tr("the zero matrix is no map at all"));
+    if (const auto v = ex::compareHomogeneous(
+            expected, got, 3, kMatrixTol,
+            degenerateHint[0] ? degenerateHint
+                              : tr("NaN or Inf in the matrix: a division by zero?"),
+            tr("your matrix is the transpose of the answer: glm is column-major, "
+               "m[c][r] is row r of column c (the translation is column 2)"),
+            tr("the zero matrix is no map at all")))
+        return *v;
     // Same linear part (top-left 2x2, scaled) but another last column/row?
     return Verdict::fail(tr("a different map: check the signs of the terms and that a point is "
                             "(x, y, 1) and a direction (x, y, 0)"));
@@ -138,9 +132,9 @@ std::vector<ex::Task> tasks() {
     t[1].section = "\u00a72.1 \u2463, fig. 1.1 b";
     t[1].cases = [] {
         std::vector<Case> cs = lineCases(202, "l", true);
-        cs.push_back({"light parallel to the line", {-3, -2, 5, 2, 8, 4}});
-        cs.push_back({"light perpendicular to the line", {-3, 0, 5, 0, 0, -2}});
-        cs.push_back({"light almost parallel (1e-9 rad)", {0, 0, 1, 0, 1, -1e-9}});
+        cs.push_back({N_("light parallel to the line"), {-3, -2, 5, 2, 8, 4}});
+        cs.push_back({N_("light perpendicular to the line"), {-3, 0, 5, 0, 0, -2}});
+        cs.push_back({N_("light almost parallel (1e-9 rad)"), {0, 0, 1, 0, 1, -1e-9}});
         return cs;
     };
     t[1].run = [](const void* table, const Values& in) {
@@ -162,10 +156,10 @@ std::vector<ex::Task> tasks() {
     t[2].section = "\u00a72.1 \u2464, fig. 1.1 c";
     t[2].cases = [] {
         std::vector<Case> cs = lineCases(303, "S", false);
-        cs.push_back({"S on the line", {-3, -2, 5, 2, 1, 0}});
-        cs.push_back({"S 1e-9 from the line", {-3, 0, 5, 0, 1, 1e-9}});
-        cs.push_back({"S far away (1e6)", {-3, 0, 5, 0, 2e5, 1e6}});
-        cs.push_back({"S on the other side of the line", {-3, 0, 5, 0, 1, -4}});
+        cs.push_back({N_("S on the line"), {-3, -2, 5, 2, 1, 0}});
+        cs.push_back({N_("S 1e-9 from the line"), {-3, 0, 5, 0, 1, 1e-9}});
+        cs.push_back({N_("S far away (1e6)"), {-3, 0, 5, 0, 2e5, 1e6}});
+        cs.push_back({N_("S on the other side of the line"), {-3, 0, 5, 0, 1, -4}});
         return cs;
     };
     t[2].run = [](const void* table, const Values& in) {

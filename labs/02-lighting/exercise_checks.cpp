@@ -39,38 +39,31 @@ Values packCube(const Cube& c) {
 }
 
 std::string vec(const glm::dvec3& v) {
-    char buf[100];
-    std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
-    return buf;
+    return ex::showNumbers({v.x, v.y, v.z});
 }
 
 std::vector<Case> cubeCases(unsigned seed) {
     std::vector<Case> cs;
-    cs.push_back({"the lab's cube: centre 0, half 1", {0, 0, 0, 1}});
+    cs.push_back({N_("the lab's cube: centre 0, half 1"), {0, 0, 0, 1}});
     std::mt19937 gen(seed);
     std::uniform_real_distribution<double> uc(-5.0, 5.0), uh(0.1, 3.0);
     for (int i = 0; i < 12; ++i)
         cs.push_back({"seed " + std::to_string(i + 1), {uc(gen), uc(gen), uc(gen), uh(gen)}});
-    cs.push_back({"tiny cube (half 1e-3) far away (1e2)", {100, -100, 50, 1e-3}});
-    cs.push_back({"big cube (half 1e3)", {1, 2, 3, 1e3}});
+    cs.push_back({N_("tiny cube (half 1e-3) far away (1e2)"), {100, -100, 50, 1e-3}});
+    cs.push_back({N_("big cube (half 1e3)"), {1, 2, 3, 1e3}});
     return cs;
 }
 
 std::string showCubeIn(const Values& in) {
-    char buf[120];
-    std::snprintf(buf, sizeof buf, "centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2],
-                  in[3]);
-    return buf;
+    return trf("centre = (%.6g, %.6g, %.6g), half = %.6g", in[0], in[1], in[2], in[3]);
 }
 
 std::string showCubeOut(const Values& v) {
     if (v.size() < 2) return "-";
-    char buf[80];
-    std::snprintf(buf, sizeof buf, "%d vertices, %d normals", int(v[0]), int(v[1]));
-    std::string s = buf;
+    std::string s = trf("%d vertices, %d normals", int(v[0]), int(v[1]));
     const size_t nv = size_t(v[0]);
     if (v.size() == 2 + 6 * nv && nv >= 4) {
-        s += "; first face:";
+        s += tr("; first face:");
         for (size_t i = 0; i < 4; ++i)
             s += " " + vec({v[2 + 3 * i], v[3 + 3 * i], v[4 + 3 * i]});
     }
@@ -203,13 +196,15 @@ std::vector<Case> gridCases() {
     const std::array<glm::dvec3, 4> centreN = {glm::dvec3(-1, -1, 1), glm::dvec3(1, -1, 1),
                                                glm::dvec3(1, 1, 1), glm::dvec3(-1, 1, 1)};
     const glm::dmat3 id(1.0);
-    cs.push_back(gridCase("corner A (u = v = 0)", {0, 0, 1}, 1, id, centreN, 0, 0));
-    cs.push_back(gridCase("corner C (u = v = 1)", {0, 0, 1}, 1, id, centreN, 1, 1));
-    cs.push_back(gridCase("centre of the face", {0, 0, 1}, 1, id, centreN, 0.5, 0.5));
-    cs.push_back(gridCase("on the edge AB (v = 0, u = 0.25)", {0, 0, 1}, 1, id, centreN, 0.25, 0));
-    cs.push_back(gridCase("on the edge AD (u = 0, v = 0.75)", {0, 0, 1}, 1, id, centreN, 0, 0.75));
+    cs.push_back(gridCase(N_("corner A (u = v = 0)"), {0, 0, 1}, 1, id, centreN, 0, 0));
+    cs.push_back(gridCase(N_("corner C (u = v = 1)"), {0, 0, 1}, 1, id, centreN, 1, 1));
+    cs.push_back(gridCase(N_("centre of the face"), {0, 0, 1}, 1, id, centreN, 0.5, 0.5));
     cs.push_back(
-        gridCase("grid point (1/8, 5/8) of an 8x8 grid", {0, 0, 1}, 1, id, centreN, 0.125, 0.625));
+        gridCase(N_("on the edge AB (v = 0, u = 0.25)"), {0, 0, 1}, 1, id, centreN, 0.25, 0));
+    cs.push_back(
+        gridCase(N_("on the edge AD (u = 0, v = 0.75)"), {0, 0, 1}, 1, id, centreN, 0, 0.75));
+    cs.push_back(gridCase(N_("grid point (1/8, 5/8) of an 8x8 grid"), {0, 0, 1}, 1, id, centreN,
+                          0.125, 0.625));
     std::mt19937 gen(505);
     std::uniform_real_distribution<double> uc(-5, 5), uh(0.1, 3), ua(-3.14159, 3.14159),
         tilt(-0.6, 0.6);
@@ -224,8 +219,8 @@ std::vector<Case> gridCases() {
         cs.push_back(gridCase("seed " + std::to_string(i + 1), {uc(gen), uc(gen), uc(gen)}, uh(gen),
                               rot, n, grid(gen) / 8.0, grid(gen) / 8.0));
     }
-    cs.push_back(
-        gridCase("tiny face (half 1e-3) at 1e2", {100, 50, -70}, 1e-3, id, centreN, 0.375, 0.875));
+    cs.push_back(gridCase(N_("tiny face (half 1e-3) at 1e2"), {100, 50, -70}, 1e-3, id, centreN,
+                          0.375, 0.875));
     return cs;
 }
 

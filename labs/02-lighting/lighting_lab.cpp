@@ -304,15 +304,44 @@ void LightingLab::drawYourCube(bool centreNormals, int n) {
         t ? ex_.call(task, [&] { return make(t); }).value_or(std::nullopt) : std::nullopt;
     std::vector<glm::dvec3> hairs; // pairs: point, normal
     if (mine) {
-        for (size_t f = 0; f + 3 < mine->vertices.size(); f += 4) {
-            std::array<glm::dvec3, 4> c, cn;
+        auto corners = [&](size_t f, std::array<glm::dvec3, 4>& c, std::array<glm::dvec3, 4>& cn) {
             for (size_t k = 0; k < 4; ++k) {
                 c[k] = mine->vertices[f + k];
                 cn[k] = mine->normals[f + k];
             }
+        };
+        auto weights = [n](int i, int j, double(&w)[4]) {
+            const double u = double(i) / double(n), v = double(j) / double(n);
+            w[0] = (1 - u) * (1 - v), w[1] = u * (1 - v), w[2] = u * v, w[3] = (1 - u) * v;
+        };
+        // Your grid normal (task 5) at every grid point of every face, tried once in a child:
+        // one that passes its checks but crashes here fails in the panel, the lab stays up.
+        if (n > 1)
+            ex_.tryInChild("02.grid-normal",
+                           ex::ExerciseMode::inputKey(n, mine->vertices, mine->normals), [&] {
+                               std::array<glm::dvec3, 4> c, cn;
+                               double w[4];
+                               for (size_t f = 0; f + 3 < mine->vertices.size(); f += 4) {
+                                   corners(f, c, cn);
+                                   for (int j = 0; j <= n; ++j)
+                                       for (int i = 0; i <= n; ++i) {
+                                           weights(i, j, w);
+                                           glm::dvec3 p(0.0);
+                                           for (size_t k = 0; k < 4; ++k)
+                                               p += w[k] * c[k];
+                                           try {
+                                               t->gridNormal(c, cn, p);
+                                           } catch (...) {
+                                           }
+                                       }
+                               }
+                           });
+        for (size_t f = 0; f + 3 < mine->vertices.size(); f += 4) {
+            std::array<glm::dvec3, 4> c, cn;
+            corners(f, c, cn);
             auto vertex = [&](int i, int j) {
-                const double u = double(i) / double(n), v = double(j) / double(n);
-                const double w[4] = {(1 - u) * (1 - v), u * (1 - v), u * v, (1 - u) * v};
+                double w[4];
+                weights(i, j, w);
                 glm::dvec3 p(0.0), nn(0.0);
                 for (size_t k = 0; k < 4; ++k) {
                     p += w[k] * c[k];
@@ -321,7 +350,7 @@ void LightingLab::drawYourCube(bool centreNormals, int n) {
                 if (n > 1) {
                     // Your grid normal (task 5) when it can be called, else the lab's own blend.
                     const auto g =
-                        ex_.call("02.grid-normal", [&] { return t->gridNormal(c, cn, p); });
+                        ex_.callTried("02.grid-normal", [&] { return t->gridNormal(c, cn, p); });
                     nn = g ? *g : glm::normalize(nn);
                 }
                 glNormal3d(nn.x, nn.y, nn.z);

@@ -39,9 +39,7 @@ struct Lcg {
 };
 
 std::string fmtVec(const glm::dvec3& v) {
-    char b[96];
-    std::snprintf(b, sizeof b, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
-    return b;
+    return ex::showNumbers({v.x, v.y, v.z});
 }
 glm::dvec3 v3(const Values& v, size_t k) {
     return {v.at(k), v.at(k + 1), v.at(k + 2)};
@@ -49,11 +47,11 @@ glm::dvec3 v3(const Values& v, size_t k) {
 
 // ----- ③ frustum: in = fovy, aspect, near, far; out = the six, then GL's two matrices -----
 std::vector<Case> frustumCases() {
-    std::vector<Case> cs = {{"the lab's view: 50°, 4:3, near 1, far 60", {50, 4.0 / 3, 1, 60}},
-                            {"90°, square", {90, 1, 0.5, 100}},
-                            {"narrow 10°, wide screen 16:9", {10, 16.0 / 9, 2, 20}},
-                            {"wide 150°, tall window 0.5", {150, 0.5, 0.1, 10}},
-                            {"a far near plane 25", {60, 1.25, 25, 200}}};
+    std::vector<Case> cs = {{N_("the lab's view: 50°, 4:3, near 1, far 60"), {50, 4.0 / 3, 1, 60}},
+                            {N_("90°, square"), {90, 1, 0.5, 100}},
+                            {N_("narrow 10°, wide screen 16:9"), {10, 16.0 / 9, 2, 20}},
+                            {N_("wide 150°, tall window 0.5"), {150, 0.5, 0.1, 10}},
+                            {N_("a far near plane 25"), {60, 1.25, 25, 200}}};
     Lcg g{31};
     for (int i = 1; i <= 4; ++i) {
         const double n = g.in(0.1, 10);
@@ -122,13 +120,15 @@ std::vector<Case> cameraCases() {
                      const glm::dvec3& u, double step) {
         cs.push_back({std::move(name), {e.x, e.y, e.z, c.x, c.y, c.z, u.x, u.y, u.z, step}});
     };
-    add("the lab's camera, one step in", {0, 6.34, 7.59}, {0, 0, -1}, {0, 1, 0}, 1);
-    add("the lab's camera, one step out", {0, 6.34, 7.59}, {0, 0, -1}, {0, 1, 0}, -1);
-    add("far from the origin, step 2.5 in", {105, 20, -40}, {100, 18, -30}, {0, 1, 0}, 2.5);
-    add("a step past the centre: the eye stops at distance 1", {0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 7);
-    add("a step out past 60: the eye stops at distance 60", {0, 3, 55}, {0, 3, 0}, {0, 1, 0}, -20);
-    add("already at distance 1, one step in: it stays", {1, 0, 0}, {0, 0, 0}, {0, 0, 1}, 1);
-    add("up not perpendicular to the line of sight", {3, 4, 5}, {0, 0, 0}, {0.2, 1, 0.1}, 0.5);
+    add(N_("the lab's camera, one step in"), {0, 6.34, 7.59}, {0, 0, -1}, {0, 1, 0}, 1);
+    add(N_("the lab's camera, one step out"), {0, 6.34, 7.59}, {0, 0, -1}, {0, 1, 0}, -1);
+    add(N_("far from the origin, step 2.5 in"), {105, 20, -40}, {100, 18, -30}, {0, 1, 0}, 2.5);
+    add(N_("a step past the centre: the eye stops at distance 1"), {0, 0, 5}, {0, 0, 0}, {0, 1, 0},
+        7);
+    add(N_("a step out past 60: the eye stops at distance 60"), {0, 3, 55}, {0, 3, 0}, {0, 1, 0},
+        -20);
+    add(N_("already at distance 1, one step in: it stays"), {1, 0, 0}, {0, 0, 0}, {0, 0, 1}, 1);
+    add(N_("up not perpendicular to the line of sight"), {3, 4, 5}, {0, 0, 0}, {0.2, 1, 0.1}, 0.5);
     Lcg g{33};
     for (int i = 1; i <= 6; ++i) {
         const glm::dvec3 c(g.in(-10, 10), g.in(-10, 10), g.in(-10, 10));
@@ -193,11 +193,11 @@ std::vector<Case> mirrorCases() {
     };
     const glm::mat4 labCamera =
         glm::lookAt(glm::vec3(0, 6.34f, 7.59f), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0));
-    add("the lab's wall z = -6 under the identity", -6.0f, glm::mat4(1.0f));
-    add("the lab's wall z = -6 under the lab's camera", -6.0f, labCamera);
-    add("a wall through the origin z = 0", 0.0f, labCamera);
-    add("a wall behind the viewer z = 3.5", 3.5f, glm::mat4(1.0f));
-    add("a far wall z = -100", -100.0f, labCamera);
+    add(N_("the lab's wall z = -6 under the identity"), -6.0f, glm::mat4(1.0f));
+    add(N_("the lab's wall z = -6 under the lab's camera"), -6.0f, labCamera);
+    add(N_("a wall through the origin z = 0"), 0.0f, labCamera);
+    add(N_("a wall behind the viewer z = 3.5"), 3.5f, glm::mat4(1.0f));
+    add(N_("a far wall z = -100"), -100.0f, labCamera);
     Lcg g{37};
     for (int i = 1; i <= 3; ++i) {
         const glm::mat4 cam =

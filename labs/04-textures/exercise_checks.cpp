@@ -60,9 +60,7 @@ bool unpackMesh(const Values& v, Mesh& m) {
     return true;
 }
 std::string fmtVec(const glm::dvec3& p) {
-    char b[96];
-    std::snprintf(b, sizeof b, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
-    return b;
+    return ex::showNumbers({p.x, p.y, p.z});
 }
 std::string showMesh(const Values& out) {
     if (out.empty()) return std::string(tr("(judged from the input: nothing recorded)"));
@@ -155,17 +153,17 @@ std::vector<Case> texelCases() {
     auto add = [&cs](std::string n, double s, int size, bool repeat) {
         cs.push_back({std::move(n), {s, double(size), repeat ? 1.0 : 0.0}});
     };
-    add("repeat, s = 0.3 of 8 texels", 0.3, 8, true);
-    add("repeat, s = 2.3 (the third copy)", 2.3, 8, true);
-    add("repeat, s = -0.25 (fraction 0.75)", -0.25, 8, true);
-    add("repeat, s = -2.99 (fraction 0.01)", -2.99, 16, true);
-    add("repeat, s = 1 exactly (the first texel again)", 1.0, 8, true);
-    add("repeat, s just below 1", 1 - 1e-16, 4096, true);
-    add("clamp, s = 1 exactly (the last texel)", 1.0, 8, false);
-    add("clamp, s = 1.7", 1.7, 8, false);
-    add("clamp, s = -0.4", -0.4, 8, false);
-    add("clamp, s = 0.5 of 1 texel", 0.5, 1, false);
-    add("repeat, s on a texel edge (0.375 of 8)", 0.375, 8, true);
+    add(N_("repeat, s = 0.3 of 8 texels"), 0.3, 8, true);
+    add(N_("repeat, s = 2.3 (the third copy)"), 2.3, 8, true);
+    add(N_("repeat, s = -0.25 (fraction 0.75)"), -0.25, 8, true);
+    add(N_("repeat, s = -2.99 (fraction 0.01)"), -2.99, 16, true);
+    add(N_("repeat, s = 1 exactly (the first texel again)"), 1.0, 8, true);
+    add(N_("repeat, s just below 1"), 1 - 1e-16, 4096, true);
+    add(N_("clamp, s = 1 exactly (the last texel)"), 1.0, 8, false);
+    add(N_("clamp, s = 1.7"), 1.7, 8, false);
+    add(N_("clamp, s = -0.4"), -0.4, 8, false);
+    add(N_("clamp, s = 0.5 of 1 texel"), 0.5, 1, false);
+    add(N_("repeat, s on a texel edge (0.375 of 8)"), 0.375, 8, true);
     unsigned g = 3u;
     auto rnd = [&g] {
         g = g * 1664525u + 1013904223u;
@@ -311,13 +309,13 @@ std::vector<Case> mapCases() {
         const glm::dvec3 u = glm::normalize(n);
         cs.push_back({std::move(name), {p.x, p.y, p.z, u.x, u.y, u.z}});
     };
-    add("facing the eye on the axis: the disc's centre", {0, 0, -5}, {0, 0, 1});
-    add("off the axis, facing the eye", {1, 2, -6}, {0, 0, 1});
-    add("normal tilted 45° to the side", {0, 0, -3}, {1, 0, 1});
-    add("grazing: normal across the line of sight", {0.5, 0, -4}, {0, 1, 0});
-    add("far vertex, |p| = 900", {300, -200, -800}, {0.2, 0.3, 0.9});
-    add("near the blind spot (m = 0.1)", {0, 0, -2}, {0.0500, 0, 0.99875});
-    add("the blind spot: f = (0, 0, -1), any point of the rim", {0, 0, -2}, {1, 0, 0});
+    add(N_("facing the eye on the axis: the disc's centre"), {0, 0, -5}, {0, 0, 1});
+    add(N_("off the axis, facing the eye"), {1, 2, -6}, {0, 0, 1});
+    add(N_("normal tilted 45° to the side"), {0, 0, -3}, {1, 0, 1});
+    add(N_("grazing: normal across the line of sight"), {0.5, 0, -4}, {0, 1, 0});
+    add(N_("far vertex, |p| = 900"), {300, -200, -800}, {0.2, 0.3, 0.9});
+    add(N_("near the blind spot (m = 0.1)"), {0, 0, -2}, {0.0500, 0, 0.99875});
+    add(N_("the blind spot: f = (0, 0, -1), any point of the rim"), {0, 0, -2}, {1, 0, 0});
     unsigned s = 4u;
     auto rnd = [&s] {
         s = s * 1664525u + 1013904223u;
@@ -414,11 +412,11 @@ const ex::LabExercises& exercises() {
         sphere.title = N_("Sphere: vertices, normals, texture coordinates by hand");
         sphere.section = "§2.4 task 4";
         sphere.cases = [] {
-            return std::vector<Case>{{"radius 1, 12 slices, 8 stacks", {1, 12, 8}},
-                                     {"the coarsest: 3 slices, 2 stacks", {2.5, 3, 2}},
-                                     {"radius 0.1, 32 x 16", {0.1, 32, 16}},
-                                     {"radius 10, odd grid 7 x 5", {10, 7, 5}},
-                                     {"fine: 96 x 64", {1.5, 96, 64}}};
+            return std::vector<Case>{{N_("radius 1, 12 slices, 8 stacks"), {1, 12, 8}},
+                                     {N_("the coarsest: 3 slices, 2 stacks"), {2.5, 3, 2}},
+                                     {N_("radius 0.1, 32 x 16"), {0.1, 32, 16}},
+                                     {N_("radius 10, odd grid 7 x 5"), {10, 7, 5}},
+                                     {N_("fine: 96 x 64"), {1.5, 96, 64}}};
         };
         sphere.run = [](const void* table, const Values& in) {
             return packMesh(static_cast<const Table*>(table)->sphereMesh(in.at(0), int(in.at(1)),
@@ -436,11 +434,11 @@ const ex::LabExercises& exercises() {
         torus.title = N_("Torus: vertices, normals, texture coordinates by hand");
         torus.section = "§2.4 task 4";
         torus.cases = [] {
-            return std::vector<Case>{{"R 1, r 0.3, 12 x 8", {1, 0.3, 12, 8}},
-                                     {"the coarsest: 3 x 3", {2, 0.5, 3, 3}},
-                                     {"a fat torus: R 5, r 4.9, 24 x 16", {5, 4.9, 24, 16}},
-                                     {"a thin one: R 1, r 0.01, 16 x 6", {1, 0.01, 16, 6}},
-                                     {"fine: 64 x 48", {3, 1, 64, 48}}};
+            return std::vector<Case>{{N_("R 1, r 0.3, 12 x 8"), {1, 0.3, 12, 8}},
+                                     {N_("the coarsest: 3 x 3"), {2, 0.5, 3, 3}},
+                                     {N_("a fat torus: R 5, r 4.9, 24 x 16"), {5, 4.9, 24, 16}},
+                                     {N_("a thin one: R 1, r 0.01, 16 x 6"), {1, 0.01, 16, 6}},
+                                     {N_("fine: 64 x 48"), {3, 1, 64, 48}}};
         };
         torus.run = [](const void* table, const Values& in) {
             return packMesh(static_cast<const Table*>(table)->torusMesh(

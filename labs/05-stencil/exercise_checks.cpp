@@ -55,11 +55,12 @@ struct Lcg {
 
 // ----- ③ reflection: in = plane -----
 std::vector<Case> reflectionCases() {
-    std::vector<Case> cs = {{"the rectangular mirror's plane z = -2.98", {0, 0, 1, -kMirrorZ}},
-                            {"the back wall z = -3, normal of length 5", {0, 0, 5, -5 * kWallZ}},
-                            {"a plane through the origin, y = x", {1, -1, 0, 0}},
-                            {"a tilted plane far out (D = 40)", {1, 2, 2, 40}},
-                            {"a tiny normal (1e-6 long)", {1e-6, 0, 0, -2e-6}}};
+    std::vector<Case> cs = {
+        {N_("the rectangular mirror's plane z = -2.98"), {0, 0, 1, -kMirrorZ}},
+        {N_("the back wall z = -3, normal of length 5"), {0, 0, 5, -5 * kWallZ}},
+        {N_("a plane through the origin, y = x"), {1, -1, 0, 0}},
+        {N_("a tilted plane far out (D = 40)"), {1, 2, 2, 40}},
+        {N_("a tiny normal (1e-6 long)"), {1e-6, 0, 0, -2e-6}}};
     Lcg g{51};
     for (int i = 1; i <= 6; ++i)
         cs.push_back(
@@ -68,13 +69,13 @@ std::vector<Case> reflectionCases() {
 }
 
 Verdict reflectionCompare(const Values& in, const Values& expected, const Values& got) {
-    for (double v : got)
-        if (!std::isfinite(v)) return Verdict::fail(tr("the matrix holds a non-number"));
-    if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
+    if (const auto v = ex::compareHomogeneous(
+            expected, got, 4, kMatrixTol, tr("the matrix holds a non-number"),
+            tr("transposed: OpenGL reads m[column][row] (column-major); the "
+               "translation -2d·n belongs in the last column"),
+            tr("the zero matrix is no map at all")))
+        return *v;
     const glm::dmat4 g = unpack(got), e = unpack(expected);
-    if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
-        return Verdict::fail(tr("transposed: OpenGL reads m[column][row] (column-major); the "
-                                "translation -2d·n belongs in the last column"));
     // Where does the matrix put a point of the plane and the origin?
     const glm::dvec3 n(in.at(0), in.at(1), in.at(2));
     const double len = glm::length(n);
@@ -103,7 +104,7 @@ std::vector<Case> shadowCases() {
     auto add = [&cs](std::string name, const glm::dvec4& pl, const glm::dvec4& l) {
         cs.push_back({std::move(name), {pl.x, pl.y, pl.z, pl.w, l.x, l.y, l.z, l.w}});
     };
-    add("the floor y = 0, the lab's light", {0, 1, 0, 0}, light);
+    add(N_("the floor y = 0, the lab's light"), {0, 1, 0, 0}, light);
     for (int k = 1; k <= 4; ++k) {
         add("tread " + std::to_string(k) + ": y = " + std::to_string(k * kStepHeight).substr(0, 3),
             {0, 1, 0, -k * kStepHeight}, light);
@@ -111,12 +112,12 @@ std::vector<Case> shadowCases() {
         add("riser " + std::to_string(k) + ": x = " + std::to_string(x).substr(0, 4), {-1, 0, 0, x},
             light);
     }
-    add("the stairs' front side z = 1.2", {0, 0, 1, -kStairHalfDepth}, light);
-    add("the back wall z = -3", {0, 0, 1, -kWallZ}, light);
-    add("a light at infinity (w = 0) over the floor", {0, 1, 0, 0}, {1, 3, 0.5, 0});
-    add("the light ON the plane (pi·L = 0): the shadow collapses", {0, 1, 0, -5}, light);
-    add("the light below the plane (pi·L < 0)", {0, 1, 0, -6}, light);
-    add("a light at infinity parallel to the plane", {0, 1, 0, 0}, {1, 0, 0.5, 0});
+    add(N_("the stairs' front side z = 1.2"), {0, 0, 1, -kStairHalfDepth}, light);
+    add(N_("the back wall z = -3"), {0, 0, 1, -kWallZ}, light);
+    add(N_("a light at infinity (w = 0) over the floor"), {0, 1, 0, 0}, {1, 3, 0.5, 0});
+    add(N_("the light ON the plane (pi·L = 0): the shadow collapses"), {0, 1, 0, -5}, light);
+    add(N_("the light below the plane (pi·L < 0)"), {0, 1, 0, -6}, light);
+    add(N_("a light at infinity parallel to the plane"), {0, 1, 0, 0}, {1, 0, 0.5, 0});
     Lcg g{55};
     for (int i = 1; i <= 6; ++i)
         add("seed " + std::to_string(i), {g.in(-3, 3), g.in(-3, 3), g.in(-3, 3), g.in(-5, 5)},
@@ -125,20 +126,14 @@ std::vector<Case> shadowCases() {
 }
 
 Verdict shadowCompare(const Values& in, const Values& expected, const Values& got) {
-    for (double v : got)
-        if (!std::isfinite(v)) return Verdict::fail(tr("the matrix holds a non-number"));
-    if (ex::equalUpToFactor(expected, got, kMatrixTol)) return Verdict::pass();
-    const glm::dmat4 g = unpack(got);
-    if (ex::equalUpToFactor(expected, pack(glm::transpose(g)), kMatrixTol))
-        return Verdict::fail(
+    if (const auto v = ex::compareHomogeneous(
+            expected, got, 4, kMatrixTol, tr("the matrix holds a non-number"),
             tr("transposed: OpenGL reads m[column][row]; M[c][r] = (pi·L)delta_rc - "
-               "L_r pi_c"));
-    bool zero = true;
-    for (double v : got)
-        zero = zero && v == 0;
-    if (zero)
-        return Verdict::fail(tr("the zero matrix is no map at all: with the light on the plane "
-                                "M = -L·pi^T"));
+               "L_r pi_c"),
+            tr("the zero matrix is no map at all: with the light on the plane "
+               "M = -L·pi^T")))
+        return *v;
+    const glm::dmat4 g = unpack(got);
     const glm::dvec4 pl(in.at(0), in.at(1), in.at(2), in.at(3)),
         l(in.at(4), in.at(5), in.at(6), in.at(7));
     if (std::fabs(glm::dot(pl, l)) > 1e-9 * glm::length(pl) * glm::length(l)) {
@@ -156,13 +151,14 @@ Verdict shadowCompare(const Values& in, const Values& expected, const Values& go
 
 // ----- ⑤ ellipse: in = cx, cy, a, b, z, n -----
 std::vector<Case> ellipseCases() {
-    std::vector<Case> cs = {{"the lab's elliptical mirror, 64 points",
-                             {kEllipseMirror[0], kEllipseMirror[1], kEllipseMirror[2],
-                              kEllipseMirror[3], kMirrorZ, 64}},
-                            {"the fewest: 8 points", {0, 0, 2, 1, 0, 8}},
-                            {"a circle (a = b), 100 points", {1, -1, 0.5, 0.5, 3, 100}},
-                            {"a thin ellipse 100 x 0.01, 1024 points", {0, 0, 100, 0.01, -1, 1024}},
-                            {"taller than wide, 33 points", {-2, 5, 0.3, 4, -2.98, 33}}};
+    std::vector<Case> cs = {
+        {N_("the lab's elliptical mirror, 64 points"),
+         {kEllipseMirror[0], kEllipseMirror[1], kEllipseMirror[2], kEllipseMirror[3], kMirrorZ,
+          64}},
+        {N_("the fewest: 8 points"), {0, 0, 2, 1, 0, 8}},
+        {N_("a circle (a = b), 100 points"), {1, -1, 0.5, 0.5, 3, 100}},
+        {N_("a thin ellipse 100 x 0.01, 1024 points"), {0, 0, 100, 0.01, -1, 1024}},
+        {N_("taller than wide, 33 points"), {-2, 5, 0.3, 4, -2.98, 33}}};
     Lcg g{57};
     for (int i = 1; i <= 4; ++i)
         cs.push_back({"seed " + std::to_string(i),

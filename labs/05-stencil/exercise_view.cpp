@@ -9,8 +9,9 @@ std::optional<glm::dmat4> exerciseReflection(const ex::ExerciseMode& mode, const
                                              const std::optional<glm::dmat4>& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
-    const auto m = mode.call("05.reflection",
-                             [&] { return t->reflectionMatrix(glm::dvec4(plane.n, plane.d)); });
+    const auto m = mode.call(
+        "05.reflection", [&] { return t->reflectionMatrix(glm::dvec4(plane.n, plane.d)); }, plane.n,
+        plane.d);
     return m ? m : reference;
 }
 
@@ -19,9 +20,10 @@ std::optional<glm::dmat4> exerciseShadow(const ex::ExerciseMode& mode, const Pla
                                          const std::optional<glm::dmat4>& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
-    const auto m = mode.call("05.shadow", [&] {
-        return t->shadowMatrix(glm::dvec4(plane.n, plane.d), glm::dvec4(light, 1.0));
-    });
+    const auto m = mode.call(
+        "05.shadow",
+        [&] { return t->shadowMatrix(glm::dvec4(plane.n, plane.d), glm::dvec4(light, 1.0)); },
+        plane.n, plane.d, light);
     return m ? m : reference;
 }
 
@@ -30,7 +32,8 @@ std::vector<glm::dvec3> exerciseEllipse(const ex::ExerciseMode& mode, const glm:
                                         const std::vector<glm::dvec3>& reference) {
     const auto* t = mode.on() ? mode.studentTable<lab05::Table>() : nullptr;
     if (!t) return reference;
-    const auto e = mode.call("05.ellipse", [&] { return t->ellipseOutline(centre, a, b, z, n); });
+    const auto e = mode.call(
+        "05.ellipse", [&] { return t->ellipseOutline(centre, a, b, z, n); }, centre, a, b, z, n);
     return e && e->size() >= 3 ? *e : reference;
 }
 

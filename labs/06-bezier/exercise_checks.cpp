@@ -17,6 +17,10 @@ const void* wbExerciseReference_lab06();
 namespace wb::lab06 {
 namespace {
 
+// Words of generated case names that caseLabel() (exercise_run.h) translates around their
+// number: "seed 3: degree 4" reads "сид 3: степень 4".
+[[maybe_unused]] constexpr const char* kCaseNamePieces[] = {N_("degree %s"), N_("radius %s")};
+
 using ex::Case;
 using ex::Values;
 using ex::Verdict;
@@ -145,12 +149,12 @@ std::vector<Case> pointCases() {
         cs.push_back({std::move(n), in});
     };
     const Curve cubic = {{0, 0, 0}, {1, 2, 0}, {3, 2, 1}, {4, 0, -1}};
-    add("cubic at u = 0.3", 0.3, cubic);
-    add("cubic at u = 0 (q = p0 exactly)", 0.0, cubic);
-    add("cubic at u = 1 (q = p3 exactly)", 1.0, cubic);
-    add("cubic at u = 1e-12", 1e-12, cubic);
-    add("a line (degree 1) at u = 0.25", 0.25, {{1, 1, 1}, {5, -3, 2}});
-    add("one point (degree 0)", 0.6, {{2, 3, 4}});
+    add(N_("cubic at u = 0.3"), 0.3, cubic);
+    add(N_("cubic at u = 0 (q = p0 exactly)"), 0.0, cubic);
+    add(N_("cubic at u = 1 (q = p3 exactly)"), 1.0, cubic);
+    add(N_("cubic at u = 1e-12"), 1e-12, cubic);
+    add(N_("a line (degree 1) at u = 0.25"), 0.25, {{1, 1, 1}, {5, -3, 2}});
+    add(N_("one point (degree 0)"), 0.6, {{2, 3, 4}});
     unsigned s = 10u;
     auto rnd = [&s] {
         s = s * 1664525u + 1013904223u;
@@ -165,7 +169,7 @@ std::vector<Case> pointCases() {
     Curve high(21);
     for (size_t i = 0; i < high.size(); ++i)
         high[i] = {std::cos(0.3 * double(i)) * 1e3, std::sin(0.7 * double(i)) * 1e3, double(i)};
-    add("degree 20, coordinates ~1e3, u = 0.7", 0.7, high);
+    add(N_("degree 20, coordinates ~1e3, u = 0.7"), 0.7, high);
     return cs;
 }
 
@@ -201,10 +205,10 @@ Verdict pointCompare(const Values& in, const Values& expected, const Values& got
 
 // ----- ④ circle -----
 std::vector<Case> circleCases() {
-    std::vector<Case> cs = {{"radius 1", {1.0}},
-                            {"radius 2.5 (the handle scales with the radius)", {2.5}},
-                            {"radius 0.1 (smallest)", {0.1}},
-                            {"radius 10 (largest)", {10.0}}};
+    std::vector<Case> cs = {{N_("radius 1"), {1.0}},
+                            {N_("radius 2.5 (the handle scales with the radius)"), {2.5}},
+                            {N_("radius 0.1 (smallest)"), {0.1}},
+                            {N_("radius 10 (largest)"), {10.0}}};
     // Seeded radii in 0.1..10 (a fixed LCG: the same cases on every machine).
     unsigned s = 6u;
     for (int i = 0; i < 4; ++i) {
@@ -387,7 +391,7 @@ const ex::LabExercises& exercises() {
         sphere.grade = 5;
         sphere.title = N_("A sphere from two Bezier patches");
         sphere.section = "§2.6 task 5; §1.10.4";
-        sphere.cases = [] { return std::vector<Case>{{"the two patches", {}}}; };
+        sphere.cases = [] { return std::vector<Case>{{N_("the two Bezier patches"), {}}}; };
         sphere.run = [](const void* table, const Values&) {
             return packPatches(static_cast<const Table*>(table)->spherePatches());
         };

@@ -38,9 +38,7 @@ void put(Values& v, const glm::dvec3& p) {
     v.insert(v.end(), {p.x, p.y, p.z});
 }
 std::string fmtVec(const glm::dvec3& v) {
-    char b[128];
-    std::snprintf(b, sizeof b, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
-    return b;
+    return ex::showNumbers({v.x, v.y, v.z});
 }
 
 // A seeded generator (the same cases on every machine and compiler).
@@ -85,27 +83,27 @@ std::vector<Case> intersectCases() {
         cs.push_back(rayCase("seed " + std::to_string(i), o, target - o, c, r));
     }
     const glm::dvec3 c0(1, 2, 3);
-    cs.push_back(rayCase("origin inside the sphere (the far side is the hit)",
+    cs.push_back(rayCase(N_("origin inside the sphere (the far side is the hit)"),
                          c0 + glm::dvec3(0.3, 0, 0), {0.2, 1, 0.1}, c0, 1.5));
-    cs.push_back(rayCase("sphere behind the origin (both roots < 0)", c0 + glm::dvec3(5, 0, 0),
+    cs.push_back(rayCase(N_("sphere behind the origin (both roots < 0)"), c0 + glm::dvec3(5, 0, 0),
                          {1, 0.1, 0}, c0, 1.5));
-    cs.push_back(
-        rayCase("ray pointing away, line through the centre", {0, 0, 5}, {0, 0, 1}, {0, 0, 0}, 1));
-    cs.push_back(rayCase("origin 1e6 away from a unit sphere", {1e6, 3e5, -2e5},
+    cs.push_back(rayCase(N_("ray pointing away, line through the centre"), {0, 0, 5}, {0, 0, 1},
+                         {0, 0, 0}, 1));
+    cs.push_back(rayCase(N_("origin 1e6 away from a unit sphere"), {1e6, 3e5, -2e5},
                          glm::dvec3(0.2, -0.1, 0.3) - glm::dvec3(1e6, 3e5, -2e5), {0, 0, 0}, 1));
-    cs.push_back(rayCase("hit at t = 1e-7 (origin just outside)", {0, 0, 2 + 1e-7}, {0, 0, -1},
+    cs.push_back(rayCase(N_("hit at t = 1e-7 (origin just outside)"), {0, 0, 2 + 1e-7}, {0, 0, -1},
                          {0, 0, 0}, 2));
-    cs.push_back(rayCase("hit at t = 1e7", {3, -1, 1e7 + 4}, {0, 0, -1}, {3, -1, 0}, 4));
-    cs.push_back(rayCase("grazing: the line passes 1e-6·r inside the rim", {-10, 1 - 1e-6, 0},
+    cs.push_back(rayCase(N_("hit at t = 1e7"), {3, -1, 1e7 + 4}, {0, 0, -1}, {3, -1, 0}, 4));
+    cs.push_back(rayCase(N_("grazing: the line passes 1e-6·r inside the rim"), {-10, 1 - 1e-6, 0},
                          {1, 0, 0}, {0, 0, 0}, 1, kGrazing));
-    cs.push_back(rayCase("grazing: the line passes 1e-6·r outside the rim (a miss)",
+    cs.push_back(rayCase(N_("grazing: the line passes 1e-6·r outside the rim (a miss)"),
                          {-10, 1 + 1e-6, 0}, {1, 0, 0}, {0, 0, 0}, 1));
-    cs.push_back(rayCase("tangent ray (either answer is right)", {-10, 1, 0}, {1, 0, 0}, {0, 0, 0},
-                         1, kTangent));
+    cs.push_back(rayCase(N_("tangent ray (either answer is right)"), {-10, 1, 0}, {1, 0, 0},
+                         {0, 0, 0}, 1, kTangent));
+    cs.push_back(rayCase(N_("small sphere, r = 1e-3"), {0.01, 0.02, 1}, {-0.01, -0.02, -1},
+                         {0, 0, 0}, 1e-3));
     cs.push_back(
-        rayCase("small sphere, r = 1e-3", {0.01, 0.02, 1}, {-0.01, -0.02, -1}, {0, 0, 0}, 1e-3));
-    cs.push_back(
-        rayCase("large sphere, r = 1e3", {5000, 10, 20}, {-1, 0.05, 0.01}, {0, 0, 0}, 1e3));
+        rayCase(N_("large sphere, r = 1e3"), {5000, 10, 20}, {-1, 0.05, 0.01}, {0, 0, 0}, 1e3));
     return cs;
 }
 
@@ -175,13 +173,13 @@ std::vector<Case> normalCases() {
         in.push_back(r);
         cs.push_back({std::move(n), in});
     };
-    add("unit sphere at the origin", {1, 2, 2}, {0, 0, 0}, 1);
+    add(N_("unit sphere at the origin"), {1, 2, 2}, {0, 0, 0}, 1);
     Lcg g{11};
     for (int i = 1; i <= 6; ++i)
         add("seed " + std::to_string(i), g.unit(), {g.in(-5, 5), g.in(-5, 5), g.in(-5, 5)},
             g.in(0.2, 4));
-    add("radius 1e-3", {0, -1, 0}, {2, 2, 2}, 1e-3);
-    add("radius 1e3", {-3, 4, 0}, {10, 0, 0}, 1e3);
+    add(N_("radius 1e-3"), {0, -1, 0}, {2, 2, 2}, 1e-3);
+    add(N_("radius 1e3"), {-3, 4, 0}, {10, 0, 0}, 1e3);
     return cs;
 }
 
@@ -310,9 +308,10 @@ std::vector<Case> shadeCases() {
     seed.s.material = {kGreen, 0.5, 0.5, 0.5, 3};
     seed.s.lightPos = {0, 0, 60};
     cs.push_back(
-        {"seed 000 part 1: P2 in the shadow of rectangle 1 -> (10,117,10)", packShade(seed)});
+        {N_("seed 000 part 1: P2 in the shadow of rectangle 1 -> (10,117,10)"), packShade(seed)});
     seed.kind = kSeedLit;
-    cs.push_back({"seed 000 part 1: P2 lit, rectangle 1 removed -> (50,197,50)", packShade(seed)});
+    cs.push_back(
+        {N_("seed 000 part 1: P2 lit, rectangle 1 removed -> (50,197,50)"), packShade(seed)});
     Lcg g{23};
     for (int i = 1; i <= 8; ++i) {
         ShadeCase c;
@@ -340,7 +339,8 @@ std::vector<Case> shadeCases() {
         const glm::dvec3 side = glm::normalize(glm::cross(l, g.unit()));
         c.blockers.push_back(glm::dvec4(i % 2 ? mid : mid + 6.0 * side, 1.0));
         c.kts.push_back(i % 4 == 1 ? 0.0 : 0.5);
-        cs.push_back({"seed " + std::to_string(i) + (i % 2 ? " (a blocker on the feeler)" : ""),
+        cs.push_back({"seed " + std::to_string(i) +
+                          (i % 2 ? std::string(" ") + N_("(a blocker on the feeler)") : ""),
                       packShade(c)});
     }
     // The light behind the surface (L·N < 0) while n = normalize(L - V) still faces N.
@@ -351,7 +351,7 @@ std::vector<Case> shadeCases() {
     b.s.material = {{200, 120, 40}, 0.3, 0.7, 0.8, 2};
     b.s.lightPos = glm::dvec3(0.8, 0, -0.6) * 20.0;
     b.s.ambient = {60, 60, 60};
-    cs.push_back({"light behind the surface (L·N < 0): ambient only", packShade(b)});
+    cs.push_back({N_("light behind the surface (L·N < 0): ambient only"), packShade(b)});
     return cs;
 }
 
@@ -453,11 +453,11 @@ std::vector<Case> reflectCases() {
         in.push_back(kind);
         cs.push_back({std::move(name), in});
     };
-    add("seed 000 part 2: the reflected ray at P2 and the colour (168,233,86) at P(50,0)",
+    add(N_("seed 000 part 2: the reflected ray at P2 and the colour (168,233,86) at P(50,0)"),
         rt::ScreenCamera::seed000().rayThroughScreen(50, 0).direction, {0, 0, 1}, 1);
-    add("straight down onto the plane (r = -d)", {0, 0, -1}, {0, 0, 1});
-    add("grazing: d along the surface (r = d)", {1, 0, 0}, {0, 0, 1});
-    add("the normal on the far side (n·d > 0): the same mirror", {0.6, 0, 0.8}, {0, 0, 1});
+    add(N_("straight down onto the plane (r = -d)"), {0, 0, -1}, {0, 0, 1});
+    add(N_("grazing: d along the surface (r = d)"), {1, 0, 0}, {0, 0, 1});
+    add(N_("the normal on the far side (n·d > 0): the same mirror"), {0.6, 0, 0.8}, {0, 0, 1});
     Lcg g{31};
     for (int i = 1; i <= 6; ++i) {
         const glm::dvec3 n = g.unit();

@@ -108,12 +108,41 @@ ExerciseTrace traceExercise(const ex::ExerciseMode& mode, int width, int height)
     // A step is yours when its check let it be called (passing or failing: a failing step
     // shows what it does); the others are the reference's.
     auto pick = [&](const char* id, const char* name) {
-        const bool yours = mine && mode.call(id, [] { return true; }).has_value();
+        const bool yours = mine && mode.callTried(id, [] { return true; }).has_value();
         if (yours) t.usedYours += std::string(t.usedYours.empty() ? "" : ", ") + name;
         return yours ? mine : ref;
     };
-    const Steps s{pick("07.intersect", "intersectSphere"), pick("07.normal", "sphereNormal"),
-                  pick("07.shade", "shade"), pick("07.reflect", "reflectDirection")};
+    Steps s{pick("07.intersect", "intersectSphere"), pick("07.normal", "sphereNormal"),
+            pick("07.shade", "shade"), pick("07.reflect", "reflectDirection")};
+    // Each step of yours traces the whole picture once in a child, with the reference's other
+    // steps (in a handout: with yours), before the lab calls it: a step that passes its checks
+    // but crashes or loops on one of these rays fails in the panel and the reference's stands
+    // in; then all yours together (a NaN of one step crashing another).
+    if (mine) {
+        const uint64_t key = ex::ExerciseMode::inputKey(width, height);
+        std::vector<uint8_t> scratch;
+        const char* ids[4] = {"07.intersect", "07.normal", "07.shade", "07.reflect"};
+        const lab07::Table** steps[4] = {&s.hit, &s.normal, &s.shade, &s.reflect};
+        bool allTried = true;
+        for (int i = 0; i < 4; ++i) {
+            if (*steps[i] != mine) continue;
+            Steps one = ref ? Steps{ref, ref, ref, ref} : s;
+            const lab07::Table** oneSteps[4] = {&one.hit, &one.normal, &one.shade, &one.reflect};
+            *oneSteps[i] = mine;
+            if (!mode.tryInChild(ids[i], key, [&] { render(one, width, height, scratch); })) {
+                *steps[i] = ref;
+                allTried = false;
+            }
+        }
+        if (allTried &&
+            !mode.tryInChild("07.picture", key, [&] { render(s, width, height, scratch); }))
+            s = Steps{ref, ref, ref, ref};
+        const char* names[4] = {"intersectSphere", "sphereNormal", "shade", "reflectDirection"};
+        t.usedYours.clear();
+        for (int i = 0; i < 4; ++i)
+            if (*steps[i] == mine)
+                t.usedYours += std::string(t.usedYours.empty() ? "" : ", ") + names[i];
+    }
     // In a handout a step of yours that is not done has no stand-in: no picture until all are.
     if (s.hit && s.normal && s.shade && s.reflect) render(s, width, height, t.mine);
     if (ref) render({ref, ref, ref, ref}, width, height, t.reference);

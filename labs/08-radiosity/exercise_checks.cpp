@@ -21,6 +21,10 @@ const void* wbExerciseReference_lab08();
 namespace wb::lab08 {
 namespace {
 
+// Words of generated case names that caseLabel() (exercise_run.h) translates around their
+// number: "seed 3: 5 patches".
+[[maybe_unused]] constexpr const char* kCaseNamePieces[] = {N_("%s patches")};
+
 using ex::Case;
 using ex::Values;
 using ex::Verdict;
@@ -81,19 +85,23 @@ std::vector<Case> ffCases() {
         in.insert(in.end(), {a, c});
         cs.push_back({std::move(n), in});
     };
-    add("opposed unit squares 10 apart (the exact F differs by 0.67 %)", square({0, 0, 0}, 1, true),
-        square({0, 0, 10}, 1, false), 1, 10);
-    add("opposed squares of side 2, 20 apart", square({1, 1, 0}, 2, true),
+    add(N_("opposed unit squares 10 apart (the exact F differs by 0.67 %)"),
+        square({0, 0, 0}, 1, true), square({0, 0, 10}, 1, false), 1, 10);
+    add(N_("opposed squares of side 2, 20 apart"), square({1, 1, 0}, 2, true),
         square({1, 1, 20}, 2, false), 2, 20);
-    add("different areas: A_j = 4 A_i", square({0, 0, 0}, 1, true), square({3, 0, 8}, 2, false));
-    add("perpendicular, sharing an edge (near: (15.20) is rough, but it is the formula)",
+    add(N_("different areas: A_j = 4 A_i"), square({0, 0, 0}, 1, true),
+        square({3, 0, 8}, 2, false));
+    add(N_("perpendicular, sharing an edge (near: (15.20) is rough, but it is the formula)"),
         square({0, 0, 0}, 1, true),
         rotate(square({0, 0, 0}, 1, true), {1, 0, 0}, kPi / 2, {0, 0.5, 0.5}));
-    add("j behind i (cos phi_i < 0): 0", square({0, 0, 0}, 1, true), square({0, 0, -5}, 1, true));
-    add("both turned away (both cosines < 0): 0", square({0, 0, 0}, 1, false),
+    add(N_("j behind i (cos phi_i < 0): 0"), square({0, 0, 0}, 1, true),
+        square({0, 0, -5}, 1, true));
+    add(N_("both turned away (both cosines < 0): 0"), square({0, 0, 0}, 1, false),
         square({0, 0, 5}, 1, true));
-    add("coincident centres (d = 0): 0", square({0, 0, 0}, 1, true), square({0, 0, 0}, 1, false));
-    add("small patches, 1e-2", square({0, 0, 0}, 1e-2, true), square({0.01, 0, 0.05}, 1e-2, false));
+    add(N_("coincident centres (d = 0): 0"), square({0, 0, 0}, 1, true),
+        square({0, 0, 0}, 1, false));
+    add(N_("small patches, 1e-2"), square({0, 0, 0}, 1e-2, true),
+        square({0.01, 0, 0.05}, 1e-2, false));
     Lcg g{8};
     for (int s = 1; s <= 8; ++s) {
         const glm::dvec3 axisI = glm::normalize(glm::dvec3(g.in(-1, 1), g.in(-1, 1), g.in(-1, 1)));
@@ -156,9 +164,10 @@ std::vector<Case> jacobiCases() {
         cs.push_back({std::move(name), in});
     };
     // Two patches of different areas: F_12 A_1 = F_21 A_2, so F is not symmetric.
-    add("two patches, first sweep from B = E", {1, 0}, {1, 0}, {0.5, 0.8}, {0, 0.2, 0.05, 0}, 1);
-    add("two patches, B = (0.3, 0.7)", {0.3, 0.7}, {1, 0}, {0.5, 0.8}, {0, 0.2, 0.05, 0}, 1);
-    add("no patches (n = 0)", {}, {}, {}, {}, 1);
+    add(N_("two patches, first sweep from B = E"), {1, 0}, {1, 0}, {0.5, 0.8}, {0, 0.2, 0.05, 0},
+        1);
+    add(N_("two patches, B = (0.3, 0.7)"), {0.3, 0.7}, {1, 0}, {0.5, 0.8}, {0, 0.2, 0.05, 0}, 1);
+    add(N_("no patches (n = 0)"), {}, {}, {}, {}, 1);
     Lcg g{5};
     for (int s = 1; s <= 4; ++s) {
         const int n = 3 + s;
@@ -182,7 +191,7 @@ std::vector<Case> jacobiCases() {
     const double f = rad::parallelRectangles(1, 1, 0.5);
     const double r1 = 0.6, r2 = 0.8, e1 = 1, e2 = 0;
     const double b1 = (e1 + r1 * f * e2) / (1 - r1 * r2 * f * f), b2 = e2 + r2 * f * b1;
-    add("opposed squares 0.5 apart (F from the closed form): 200 sweeps reach the exact B",
+    add(N_("opposed squares 0.5 apart (F from the closed form): 200 sweeps reach the exact B"),
         {e1, e2}, {e1, e2}, {r1, r2}, {0, f, f, 0}, 200, {b1, b2});
     return cs;
 }
@@ -294,23 +303,23 @@ std::vector<Case> raysCases() {
         cs.push_back({std::move(name), in});
     };
     const Quad lo = square({0, 0, 0}, 1, true), hi = square({0, 0, 2}, 1, false);
-    add("nothing in between: V = 1, F = (15.20)", lo, hi, 16, 1, 1.0, {});
-    add("a plate covering both: V = 0", lo, hi, 16, 2, 0.0,
+    add(N_("nothing in between: V = 1, F = (15.20)"), lo, hi, 16, 1, 1.0, {});
+    add(N_("a plate covering both: V = 0"), lo, hi, 16, 2, 0.0,
         {{glm::dvec3(-5, -5, 1), glm::dvec3(5, -5, 1), glm::dvec3(-5, 5, 1)}});
     // A plate over x < x0 in the middle plane z = 1 stops the ray from (x1, .., 0) to
     // (x2, .., 2) when (x1 + x2)/2 < x0: for x1, x2 uniform on [-½, ½] that is
     // P(S < 2·x0) = 1 - (1 - 2x0)²/2 (S's density is triangular): V = (1 - 2x0)²/2.
     // x0 = 0.013 keeps every midpoint of the grids off the plate's edge.
     const double x0 = 0.013, half = (1 - 2 * x0) * (1 - 2 * x0) / 2;
-    add("a plate over half of the gap: V = 0.474 (256 rays)", lo, hi, 256, 3, half,
+    add(N_("a plate over half of the gap: V = 0.474 (256 rays)"), lo, hi, 256, 3, half,
         {{glm::dvec3(-5, -5, 1), glm::dvec3(x0, -5, 1), glm::dvec3(-5, 5, 1)}});
-    add("the same plate, another seed (1024 rays)", lo, hi, 1024, 4, half,
+    add(N_("the same plate, another seed (1024 rays)"), lo, hi, 1024, 4, half,
         {{glm::dvec3(-5, -5, 1), glm::dvec3(x0, -5, 1), glm::dvec3(-5, 5, 1)}});
-    add("a plate beside the patches: V = 1", lo, hi, 64, 5, 1.0,
+    add(N_("a plate beside the patches: V = 1"), lo, hi, 64, 5, 1.0,
         {{glm::dvec3(3, -5, 1), glm::dvec3(6, -5, 1), glm::dvec3(3, 5, 1)}});
-    add("one ray (k = 1)", lo, hi, 1, 6, 1.0, {});
-    add("facing away: F = 0 whatever V", lo, square({0, 0, -2}, 1, false), 16, 7, 0.0, {});
-    add("different areas, nothing between", square({0, 0, 0}, 0.5, true),
+    add(N_("one ray (k = 1)"), lo, hi, 1, 6, 1.0, {});
+    add(N_("facing away: F = 0 whatever V"), lo, square({0, 0, -2}, 1, false), 16, 7, 0.0, {});
+    add(N_("different areas, nothing between"), square({0, 0, 0}, 0.5, true),
         square({1, 0.5, 3}, 2, false), 36, 8, 1.0, {});
     return cs;
 }

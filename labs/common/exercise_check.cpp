@@ -1,5 +1,7 @@
 #include "common/exercise_check.h"
 
+#include "core/i18n.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +26,26 @@ int labGrade(const LabExercises& lab, const std::vector<TaskResult>& results) {
         grade = m;
     }
     return grade;
+}
+
+std::optional<Verdict> compareHomogeneous(const Values& expected, const Values& got, int n,
+                                          double tol, const char* nonFinite, const char* transposed,
+                                          const char* zero) {
+    const size_t size = size_t(n) * size_t(n);
+    if (got.size() != size) return Verdict::fail(trf("not a %dx%d matrix", n, n));
+    for (double x : got)
+        if (!std::isfinite(x)) return Verdict::fail(nonFinite);
+    if (equalUpToFactor(expected, got, tol)) return Verdict::pass();
+    Values t(size);
+    for (int c = 0; c < n; ++c)
+        for (int r = 0; r < n; ++r)
+            t[size_t(r * n + c)] = got[size_t(c * n + r)];
+    if (equalUpToFactor(expected, t, tol)) return Verdict::fail(transposed);
+    bool allZero = true;
+    for (double x : got)
+        allZero = allZero && x == 0;
+    if (allZero) return Verdict::fail(zero);
+    return std::nullopt;
 }
 
 std::string showNumbers(const Values& v) {

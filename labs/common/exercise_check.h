@@ -26,6 +26,7 @@
 #include "common/exercise.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,14 @@ bool allNear(const Values& a, const Values& b, double tol);
 // tolerance tol on the components after scaling by the largest |component|. Zero got is
 // never equal to a non-zero expected. Also true for two zero vectors.
 bool equalUpToFactor(const Values& expected, const Values& got, double tol);
+// A homogeneous n x n matrix (column-major) against the expected one: the steps every lab's
+// matrix task takes first. pass() when equal up to a factor (tol as equalUpToFactor);
+// fail(nonFinite) for a NaN/Inf entry, fail(transposed) for the transpose of the answer,
+// fail(zero) for the zero matrix (no map at all); nullopt when none of these: the lab then
+// says what its own kind of difference means.
+std::optional<Verdict> compareHomogeneous(const Values& expected, const Values& got, int n,
+                                          double tol, const char* nonFinite, const char* transposed,
+                                          const char* zero);
 // Same, with k > 0 (directions: a normal may not flip).
 bool equalUpToPositiveFactor(const Values& expected, const Values& got, double tol);
 

@@ -14,12 +14,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <unordered_set>
 #include <vector>
 
 namespace wb::ex {
@@ -49,8 +52,9 @@ pid_t spawn(const std::vector<std::string>& argv, int& outFd, const std::string&
         } else {
             dup2(fds[1], 2);
         }
-        setenv("LC_ALL", "C",
-               1); // plain ASCII quotes in the compiler's messages (the panel's font)
+        setenv("LC_ALL", "C", 1); // plain ASCII quotes in the compiler's messages
+        // wb-check's messages (the failing case, what it usually means) in the lab's language.
+        setenv("LANGUAGE", language().c_str(), 1);
         std::vector<char*> args;
         for (const std::string& a : argv)
             args.push_back(const_cast<char*>(a.c_str()));
@@ -107,6 +111,17 @@ struct ExerciseMode::Impl {
     std::string compileError, loadError;
     std::map<std::string, TaskResult> results;
     bool checked = false;
+    // Drawn inputs tried in a child (task id and input hashed) that returned, and the tasks
+    // that crashed or looped on one, with the panel's sentence; both until the next reload.
+    std::unordered_set<uint64_t> triedOk;
+    std::map<std::string, std::string> drawnFailures;
+
+    void useObject(std::unique_ptr<StudentObject> obj) {
+        current = obj.get();
+        objects.push_back(std::move(obj));
+        triedOk.clear();
+        drawnFailures.clear();
+    }
 
     ~Impl() {
         if (pid > 0 && !reaped) {
@@ -177,6 +192,8 @@ void ExerciseMode::setOn(bool value) {
     impl_->on = value;
     if (value && !impl_->started) {
         impl_->started = true;
+        // Resolved now, not in the constructor: --root is applied after the lab is built.
+        impl_->source = assetPath(lab_.file);
         ::mkdir(impl_->liveDir.c_str(), 0755);
         // The object the build made, when it is not older than the file; else build now.
         const double src = modifiedTime(impl_->source);
@@ -185,8 +202,7 @@ void ExerciseMode::setOn(bool value) {
             impl_->object = impl_->builtObject;
             auto obj = std::make_unique<StudentObject>();
             if (obj->load(impl_->object)) {
-                impl_->current = obj.get();
-                impl_->objects.push_back(std::move(obj));
+                impl_->useObject(std::move(obj));
                 impl_->startCheck(lab_.lab);
             } else {
                 impl_->loadError = obj->error();
@@ -246,8 +262,7 @@ bool ExerciseMode::poll(bool watch) {
                     auto obj = std::make_unique<StudentObject>();
                     if (obj->load(m.object)) {
                         m.loadError.clear();
-                        m.current = obj.get();
-                        m.objects.push_back(std::move(obj));
+                        m.useObject(std::move(obj));
                         m.startCheck(lab_.lab);
                     } else {
                         m.loadError = obj->error();
@@ -319,12 +334,73 @@ const void* ExerciseMode::studentRaw() const {
 
 bool ExerciseMode::callable(const std::string& taskId) const {
     if (!impl_->current) return false;
+    if (impl_->drawnFailures.count(taskId)) return false;
     const auto it = impl_->results.find(taskId);
     if (it == impl_->results.end()) return impl_->checked; // checked: not a task of this lab
     const TaskResult& r = it->second;
     if (r.status == Status::NotDone) return false;
     // A crash or an endless loop in the isolated check: never call it inside the lab.
     return !(r.status == Status::Fails && r.got.empty() && r.expected.empty());
+}
+
+bool ExerciseMode::tryInChild(const std::string& taskId, uint64_t key,
+                              const std::function<void()>& body) const {
+    Impl& m = *impl_;
+    if (m.drawnFailures.count(taskId)) return false;
+    uint64_t k = key;
+    hashBytes(k, taskId.data(), taskId.size());
+    if (m.triedOk.count(k)) return true;
+    if (m.triedOk.size() > 100000) m.triedOk.clear(); // a long drag: forget, try again
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        // The child: only the student's function, then out without the lab's atexit work.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+            signal(sig, SIG_DFL);
+        alarm(unsigned(kDrawnTimeLimitS) + 2); // if the lab itself is gone
+        try {
+            body();
+        } catch (...) {
+        }
+        _exit(0);
+    }
+    if (pid < 0) return true; // no child to try it in: call it here, as before
+    const auto deadline = Clock::now() + std::chrono::milliseconds(long(kDrawnTimeLimitS * 1000));
+    int status = 0;
+    bool timedOut = false;
+    auto nap = std::chrono::microseconds(50);
+    for (;;) {
+        const pid_t r = waitpid(pid, &status, WNOHANG);
+        if (r == pid) break;
+        if (r < 0 && errno != EINTR) return true;
+        if (Clock::now() > deadline) {
+            timedOut = true;
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            break;
+        }
+        usleep(useconds_t(nap.count()));
+        nap = std::min(nap * 2, std::chrono::microseconds(5000));
+    }
+    if (!timedOut && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+        m.triedOk.insert(k);
+        return true;
+    }
+    std::string why;
+    if (timedOut)
+        why = trf("no answer within %.0f s on the drawn input: an endless loop?", kDrawnTimeLimitS);
+    else if (WIFSIGNALED(status)) {
+        const char* abbrev = sigabbrev_np(WTERMSIG(status));
+        why = trf("crashed on the drawn input: SIG%s",
+                  abbrev ? abbrev : std::to_string(WTERMSIG(status)).c_str());
+    } else
+        why = trf("ended the program on the drawn input (exit status %d)", WEXITSTATUS(status));
+    m.drawnFailures[taskId] = why;
+    m.extraFrames = 2; // the panel shows it on the next frames
+    std::fprintf(stderr, "%s: %s\n", taskId.c_str(), why.c_str());
+    return false;
 }
 
 const TaskResult* ExerciseMode::result(const std::string& taskId) const {
@@ -390,6 +466,15 @@ void ExerciseMode::gui() {
         TaskResult shown;
         shown.id = t.id;
         if (r) shown = *r;
+        // Passed its checks, but crashed or looped on what the window draws: fails.
+        const auto drawn = m.drawnFailures.find(t.id);
+        if (r && drawn != m.drawnFailures.end()) {
+            shown.status = Status::Fails;
+            shown.caseName = tr("the input the window draws");
+            shown.input = shown.expected = shown.got = "";
+            shown.why = drawn->second;
+            r = &shown;
+        }
         all.push_back(shown);
         const char* state = !r                            ? tr("not checked")
                             : r->status == Status::Passes ? tr("passes")
@@ -399,12 +484,13 @@ void ExerciseMode::gui() {
                                              : r->status == Status::Passes ? green
                                              : r->status == Status::Fails  ? red
                                                                            : grey);
-        ImGui::TextWrapped("[%d] %s - %s", t.grade, tr(t.title), state);
+        ImGui::TextWrapped("%s %s - %s", gradeMark(t.grade), tr(t.title), state);
         ImGui::PopStyleColor();
         if (r && r->status == Status::Fails) {
             ImGui::Indent();
             if (!r->caseName.empty())
-                ImGui::TextWrapped("%s", trf("case \"%s\"", r->caseName.c_str()).c_str());
+                ImGui::TextWrapped("%s",
+                                   trf("case \"%s\"", caseLabel(r->caseName).c_str()).c_str());
             if (!r->input.empty()) ImGui::TextWrapped("%s %s", tr("input:"), r->input.c_str());
             if (!r->expected.empty())
                 ImGui::TextWrapped("%s %s", tr("expected:"), r->expected.c_str());
@@ -417,7 +503,8 @@ void ExerciseMode::gui() {
     }
     if (m.checked) {
         const int g = labGrade(lab_, all);
-        ImGui::TextWrapped("%s", g ? trf("grade: %d", g).c_str() : tr("grade: none yet"));
+        ImGui::TextWrapped("%s",
+                           g ? trf("grade: %s", gradeMark(g)).c_str() : tr("grade: none yet"));
     }
 }
 

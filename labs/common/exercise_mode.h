@@ -6,9 +6,10 @@
 //   - forwards key() to it first (`e` switches between the reference and your code);
 //   - calls poll() at the start of draw(), and ORs busy() into its own busy();
 //   - in draw(): when on(), takes studentTable<T>() (nullptr while not built / a compile
-//     error) and calls the student's functions through call(taskId, f), which returns
-//     std::nullopt when the task is not done, threw here, or crashed/timed out in the
-//     isolated check (so a crashing function is never called inside the lab); draws the
+//     error) and calls the student's functions through call(taskId, f, drawn inputs...), which
+//     returns std::nullopt when the task is not done, threw here, or crashed/timed out in the
+//     isolated check or on the drawn input (each new drawn input is tried in a forked child
+//     first, so a crashing function is never called inside the lab); draws the
 //     student's result as the lab drew the answer, then the reference between
 //     ghostBegin() and ghostEnd() (translucent, dashed lines) so the difference shows;
 //   - calls gui() in its panel: the task list ③④⑤ with not done / passes / fails, the first
@@ -21,9 +22,14 @@
 #include "common/exercise_check.h"
 #include "common/lab.h"
 
+#include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 namespace wb::ex {
 
@@ -56,10 +62,24 @@ class ExerciseMode {
     template <class Table> const Table* referenceTable() const {
         return static_cast<const Table*>(lab_.reference);
     }
-    // f() calls the student's function for drawing; nullopt when the task's check said not
-    // done / crashed / timed out, or f throws (NotDone or anything else).
+    // f() calls the student's function for drawing; `drawn...` are the inputs it reads
+    // (numbers, glm vectors and matrices, vectors of them). The first time a task meets an
+    // input, f runs once in a forked child with a time limit: a function that passes every
+    // check but crashes or loops on what the window draws then fails in the panel ("crashed
+    // on the drawn input: SIGSEGV") and is not called again until the file is saved, instead
+    // of taking the lab down. nullopt when the task is not done, crashed/timed out in its
+    // check or on a drawn input, or f throws (NotDone or anything else).
+    template <class F, class... In>
+    auto call(const std::string& taskId, F&& f, const In&... drawn) const
+        -> std::optional<decltype(f())> {
+        if (!callable(taskId)) return std::nullopt;
+        if (!tryInChild(taskId, inputKey(drawn...), [&] { (void)f(); })) return std::nullopt;
+        return callTried(taskId, f);
+    }
+    // The same without the child: only for calls whose inputs a tryInChild() of the same
+    // frame already ran (a loop over a mesh or a picture, tried once as a whole).
     template <class F>
-    auto call(const std::string& taskId, F&& f) const -> std::optional<decltype(f())> {
+    auto callTried(const std::string& taskId, F&& f) const -> std::optional<decltype(f())> {
         if (!callable(taskId)) return std::nullopt;
         try {
             return f();
@@ -67,6 +87,26 @@ class ExerciseMode {
             return std::nullopt;
         }
     }
+    // Runs body() in a forked child (at most kDrawnTimeLimitS); true when it returned or
+    // threw. Cached per task and `key` until the next reload; false (and the task failing in
+    // the panel) after a signal, a timeout or exit(). body must not touch GL or ImGui.
+    bool tryInChild(const std::string& taskId, uint64_t key,
+                    const std::function<void()>& body) const;
+    // A key for tryInChild(): the bytes of plain values (FNV-1a); hashBytes() adds an array.
+    static void hashBytes(uint64_t& h, const void* p, size_t n) {
+        const auto* b = static_cast<const unsigned char*>(p);
+        for (size_t i = 0; i < n; ++i)
+            h = (h ^ b[i]) * 1099511628211ull;
+    }
+
+    template <class... In> static uint64_t inputKey(const In&... in) {
+        uint64_t h = 1469598103934665603ull;
+        (hashValue(h, in), ...);
+        return h;
+    }
+    // A drawn input takes microseconds; the longest drawn call (lab 07's picture, ~0.3 s on
+    // a loaded 2-core machine) times 5 leaves room, and the window stalls at most this once.
+    static constexpr double kDrawnTimeLimitS = 2.0;
     const TaskResult* result(const std::string& taskId) const; // nullptr before the first check
 
     // The reference drawn as a ghost: translucent (alpha kGhostAlpha), lines dashed.
@@ -75,6 +115,16 @@ class ExerciseMode {
     static constexpr float kGhostAlpha = 0.35f;
 
   private:
+    template <class T> static void hashValue(uint64_t& h, const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>, "pass plain values as the drawn input");
+        hashBytes(h, &v, sizeof v);
+    }
+    template <class T> static void hashValue(uint64_t& h, const std::vector<T>& v) {
+        const size_t n = v.size();
+        hashBytes(h, &n, sizeof n);
+        for (const T& x : v)
+            hashValue(h, x);
+    }
     const void* studentRaw() const;
     bool callable(const std::string& taskId) const;
     const LabExercises& lab_;

@@ -1,11 +1,14 @@
 #include "common/exercise_run.h"
 
+#include "core/i18n.h"
+
 #include <dlfcn.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -343,6 +346,42 @@ bool readRecording(const std::string& path, Recording& rec, std::string& error) 
         rec[unescape(fields[0])][unescape(fields[1])] = v;
     }
     return true;
+}
+
+std::string caseLabel(const std::string& name) {
+    if (const char* t = tr(name.c_str()); t != name.c_str()) return t;
+    std::string out, rest = name;
+    size_t i = 0;
+    // "seed 7", "seed 7: ...", "seed 7 (...)": the number kept, the words translated.
+    if (rest.rfind("seed ", 0) == 0 && rest.size() > 5 && std::isdigit((unsigned char)rest[5])) {
+        i = 5;
+        while (i < rest.size() && std::isdigit((unsigned char)rest[i]))
+            ++i;
+        out = trf("seed %s", rest.substr(5, i - 5).c_str());
+        const size_t sep = rest.compare(i, 2, ": ") == 0 ? 2 : rest.compare(i, 1, " ") == 0 ? 1 : 0;
+        out += rest.substr(i, sep);
+        rest = rest.substr(i + sep);
+    }
+    if (rest.empty()) return out;
+    const char* whole = tr(rest.c_str());
+    if (whole != rest.c_str()) return out + whole;
+    // One number in the words ("degree 4", "5 patches"): the words with %s, the number kept.
+    const size_t a = rest.find_first_of("0123456789");
+    if (a != std::string::npos) {
+        size_t b = a;
+        while (b < rest.size() && (std::isdigit((unsigned char)rest[b]) || rest[b] == '.' ||
+                                   rest[b] == 'e' || rest[b] == '-'))
+            ++b;
+        const std::string pattern = rest.substr(0, a) + "%s" + rest.substr(b);
+        const char* t = tr(pattern.c_str());
+        if (t != pattern.c_str()) {
+            std::string r = t;
+            const size_t at = r.find("%s");
+            if (at != std::string::npos) r.replace(at, 2, rest.substr(a, b - a));
+            return out + r;
+        }
+    }
+    return out + rest; // not in the catalogue: as written
 }
 
 const char* statusMark(Status s) {

@@ -57,6 +57,11 @@ TaskResult runTask(const LabExercises& lab, const Task& task, const void* studen
 std::string encodeResult(const TaskResult& r);
 bool decodeResult(const std::string& line, TaskResult& r);
 
+// A case's name as the student reads it: names are English keys (the handout's recordings
+// are looked up by them), marked N_() in the checks and translated here when shown; "seed N"
+// and one number among the words ("degree %s") are kept as numbers.
+std::string caseLabel(const std::string& name);
+
 const char* statusMark(Status s); // "✓", "✗", "·"
 const char* gradeMark(int grade); // "③" "④" "⑤", "-" for 0
 

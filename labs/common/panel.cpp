@@ -43,6 +43,10 @@ const ImWchar* glyphRanges() {
     for (char32_t c = 0x400; c <= 0x45F; ++c)
         chars.insert(c);
     chars.insert(0xFFFD); // ImGui's fallback for what is still missing
+    // The exercise panel's marks (exercise_run.cpp gradeMark/statusMark), not all of them in
+    // a catalogue string: the course's grades ③④⑤ and ✓ ✗.
+    for (char32_t c : {U'③', U'④', U'⑤', U'✓', U'✗'})
+        chars.insert(c);
     auto add = [&](std::string_view text) {
         const std::string s(text);
         for (size_t i = 0; i < s.size();)
@@ -89,6 +93,14 @@ std::string setupImGuiFonts(float scale) {
     if (isFile(kSansPath) && io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &config, ranges)) {
         if (isFile(kMonoPath))
             g_mono = io.Fonts->AddFontFromFileTTF(kMonoPath, pixels, &config, ranges);
+        if (g_mono) {
+            // DejaVu Sans Mono has no circled digits: the grade marks ③④⑤ from DejaVu Sans,
+            // merged into it (ImGui skips what the font has already).
+            static const ImWchar kMarks[] = {0x2462, 0x2464, 0};
+            ImFontConfig merge = config;
+            merge.MergeMode = true;
+            io.Fonts->AddFontFromFileTTF(kSansPath, pixels, &merge, kMarks);
+        }
     } else {
         message = trf("%s not found (Debian package fonts-dejavu-core): using ImGui's built-in "
                       "font",

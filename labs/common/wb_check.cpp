@@ -37,7 +37,7 @@ void printResult(const Task& t, const TaskResult& r) {
     std::printf("\n");
     if (r.status != Status::Fails) return;
     if (!r.caseName.empty())
-        std::printf("      %s\n", trf("case \"%s\"", r.caseName.c_str()).c_str());
+        std::printf("      %s\n", trf("case \"%s\"", caseLabel(r.caseName).c_str()).c_str());
     if (!r.input.empty()) std::printf("        %-9s %s\n", tr("input"), r.input.c_str());
     if (!r.expected.empty()) std::printf("        %-9s %s\n", tr("expected"), r.expected.c_str());
     if (!r.got.empty()) std::printf("        %-9s %s\n", tr("got"), r.got.c_str());
