@@ -1163,8 +1163,8 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     ImGui::TextColored(ImColor(yellow), tr("-- BVH"));
     ImGui::SameLine();
     ImGui::TextColored(ImColor(cyan), tr("-- no BVH (brute force)"));
-    // Tall enough for a label above each decade line and one below the top line with room
-    // between them at any UI scale (a fixed 120 px put "10 ms" over "100 ms").
+    // Two text lines per decade at any UI scale (a fixed 120 px put "10 ms" over "100 ms"),
+    // so the labels centred on the decade lines never touch.
     const float th = ImGui::GetTextLineHeight();
     const float w = ImGui::GetContentRegionAvail().x,
                 h = std::max(8.0f * th, (hi - lo) * (2.0f * th + 4.0f) +
@@ -1178,8 +1178,26 @@ void plotTimings(const std::vector<TimingRow>& rows) {
     ImGui::Dummy(ImVec2(w, h));
     const ImVec2 after = ImGui::GetCursorScreenPos();
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float x0 = pos.x + style.FramePadding.x, x1 = pos.x + w - style.FramePadding.x;
-    const float y0 = pos.y + style.FramePadding.y, y1 = pos.y + h - style.FramePadding.y;
+    // Decade labels (1 ms, 10 ms, ..., 1 s, 10 s) sit in a gutter left of the data, centred
+    // on their lines: no label overlaps a line of data or its neighbour (a decade is 2 lines
+    // of text tall), however the series run.
+    auto decadeLabel = [](int d, char (&label)[32]) {
+        const double ms = std::pow(10.0, d);
+        if (ms >= 1000)
+            std::snprintf(label, sizeof label, tr("%g s"), ms / 1000);
+        else
+            std::snprintf(label, sizeof label, tr("%g ms"), ms);
+    };
+    float gutter = 0.0f;
+    for (int d = int(lo); d <= int(hi); ++d) {
+        char label[32];
+        decadeLabel(d, label);
+        gutter = std::max(gutter, ImGui::CalcTextSize(label).x);
+    }
+    gutter += 2.0f * style.ItemInnerSpacing.x;
+    const float x0 = pos.x + style.FramePadding.x + gutter, x1 = pos.x + w - style.FramePadding.x;
+    const float y0 = pos.y + style.FramePadding.y + 0.5f * th,
+                y1 = pos.y + h - style.FramePadding.y - 0.5f * th;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     auto xOf = [&](size_t i, size_t count) {
         return count > 1 ? x0 + (x1 - x0) * float(i) / float(count - 1) : x0;
@@ -1195,20 +1213,13 @@ void plotTimings(const std::vector<TimingRow>& rows) {
         dl->AddCircleFilled(ImVec2(xOf(i, bvh.size()), yOf(brute[i])), 2.5f, cyan);
     for (size_t i = 0; i < bvh.size(); ++i)
         dl->AddCircleFilled(ImVec2(xOf(i, bvh.size()), yOf(bvh[i])), 2.5f, yellow);
-    // Decade lines and labels: 1 ms, 10 ms, ..., 1 s, 10 s.
     for (int d = int(lo); d <= int(hi); ++d) {
         const float y = yOf(float(d));
         dl->AddLine(ImVec2(x0, y), ImVec2(x1, y), IM_COL32(255, 255, 255, 40));
         char label[32];
-        const double ms = std::pow(10.0, d);
-        if (ms >= 1000)
-            std::snprintf(label, sizeof label, tr("%g s"), ms / 1000);
-        else
-            std::snprintf(label, sizeof label, tr("%g ms"), ms);
-        // Above its line, except the top one (below it, inside the frame): with the height
-        // above, a decade holds two labels and never overlaps its neighbours'.
-        const float ty = d == int(hi) ? y + 1 : y - th - 1;
-        dl->AddText(ImVec2(x0 + 2, ty), IM_COL32(230, 230, 230, 200), label);
+        decadeLabel(d, label);
+        dl->AddText(ImVec2(x0 - gutter + style.ItemInnerSpacing.x * 0.5f, y - 0.5f * th),
+                    IM_COL32(230, 230, 230, 200), label);
     }
     ImGui::SetCursorScreenPos(after);
     std::string xs = "x: ";
