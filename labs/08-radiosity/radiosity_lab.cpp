@@ -486,7 +486,8 @@ void RadiosityLab::rebuildSolver() {
         // A shooting group is not a patch: each receiver gathers from the group's area by the
         // exact point-to-polygon term and k visibility rays (point_rays.h).
         fc.groupRowProvider = [this](int g, const rad::HemicubeFrame&, std::vector<float>& out) {
-            rad::groupGatherRow(model_->mesh, model_->ff->bvh(), g, s.raySamples, out);
+            rad::groupGatherRow(model_->mesh, model_->ff->bvh(), g, s.raySamples, out,
+                                model_->ff->nearFieldReady(g));
         };
     }
     fc.rays.samples = s.raySamples;

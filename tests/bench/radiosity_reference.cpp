@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
         if (st.method == "grouprays")
             fc.groupRowProvider = [&mesh, &ffp, k = st.resOrK](int g, const HemicubeFrame&,
                                                                std::vector<float>& out) {
-                groupGatherRow(mesh, ffp->bvh(), g, k, out);
+                groupGatherRow(mesh, ffp->bvh(), g, k, out, ffp->nearFieldReady(g));
             };
         if (const char* nf = std::getenv("WB_RADREF_NEAR")) fc.groupNearField = std::atof(nf);
         FormFactors ff(mesh, fc);

@@ -10,25 +10,36 @@ double pointToPolygon(const glm::dvec3& point, const glm::dvec3& normal,
                       const std::vector<glm::dvec3>& polygon) {
     // 1. Clip away the part behind the point's tangent plane (Sutherland–Hodgman, one plane):
     //    it cannot receive light from the front side and would be counted with the wrong sign.
-    std::vector<glm::dvec3> poly;
-    poly.reserve(polygon.size() + 2);
+    //    Clipping one plane adds at most one vertex per edge crossing (two in all for a convex
+    //    polygon, m in the worst case): the clipped polygon lives on the stack up to
+    //    kOnStack vertices (the near field calls this ~10⁷ times per solve at lab 08's
+    //    defaults, and a heap vector per call cost ~5% of it: docs/bench/radiosity.md).
+    constexpr std::size_t kOnStack = 32;
     const std::size_t m = polygon.size();
+    glm::dvec3 stackPoly[kOnStack];
+    std::vector<glm::dvec3> heapPoly;
+    glm::dvec3* poly = stackPoly;
+    if (2 * m > kOnStack) {
+        heapPoly.resize(2 * m);
+        poly = heapPoly.data();
+    }
+    std::size_t count = 0;
     for (std::size_t k = 0; k < m; ++k) {
         const glm::dvec3 a = polygon[k] - point;
         const glm::dvec3 b = polygon[(k + 1) % m] - point;
         const double da = glm::dot(a, normal);
         const double db = glm::dot(b, normal);
-        if (da > 0.0) poly.push_back(a);
+        if (da > 0.0) poly[count++] = a;
         if ((da > 0.0) != (db > 0.0) && da != db) {
             const double t = da / (da - db);
-            poly.push_back(a + t * (b - a));
+            poly[count++] = a + t * (b - a);
         }
     }
-    if (poly.size() < 3) return 0.0;
+    if (count < 3) return 0.0;
     // 2. Lambert's contour integral: each edge contributes the angle it subtends times the
     //    cosine between the normal and the normal of the plane through the edge and the point.
     double sum = 0.0;
-    const std::size_t q = poly.size();
+    const std::size_t q = count;
     for (std::size_t k = 0; k < q; ++k) {
         const glm::dvec3& a = poly[k];
         const glm::dvec3& b = poly[(k + 1) % q];

@@ -48,6 +48,13 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
     }
     nearFields_.resize(groups);
+    nearReady_ = std::make_unique<std::atomic<const GroupNearField*>[]>(groups);
+    for (std::size_t g = 0; g < groups; ++g) nearReady_[g] = nullptr;
+}
+
+const GroupNearField* FormFactors::nearFieldReady(int g) const {
+    if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size()) return nullptr;
+    return nearReady_[static_cast<std::size_t>(g)].load(std::memory_order_acquire);
 }
 
 const GroupNearField* FormFactors::nearField(int g) const {
@@ -69,6 +76,7 @@ const GroupNearField* FormFactors::nearField(int g) const {
         const double radius =
             emits ? std::numeric_limits<double>::infinity() : config_.groupNearField * diagonal;
         slot = std::make_unique<GroupNearField>(groupNearField(mesh_, *bvh_, g, radius));
+        nearReady_[static_cast<std::size_t>(g)].store(slot.get(), std::memory_order_release);
         nanos_ += nanosSince(t0);
     }
     return slot.get();

@@ -110,7 +110,7 @@ std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g) {
 }
 
 void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
-                    std::vector<float>& out) {
+                    std::vector<float>& out, const GroupNearField* near) {
     if (k < 1 || k > 4096)
         throw std::invalid_argument("group ray row: k = " + std::to_string(k) + " outside 1..4096");
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
@@ -144,6 +144,27 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
     if (ragged)
         for (std::size_t m = 0; m < members; ++m)
             memberPieces.push_back(exposedPieces(mesh, bvh, sg.members[m]));
+    // Near-field receivers: marked, their F not computed (the solver ignores their entries).
+    std::vector<char> isNear;
+    if (near) {
+        isNear.assign(n, 0);
+        for (int j : near->receivers)
+            isNear[static_cast<std::size_t>(j)] = 1;
+    }
+    // Whether pointToPolygon(x, nrm, ·) could be > 0: some vertex of G (hull, or the members'
+    // pieces) strictly in front of x's tangent plane, the test its clipping makes first.
+    auto inFront = [&](const glm::dvec3& x, const glm::dvec3& nrm) {
+        auto any = [&](const std::vector<glm::dvec3>& poly) {
+            for (const glm::dvec3& v : poly)
+                if (glm::dot(v - x, nrm) > 0.0) return true;
+            return false;
+        };
+        if (!ragged) return any(hull);
+        for (const auto& pieces : memberPieces)
+            for (const auto& piece : pieces)
+                if (any(piece)) return true;
+        return false;
+    };
     auto formFactorAt = [&](const glm::dvec3& x, const glm::dvec3& nrm) {
         if (!ragged) return pointToPolygon(x, nrm, hull);
         double f = 0.0;
@@ -162,7 +183,9 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         // floor group's centroid lay under the block (the face came out 92% dark).
         const double tiny = 1e-9 * std::sqrt(sg.area);
         if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) return;
-        double f = formFactorAt(p.centre, p.normal);
+        const bool nearJ = near && isNear[j];
+        double f = nearJ ? (inFront(p.centre, p.normal) ? 1.0 : 0.0)
+                         : formFactorAt(p.centre, p.normal);
         // Receivers within two of their own sizes of G's plane (the walls meeting G along an
         // edge): the kernel is steep and convex across them and their centre's value runs low
         // (row sums of a closed cube 0.965-0.979): average a 4×4 grid of points instead.
@@ -178,7 +201,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                     const double u = (a + 0.5) / 4, v = (b + 0.5) / 4;
                     const glm::dvec3 x = (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] +
                                          u * v * c[2] + (1 - u) * v * c[3];
-                    acc += formFactorAt(x, p.normal);
+                    acc += nearJ ? (inFront(x, p.normal) ? 1.0 : 0.0)
+                                 : formFactorAt(x, p.normal);
                 }
             f = acc / 16.0;
         }
@@ -205,6 +229,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                 seen[m] = true;
             }
         }
+        if (nearJ) return; // its rays counted for A_live; the solver shoots it member by member
         const double V = allW > 0.0 ? seenW / allW : 1.0;
         out[j] = static_cast<float>(p.area * f * V); // / A_live below
     });
@@ -233,10 +258,14 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         target[m] = rt::offsetRayOrigin(p.centre, p.normal);
     }
     const double tiny = 1e-9 * std::sqrt(sg.area);
+    nf.everyReceiver = true;
     for (std::size_t j = 0; j < mesh.patches.size(); ++j) {
         const Patch& p = mesh.patches[j];
         if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) continue;
-        if (glm::length(p.centre - sg.centre) > radius) continue;
+        if (glm::length(p.centre - sg.centre) > radius) {
+            nf.everyReceiver = false;
+            continue;
+        }
         nf.receivers.push_back(static_cast<int>(j));
     }
     nf.w.assign(nf.receivers.size() * members, 0.0f);

@@ -130,7 +130,9 @@ double Solver::step() {
                 dB_[e] = glm::dvec3(0.0);
             }
             const glm::dvec3 shot = pooled / sg.area;
-            const float* f = ff_.shooterRow(best, scratch_);
+            // An emitter's near field holds every receiver in front of it: no row needed.
+            const float* f =
+                near && near->everyReceiver ? nullptr : ff_.shooterRow(best, scratch_);
             if (near) {
                 nearMark_.resize(static_cast<std::size_t>(n), 0);
                 const std::size_t members = sg.members.size();
@@ -150,7 +152,7 @@ double Solver::step() {
                 const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
                 if (near && nearMark_[static_cast<std::size_t>(j)]) {
                     nearMark_[static_cast<std::size_t>(j)] = 0;
-                } else if (f[j] != 0.0f) {
+                } else if (f && f[j] != 0.0f) {
                     const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * sg.area / p.area);
                     B_[static_cast<std::size_t>(j)] += add;
                     dB_[static_cast<std::size_t>(j)] += add;

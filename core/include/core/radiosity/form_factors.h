@@ -71,6 +71,10 @@ class FormFactors {
     // Near field of group g (config.groupNearField), computed on first use and kept; nullptr when
     // off. Thread-safe.
     const GroupNearField* nearField(int g) const;
+    // The near field of g if nearField(g) has computed it, else nullptr; takes no lock, so a
+    // groupRowProvider (called under the lock) may pass it to groupGatherRow. The solver asks
+    // for a group's near field before its row.
+    const GroupNearField* nearFieldReady(int g) const;
 
     std::size_t bytes() const;          // memory held for F (and the BVH's primitives)
     double seconds() const;             // wall time spent computing rows so far
@@ -93,6 +97,7 @@ class FormFactors {
     mutable std::vector<float> groupRows_;            // groups × n when cached
     std::unique_ptr<std::atomic<bool>[]> groupReady_;
     mutable std::vector<std::unique_ptr<GroupNearField>> nearFields_; // per group, lazily
+    std::unique_ptr<std::atomic<const GroupNearField*>[]> nearReady_; // published nearFields_
     mutable std::mutex mutex_;                        // guards lazy row computation
     mutable std::atomic<long long> nanos_{0};
     mutable std::atomic<long long> rows_{0};

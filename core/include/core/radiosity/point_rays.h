@@ -17,9 +17,14 @@
 
 namespace wb::rad {
 
+struct GroupNearField;
 // out[j] for group g of mesh.groups (out resized to the patch count). k in 1..4096.
+// `near`: g's near field (FormFactors::nearFieldReady), whose receivers the solver shoots member
+// by member: their entries are left 0 and only their visibility rays are cast (they count in
+// A_live as before), which skips their point-to-polygon terms (16 points each next to the
+// group's plane; all of an emitter's row).
 void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
-                    std::vector<float>& out);
+                    std::vector<float>& out, const GroupNearField* near = nullptr);
 
 // The near field of group g: the receivers within `radius` of the group's centroid, and for
 // each the gather form factor to every member m, w_jm = F(dA_j → P_m) · V(j, m) (exact point-
@@ -31,6 +36,9 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
 struct GroupNearField {
     std::vector<int> receivers; // patch ids
     std::vector<float> w;       // receivers.size() × members, row-major
+    // Every receiver in front of the group is in the near field (an emitter's groups): the
+    // group's row is then not needed (the solver does not ask for it).
+    bool everyReceiver = false;
 };
 GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
