@@ -6,20 +6,12 @@
 #   busy_end_window.sh TEST_LAB_EXE OUT.png
 # Exits 77 (ctest SKIP_RETURN_CODE) without xvfb-run or ImageMagick's import.
 set -uo pipefail
+. "$(dirname "$0")/lib/window.sh"
 exe=$1 out=$2
-command -v xvfb-run >/dev/null || { echo "xvfb-run not installed: skipped"; exit 77; }
-command -v import >/dev/null || { echo "ImageMagick (import) not installed: skipped"; exit 77; }
-rm -f "$out"
-xvfb-run -a -s "-screen 0 1024x768x24" bash -c '
-  "$1" --size 400x300 --keys Bh & pid=$!
-  sleep 4
-  import -window root "$2"
-  kill $pid; wait $pid' _ "$exe" "$out"
-[ -s "$out" ] || { echo "no screenshot"; exit 1; }
-# Pixels of the window at the root's top-left (Xvfb has no window manager): the triangle
-# covers the lower-left half of the scene, the background the upper-right.
-triangle=$(convert "$out" -format '%[pixel:p{20,290}]' info:)
-background=$(convert "$out" -format '%[pixel:p{780,10}]' info:)
+need_window_tools
+window_shot 1024x768 4 "$out" "$exe" --size 400x300 --keys Bh
+# The triangle covers the lower-left half of the scene, the background the upper-right.
+triangle=$(pixel "$out" 20 290) background=$(pixel "$out" 780 10)
 echo "triangle $triangle, background $background"
 case "$triangle" in *"255,0,0"*|red) ;; *) echo "the triangle does not show the ended run"; exit 1 ;; esac
 case "$background" in *"0,128,255"*) ;; *) echo "the background does not show the ended run"; exit 1 ;; esac
