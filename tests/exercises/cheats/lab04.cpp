@@ -6,8 +6,8 @@
 // cheats: 04.sphere 04.torus 04.spheremap
 #include "exercises.h"
 
-#include "../../../core/src/mesh.cpp"
-#include "../../../core/src/sphere_map.cpp"
+#include "core/src/mesh.cpp"
+#include "core/src/sphere_map.cpp"
 
 namespace wb::lab04 {
 namespace {

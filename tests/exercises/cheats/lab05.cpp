@@ -6,7 +6,7 @@
 // cheats: 05.reflection 05.shadow
 #include "exercises.h"
 
-#include "../../../core/src/affine.cpp"
+#include "core/src/affine.cpp"
 
 namespace wb::lab05 {
 
