@@ -107,9 +107,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
             k[0] = sh.kx;
             k[1] = sh.ky;
             k[2] = sh.kz;
-            to[0] = _mm_set1_ps(float(o[sh.kx]));
-            to[1] = _mm_set1_ps(float(o[sh.ky]));
-            to[2] = _mm_set1_ps(float(o[sh.kz]));
+            const double* op = &o.x; // glm's operator[] would switch on the index
+            to[0] = _mm_set1_ps(float(op[sh.kx]));
+            to[1] = _mm_set1_ps(float(op[sh.ky]));
+            to[2] = _mm_set1_ps(float(op[sh.kz]));
             shx = _mm_set1_ps(float(sh.sx));
             shy = _mm_set1_ps(float(sh.sy));
             tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
