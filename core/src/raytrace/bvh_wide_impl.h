@@ -261,7 +261,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const __m128 twoD = _mm_add_ps(delta, delta);
                     const __m128 e =
                         _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
-                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(0x1p-20f)));
+                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(kTriProductMargin)));
                     const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
                     const __m128 someNeg = _mm_or_ps(
                         _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
