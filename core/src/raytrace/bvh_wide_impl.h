@@ -42,6 +42,7 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 namespace wb::rt {
 
@@ -101,9 +102,18 @@ template <class L, bool Q> struct Bvh::WideWalk {
             sphReady = true;
         }
         void triangleSetup() {
-            // The watertight test's axes and shear (triangle.cpp): kz dominant, kx/ky
-            // swapped for d[kz] < 0.
-            sh = triangleShear(d);
+            // The watertight test's axes and shear: triangleShear (triangle.cpp) written out
+            // here, the same operations (so the same bits, which the exact tests reuse), but
+            // compiled into this walk instead of an out-of-line call (issue 21).
+            const double dd[3] = {d.x, d.y, d.z};
+            const double ax = std::abs(dd[0]), ay = std::abs(dd[1]), az = std::abs(dd[2]);
+            sh.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+            sh.kx = sh.kz == 2 ? 0 : sh.kz + 1;
+            sh.ky = sh.kx == 2 ? 0 : sh.kx + 1;
+            if (dd[sh.kz] < 0) std::swap(sh.kx, sh.ky);
+            sh.sx = dd[sh.kx] / dd[sh.kz];
+            sh.sy = dd[sh.ky] / dd[sh.kz];
+            sh.sz = 1.0 / dd[sh.kz];
             k[0] = sh.kx;
             k[1] = sh.ky;
             k[2] = sh.kz;
