@@ -1127,20 +1127,24 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
 
 bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     if (options_.width != 2) return intersectWide(ray, tMin, tMax, hit);
-    bool found = false;
-    for (const Primitive* p : unbounded_)
-        if (p->intersect(ray, tMin, tMax, hit)) {
-            tMax = hit.t;
-            found = true;
-        }
-    traverse(ray, tMin, tMax, [&](const Primitive& p, double& tm) {
-        if (p.intersect(ray, tMin, tm, hit)) {
-            tm = hit.t; // only nearer hits from now on
-            found = true;
-        }
-        return true;
-    });
-    return found;
+    // The binary walk out of line (a lambda, so bvh.h stays as it is): the wide query is
+    // then a jump, without the binary walk's register saves on every ray (issue 21).
+    return [&]() __attribute__((noinline)) {
+        bool found = false;
+        for (const Primitive* p : unbounded_)
+            if (p->intersect(ray, tMin, tMax, hit)) {
+                tMax = hit.t;
+                found = true;
+            }
+        traverse(ray, tMin, tMax, [&](const Primitive& p, double& tm) {
+            if (p.intersect(ray, tMin, tm, hit)) {
+                tm = hit.t; // only nearer hits from now on
+                found = true;
+            }
+            return true;
+        });
+        return found;
+    }();
 }
 
 void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
@@ -1173,14 +1177,16 @@ void Bvh::forEachBlocker(const Ray& ray, double tMin, double tMax,
 
 bool Bvh::occluded(const Ray& ray, double tMin, double tMax, const Primitive* skip) const {
     if (options_.width != 2) return occludedWide(ray, tMin, tMax, skip);
-    for (const Primitive* p : unbounded_)
-        if (p != skip && p->occluded(ray, tMin, tMax)) return true;
-    bool any = false;
-    traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
-        any = &p != skip && p.occluded(ray, tMin, tMax);
-        return !any;
-    });
-    return any;
+    return [&]() __attribute__((noinline)) { // out of line, as in intersect
+        for (const Primitive* p : unbounded_)
+            if (p != skip && p->occluded(ray, tMin, tMax)) return true;
+        bool any = false;
+        traverse(ray, tMin, tMax, [&](const Primitive& p, double&) {
+            any = &p != skip && p.occluded(ray, tMin, tMax);
+            return !any;
+        });
+        return any;
+    }();
 }
 
 int Bvh::packetWidth() const {

@@ -42,6 +42,7 @@
 #include <cstring>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 namespace wb::rt {
 
@@ -101,15 +102,25 @@ template <class L, bool Q> struct Bvh::WideWalk {
             sphReady = true;
         }
         void triangleSetup() {
-            // The watertight test's axes and shear (triangle.cpp): kz dominant, kx/ky
-            // swapped for d[kz] < 0.
-            sh = triangleShear(d);
+            // The watertight test's axes and shear: triangleShear (triangle.cpp) written out
+            // here, the same operations (so the same bits, which the exact tests reuse), but
+            // compiled into this walk instead of an out-of-line call (issue 21).
+            const double dd[3] = {d.x, d.y, d.z};
+            const double ax = std::abs(dd[0]), ay = std::abs(dd[1]), az = std::abs(dd[2]);
+            sh.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+            sh.kx = sh.kz == 2 ? 0 : sh.kz + 1;
+            sh.ky = sh.kx == 2 ? 0 : sh.kx + 1;
+            if (dd[sh.kz] < 0) std::swap(sh.kx, sh.ky);
+            sh.sx = dd[sh.kx] / dd[sh.kz];
+            sh.sy = dd[sh.ky] / dd[sh.kz];
+            sh.sz = 1.0 / dd[sh.kz];
             k[0] = sh.kx;
             k[1] = sh.ky;
             k[2] = sh.kz;
-            to[0] = _mm_set1_ps(float(o[sh.kx]));
-            to[1] = _mm_set1_ps(float(o[sh.ky]));
-            to[2] = _mm_set1_ps(float(o[sh.kz]));
+            const double* op = &o.x; // glm's operator[] would switch on the index
+            to[0] = _mm_set1_ps(float(op[sh.kx]));
+            to[1] = _mm_set1_ps(float(op[sh.ky]));
+            to[2] = _mm_set1_ps(float(op[sh.kz]));
             shx = _mm_set1_ps(float(sh.sx));
             shy = _mm_set1_ps(float(sh.sy));
             tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
@@ -260,7 +271,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const __m128 twoD = _mm_add_ps(delta, delta);
                     const __m128 e =
                         _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
-                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(0x1p-20f)));
+                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(kTriProductMargin)));
                     const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
                     const __m128 someNeg = _mm_or_ps(
                         _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
@@ -370,7 +381,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
     // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
     template <bool kAnyHit, class Leaf>
-    static void walk(const Bvh& b, const Ray& ray, double tMin, double& tMax, Leaf&& leaf) {
+    // Inlined into its one caller per instantiation (intersect, occluded, forEachHit,
+    // forEachBlocker): one call and one prologue less per ray (issue 21).
+    __attribute__((always_inline)) static void walk(const Bvh& b, const Ray& ray, double tMin,
+                                                    double& tMax, Leaf&& leaf) {
         using namespace bvh_detail;
         if (b.stats_.primitives == 0) return;
         if (b.rootLeafCount_ > 0) {

@@ -16,8 +16,28 @@ constexpr std::uint8_t kOther = 0, kSphere = 1, kTriangle = 2, kSmoothTriangle =
 // Runs of a leaf sorted by their float test: spheres, triangles (both kinds), the rest
 // (a float test of their own box).
 constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
-constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
-constexpr float kTriMargin = 0x1p-19f;    // relative error bound of the triangle test's inputs
+// The leaves' float filters (visitLeaf in bvh_wide_impl.h) may only over-report: a
+// primitive the exact double code hits is never rejected. u = 2^-24 is float's unit
+// roundoff; every bound below is a sum of such roundings, taken with room to spare.
+// - Spheres: ll = |(o − c) − h·d|² in float against (r + m)², m = |o|₁·kSphereMargin +
+//   the sphere's own part sm_ (its |c|₁ and r, bvh_wide.cpp). Rounding o, c, d and the
+//   ~12 operations moves the distance from the line by a small multiple of
+//   u·(|o|₁ + |c|₁ + r) (one u per rounding, ~20 of them, for a unit d); kSphereMargin =
+//   2^-16 = 256u leaves a wide factor over that. (The test "the leaves' float filters
+//   keep their margins" fails with 2^-28, below the error; it passes with 2^-24.)
+// - Triangles: the watertight test's edge functions u, v, w = px·py' − py·px' in float.
+//   Each sheared input px = (v − o)[kx] − sx·(v − o)[kz] is off from its double value by
+//   rounding v, o, sx (|sx| <= 1) and three operations: <= 6u·(|v|₁ + |o|₁ + |v − o|₁),
+//   which kTriMargin = 2^-19 = 32u bounds as δ <= (2·Σ|v|₁ + 4·|o|₁)·2^-19 (tm_ + tom).
+//   With inputs off by <= δ each product is off by <= δ(|a| + |b|) + δ², so an edge
+//   function by <= 2δ(Q + 2δ), Q = Σ|px| + |py|; rounding its two products and their
+//   difference adds <= 3u·Q² <= Q²·kTriProductMargin (2^-20 = 16u). A triangle is
+//   rejected only when one edge function is below −e and another above e. (The same
+//   test fails with kTriMargin cut to 2^-32; it passes with 2^-24: the |·|₁ sums over
+//   all coordinates make δ a wide bound.)
+constexpr float kSphereMargin = 0x1p-16f;    // relative margin of the float sphere test
+constexpr float kTriMargin = 0x1p-19f;       // relative error bound of the triangle test's inputs
+constexpr float kTriProductMargin = 0x1p-20f; // of the edge functions' own roundings (× Q²)
 // The slab test in float: entry = (near − o')·inv, exit = (far − o'')·invFar, where
 // inv = 1/float(d) and invFar = inv·(1 + 2^-19), each rounded (u = 2^-24; o', o'' are the
 // origin widened for its own rounding). Then inv <= (1/d)(1 + 2u), so an entry comes out
