@@ -196,13 +196,13 @@ int main(int argc, char** argv) {
     }
     if (settings.empty())
         settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
-                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-3, rows by
+                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-4, rows by
                     // the keys' methods: rays k = 4 gathered at the receivers (key 1, the
                     // default), CPU hemicube 128² (key 2), GL hemicube 512² (key 3: core's CPU
                     // hemicube at 512² stands in, they differ at edge pixels only).
-                    parse("default, rays k=4:lab:grouprays:4:lab:1e-3"),
-                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-3"),
-                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-3"),
+                    parse("default, rays k=4:lab:grouprays:4:lab:1e-4"),
+                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-4"),
+                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-4"),
                     // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
                     parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
     Scene scene = cornellBox();
