@@ -76,8 +76,7 @@ Setting parse(const std::string& s) {
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
     if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays" &&
-        out.method != "p2p" &&
-        out.method != "grouppool")
+        out.method != "p2p" && out.method != "grouppool")
         throw std::invalid_argument("method " + out.method);
     return out;
 }
@@ -118,7 +117,11 @@ void poolDiagnosis(const PatchMesh& mesh, const FormFactors& ff, const std::vect
                    const std::string& want) {
     const std::size_t n = mesh.patches.size();
     std::vector<float> scratch;
-    struct Item { double err; int g; std::string surface; };
+    struct Item {
+        double err;
+        int g;
+        std::string surface;
+    };
     for (std::size_t s = 0; s < mesh.surfaces.size(); ++s) {
         const std::string& name = mesh.surfaces[s].name;
         if (name.find(want) == std::string::npos) continue;
@@ -137,7 +140,8 @@ void poolDiagnosis(const PatchMesh& mesh, const FormFactors& ff, const std::vect
             if (nf && nf->everyReceiver) continue;
             std::vector<char> nearJ(n, 0);
             if (nf)
-                for (int j : nf->receivers) nearJ[static_cast<std::size_t>(j)] = 1;
+                for (int j : nf->receivers)
+                    nearJ[static_cast<std::size_t>(j)] = 1;
             std::vector<double> fbar(n, 0.0);
             std::vector<std::vector<float>> rows;
             for (int m : sg.members) {
@@ -157,7 +161,8 @@ void poolDiagnosis(const PatchMesh& mesh, const FormFactors& ff, const std::vect
             }
             err /= area * mean;
             total += err;
-            items.push_back({err, static_cast<int>(g), mesh.surfaces[static_cast<std::size_t>(sg.surface)].name});
+            items.push_back({err, static_cast<int>(g),
+                             mesh.surfaces[static_cast<std::size_t>(sg.surface)].name});
         }
         std::sort(items.begin(), items.end(),
                   [](const Item& a, const Item& b) { return std::abs(a.err) > std::abs(b.err); });
@@ -232,7 +237,8 @@ int main(int argc, char** argv) {
             fc.rays.samples = st.resOrK;
             // p2p: every pair by the exact point-to-polygon kernel (k points on the shooter,
             // visibility rays), the nearest to exact F the core has for a whole mesh.
-            if (st.method != "rays" && st.method != "grouprays") fc.rays.kernel = RayKernel::PointToPolygon;
+            if (st.method != "rays" && st.method != "grouprays")
+                fc.rays.kernel = RayKernel::PointToPolygon;
         } else {
             fc.method = FormFactorMethod::Hemicube;
             fc.hemicubeResolution = st.resOrK;
@@ -257,7 +263,8 @@ int main(int argc, char** argv) {
                 for (int m : sg.members) {
                     rayFormFactorRow(mesh, ffp->bvh(), m, fc.rays, row);
                     const double a = mesh.patches[static_cast<std::size_t>(m)].area;
-                    for (std::size_t j = 0; j < row.size(); ++j) acc[j] += a * row[j];
+                    for (std::size_t j = 0; j < row.size(); ++j)
+                        acc[j] += a * row[j];
                 }
                 for (std::size_t j = 0; j < acc.size(); ++j)
                     out[j] = static_cast<float>(acc[j] / sg.area);

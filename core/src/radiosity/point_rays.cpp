@@ -304,7 +304,8 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         nf.du.assign(n, 0.0f);
         nf.dv.assign(n, 0.0f);
         std::vector<char> nearJ(n, 0);
-        for (int j : nf.receivers) nearJ[static_cast<std::size_t>(j)] = 1;
+        for (int j : nf.receivers)
+            nearJ[static_cast<std::size_t>(j)] = 1;
         const glm::dvec3 v = glm::cross(sg.normal, sg.u);
         std::vector<glm::dvec3> centre(members);
         std::vector<double> area(members);
@@ -315,7 +316,8 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         }
         tbb::parallel_for(std::size_t(0), n, [&](std::size_t j) {
             const Patch& p = mesh.patches[j];
-            if (nearJ[j] || p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) return;
+            if (nearJ[j] || p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny)
+                return;
             double w = 0.0;
             glm::dvec3 at(0.0);
             for (std::size_t m = 0; m < members; ++m) {

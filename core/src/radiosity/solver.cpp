@@ -181,12 +181,14 @@ double Solver::step() {
                 if (near && nearMark_[static_cast<std::size_t>(j)]) {
                     nearMark_[static_cast<std::size_t>(j)] = 0;
                 } else if (f && f[j] != 0.0f) {
-                    const glm::dvec3 at =
-                        slope ? glm::clamp(shot + gu * static_cast<double>(near->du[static_cast<std::size_t>(j)]) +
-                                               gv * static_cast<double>(near->dv[static_cast<std::size_t>(j)]),
-                                           lo, hi)
-                              : shot;
-                    const glm::dvec3 add = p.reflectivity * at * (static_cast<double>(f[j]) * sg.area / p.area);
+                    glm::dvec3 at = shot;
+                    if (slope) {
+                        const auto k = static_cast<std::size_t>(j);
+                        const double du = near->du[k], dv = near->dv[k];
+                        at = glm::clamp(shot + gu * du + gv * dv, lo, hi);
+                    }
+                    const glm::dvec3 add =
+                        p.reflectivity * at * (static_cast<double>(f[j]) * sg.area / p.area);
                     B_[static_cast<std::size_t>(j)] += add;
                     dB_[static_cast<std::size_t>(j)] += add;
                 }

@@ -198,12 +198,16 @@ TEST_CASE("group gradient: far receivers get the members' ΔB as a plane, not th
     Scene s;
     s.name = "lamp over a floor";
     const double w = 0.6;
-    s.surfaces.push_back(Surface{{{0, 0, 0}, {0, 0, w}, {w, 0, w}, {w, 0, 0}}, glm::dvec3(0.8),
-                                 glm::dvec3(0.0), "floor"});
+    s.surfaces.push_back(Surface{
+        {{0, 0, 0}, {0, 0, w}, {w, 0, w}, {w, 0, 0}}, glm::dvec3(0.8), glm::dvec3(0.0), "floor"});
     s.surfaces.push_back(Surface{{{0, 0.12, 0}, {0.1, 0.12, 0}, {0.1, 0.12, 0.1}, {0, 0.12, 0.1}},
-                                 glm::dvec3(0.0), glm::dvec3(1.0), "lamp"});
+                                 glm::dvec3(0.0),
+                                 glm::dvec3(1.0),
+                                 "lamp"});
     s.surfaces.push_back(Surface{{{0.3, 0.45, 0}, {w, 0.45, 0}, {w, 0.45, w}, {0.3, 0.45, w}},
-                                 glm::dvec3(0.5), glm::dvec3(0.0), "plate"});
+                                 glm::dvec3(0.5),
+                                 glm::dvec3(0.0),
+                                 "plate"});
     auto solve = [&](double near, bool gradient) {
         const PatchMesh m = meshScene(s, MeshConfig{0.03, 0.12});
         FormFactorConfig fc;
