@@ -15,10 +15,13 @@
 // other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
 // FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
 #include "core/radiosity/point_rays.h"
+#include "core/radiosity/ray_form_factors.h"
 #include "core/radiosity/scenes.h"
 #include "core/radiosity/solver.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -72,7 +75,8 @@ Setting parse(const std::string& s) {
     out.patch = parts[1] == "lab" ? lab : std::stod(parts[1]);
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
-    if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays")
+    if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays" &&
+        out.method != "p2p" && out.method != "grouppool")
         throw std::invalid_argument("method " + out.method);
     return out;
 }
@@ -104,6 +108,75 @@ std::string vec(const glm::dvec3& v) {
     return buf;
 }
 
+// Experiment (WB_RADREF_POOLDIAG=NAME, p2p settings with groups in the mesh): what pooling in
+// the shooting groups would change, to first order, in the mean of the surfaces whose name
+// contains NAME. Over the whole solve, member m shoots B_m − E_m in total; pooled, the group
+// shoots their area mean along F̄_gj = Σ_m A_m F_mj / A_g instead of each along F_mj, so a
+// receiver j outside g's near field gets R_j Σ_m A_m (B_m − E_m)(F̄_gj − F_mj) / A_j too much.
+void poolDiagnosis(const PatchMesh& mesh, const FormFactors& ff, const std::vector<glm::dvec3>& B,
+                   const std::string& want) {
+    const std::size_t n = mesh.patches.size();
+    std::vector<float> scratch;
+    struct Item {
+        double err;
+        int g;
+        std::string surface;
+    };
+    for (std::size_t s = 0; s < mesh.surfaces.size(); ++s) {
+        const std::string& name = mesh.surfaces[s].name;
+        if (name.find(want) == std::string::npos) continue;
+        double area = 0, mean = 0;
+        for (std::size_t j = 0; j < n; ++j)
+            if (mesh.patches[j].surface == static_cast<int>(s)) {
+                area += mesh.patches[j].area;
+                mean += mesh.patches[j].area * B[j].y;
+            }
+        mean /= area;
+        std::vector<Item> items;
+        double total = 0;
+        for (std::size_t g = 0; g < mesh.groups.size(); ++g) {
+            const ShooterGroup& sg = mesh.groups[g];
+            const GroupNearField* nf = ff.nearField(static_cast<int>(g));
+            if (nf && nf->everyReceiver) continue;
+            std::vector<char> nearJ(n, 0);
+            if (nf)
+                for (int j : nf->receivers)
+                    nearJ[static_cast<std::size_t>(j)] = 1;
+            std::vector<double> fbar(n, 0.0);
+            std::vector<std::vector<float>> rows;
+            for (int m : sg.members) {
+                const float* f = ff.row(m, scratch);
+                rows.emplace_back(f, f + n);
+                for (std::size_t j = 0; j < n; ++j)
+                    fbar[j] += mesh.patches[static_cast<std::size_t>(m)].area * f[j] / sg.area;
+            }
+            double err = 0;
+            for (std::size_t j = 0; j < n; ++j) {
+                if (mesh.patches[j].surface != static_cast<int>(s) || nearJ[j]) continue;
+                for (std::size_t k = 0; k < sg.members.size(); ++k) {
+                    const auto m = static_cast<std::size_t>(sg.members[k]);
+                    err += mesh.patches[j].reflectivity.y * mesh.patches[m].area *
+                           (B[m].y - mesh.patches[m].emission.y) * (fbar[j] - rows[k][j]);
+                }
+            }
+            err /= area * mean;
+            total += err;
+            items.push_back({err, static_cast<int>(g),
+                             mesh.surfaces[static_cast<std::size_t>(sg.surface)].name});
+        }
+        std::sort(items.begin(), items.end(),
+                  [](const Item& a, const Item& b) { return std::abs(a.err) > std::abs(b.err); });
+        std::fprintf(stderr, "POOL %s: first-order pooling error of the mean (G) %+.3f%%\n",
+                     name.c_str(), 100 * total);
+        for (std::size_t k = 0; k < std::min<std::size_t>(items.size(), 10); ++k) {
+            const ShooterGroup& sg = mesh.groups[static_cast<std::size_t>(items[k].g)];
+            std::fprintf(stderr, "   group %3d %-26s centre %.3f %.3f %.3f members %zu: %+.3f%%\n",
+                         items[k].g, items[k].surface.c_str(), sg.centre.x, sg.centre.y,
+                         sg.centre.z, sg.members.size(), 100 * items[k].err);
+        }
+    }
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -128,13 +201,13 @@ int main(int argc, char** argv) {
     }
     if (settings.empty())
         settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
-                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-3, rows by
+                    // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-4, rows by
                     // the keys' methods: rays k = 4 gathered at the receivers (key 1, the
                     // default), CPU hemicube 128² (key 2), GL hemicube 512² (key 3: core's CPU
                     // hemicube at 512² stands in, they differ at edge pixels only).
-                    parse("default, rays k=4:lab:grouprays:4:lab:1e-3"),
-                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-3"),
-                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-3"),
+                    parse("default, rays k=4:lab:grouprays:4:lab:1e-4"),
+                    parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-4"),
+                    parse("default, GL hemicube 512 (as CPU 512):lab:hemicube:512:lab:1e-4"),
                     // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
                     parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
     Scene scene = cornellBox();
@@ -158,9 +231,14 @@ int main(int argc, char** argv) {
         const auto t0 = std::chrono::steady_clock::now();
         const PatchMesh mesh = meshScene(scene, {st.patch, st.shooter});
         FormFactorConfig fc;
-        if (st.method == "rays" || st.method == "grouprays") {
+        if (st.method == "rays" || st.method == "grouprays" || st.method == "p2p" ||
+            st.method == "grouppool") {
             fc.method = FormFactorMethod::Rays;
             fc.rays.samples = st.resOrK;
+            // p2p: every pair by the exact point-to-polygon kernel (k points on the shooter,
+            // visibility rays), the nearest to exact F the core has for a whole mesh.
+            if (st.method != "rays" && st.method != "grouprays")
+                fc.rays.kernel = RayKernel::PointToPolygon;
         } else {
             fc.method = FormFactorMethod::Hemicube;
             fc.hemicubeResolution = st.resOrK;
@@ -172,6 +250,24 @@ int main(int argc, char** argv) {
             fc.groupRowProvider = [&mesh, &ffp, k = st.resOrK](int g, const HemicubeFrame&,
                                                                std::vector<float>& out) {
                 groupGatherRow(mesh, ffp->bvh(), g, k, out, ffp->nearFieldReady(g));
+            };
+        // grouppool: a group's row is the area-weighted sum of its members' p2p rows (the
+        // pooled row made exact: what is left is the pooling itself, not how rows are made).
+        if (st.method == "grouppool")
+            fc.groupRowProvider = [&mesh, &ffp, fc](int g, const HemicubeFrame&,
+                                                    std::vector<float>& out) {
+                const ShooterGroup& sg = mesh.groups[static_cast<std::size_t>(g)];
+                out.assign(mesh.patches.size(), 0.0f);
+                std::vector<double> acc(mesh.patches.size(), 0.0);
+                std::vector<float> row;
+                for (int m : sg.members) {
+                    rayFormFactorRow(mesh, ffp->bvh(), m, fc.rays, row);
+                    const double a = mesh.patches[static_cast<std::size_t>(m)].area;
+                    for (std::size_t j = 0; j < row.size(); ++j)
+                        acc[j] += a * row[j];
+                }
+                for (std::size_t j = 0; j < acc.size(); ++j)
+                    out[j] = static_cast<float>(acc[j] / sg.area);
             };
         if (const char* nf = std::getenv("WB_RADREF_NEAR")) fc.groupNearField = std::atof(nf);
         FormFactors ff(mesh, fc);
@@ -194,8 +290,12 @@ int main(int argc, char** argv) {
                              mesh.patches[i].centre.x, mesh.patches[i].centre.z, sf, all);
             }
         }
+        // p2p with groups in the mesh: still every patch shooting itself.
+        if (st.method == "p2p") sc.groupShooting = false;
         Solver solver(mesh, ff, sc);
         solver.run();
+        if (const char* want = std::getenv("WB_RADREF_POOLDIAG"); want && st.method == "p2p")
+            poolDiagnosis(mesh, ff, solver.radiosity(), want);
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::vector<double> area;

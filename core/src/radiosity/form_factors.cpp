@@ -75,7 +75,8 @@ const GroupNearField* FormFactors::nearField(int g) const {
             glm::length(mesh_.surfaces[static_cast<std::size_t>(sg.surface)].emission) > 0.0;
         const double radius =
             emits ? std::numeric_limits<double>::infinity() : config_.groupNearField * diagonal;
-        slot = std::make_unique<GroupNearField>(groupNearField(mesh_, *bvh_, g, radius));
+        slot = std::make_unique<GroupNearField>(
+            groupNearField(mesh_, *bvh_, g, radius, config_.groupGradient));
         nearReady_[static_cast<std::size_t>(g)].store(slot.get(), std::memory_order_release);
         nanos_ += nanosSince(t0);
     }

@@ -244,7 +244,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         x = static_cast<float>(x / live);
 }
 
-GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius) {
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
+                              bool offsets) {
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
     const std::size_t members = sg.members.size();
     GroupNearField nf;
@@ -298,6 +299,41 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
             nf.w[r * members + m] = static_cast<float>(f);
         }
     });
+    if (offsets && !nf.everyReceiver) {
+        const std::size_t n = mesh.patches.size();
+        nf.du.assign(n, 0.0f);
+        nf.dv.assign(n, 0.0f);
+        std::vector<char> nearJ(n, 0);
+        for (int j : nf.receivers)
+            nearJ[static_cast<std::size_t>(j)] = 1;
+        const glm::dvec3 v = glm::cross(sg.normal, sg.u);
+        std::vector<glm::dvec3> centre(members);
+        std::vector<double> area(members);
+        for (std::size_t m = 0; m < members; ++m) {
+            const Patch& q = mesh.patches[static_cast<std::size_t>(sg.members[m])];
+            centre[m] = q.centre;
+            area[m] = q.area;
+        }
+        tbb::parallel_for(std::size_t(0), n, [&](std::size_t j) {
+            const Patch& p = mesh.patches[j];
+            if (nearJ[j] || p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny)
+                return;
+            double w = 0.0;
+            glm::dvec3 at(0.0);
+            for (std::size_t m = 0; m < members; ++m) {
+                const glm::dvec3 d = p.centre - centre[m];
+                const double r2 = glm::dot(d, d);
+                const double k = area[m] * std::max(0.0, glm::dot(sg.normal, d)) *
+                                 std::max(0.0, -glm::dot(p.normal, d)) / (r2 * r2);
+                w += k;
+                at += k * (centre[m] - sg.centre);
+            }
+            if (!(w > 0.0)) return;
+            at /= w;
+            nf.du[j] = static_cast<float>(glm::dot(at, sg.u));
+            nf.dv[j] = static_cast<float>(glm::dot(at, v));
+        });
+    }
     return nf;
 }
 

@@ -130,6 +130,34 @@ double Solver::step() {
                 dB_[e] = glm::dvec3(0.0);
             }
             const glm::dvec3 shot = pooled / sg.area;
+            // The members' ΔB as a plane over the group (area-weighted least squares in its u,
+            // v axes): a far receiver j gets shot + gu·du_j + gv·dv_j (GroupNearField::du/dv),
+            // clamped to the members' range, rather than the flat mean.
+            glm::dvec3 gu(0.0), gv(0.0), lo(shot), hi(shot);
+            if (near && !near->du.empty()) {
+                const glm::dvec3 v = glm::cross(sg.normal, sg.u);
+                double suu = 0.0, suv = 0.0, svv = 0.0;
+                glm::dvec3 su(0.0), sv(0.0);
+                for (std::size_t m = 0; m < sg.members.size(); ++m) {
+                    const Patch& q = mesh_.patches[static_cast<std::size_t>(sg.members[m])];
+                    const double x = glm::dot(q.centre - sg.centre, sg.u);
+                    const double y = glm::dot(q.centre - sg.centre, v);
+                    const glm::dvec3 d = memberShot_[m] - shot;
+                    suu += q.area * x * x;
+                    suv += q.area * x * y;
+                    svv += q.area * y * y;
+                    su += q.area * x * d;
+                    sv += q.area * y * d;
+                    lo = glm::min(lo, memberShot_[m]);
+                    hi = glm::max(hi, memberShot_[m]);
+                }
+                const double det = suu * svv - suv * suv;
+                if (det > 1e-12 * (suu * svv) && det > 0.0) {
+                    gu = (svv * su - suv * sv) / det;
+                    gv = (suu * sv - suv * su) / det;
+                }
+            }
+            const bool slope = gu != glm::dvec3(0.0) || gv != glm::dvec3(0.0);
             // An emitter's near field holds every receiver in front of it: no row needed.
             const float* f =
                 near && near->everyReceiver ? nullptr : ff_.shooterRow(best, scratch_);
@@ -153,7 +181,14 @@ double Solver::step() {
                 if (near && nearMark_[static_cast<std::size_t>(j)]) {
                     nearMark_[static_cast<std::size_t>(j)] = 0;
                 } else if (f && f[j] != 0.0f) {
-                    const glm::dvec3 add = p.reflectivity * shot * (static_cast<double>(f[j]) * sg.area / p.area);
+                    glm::dvec3 at = shot;
+                    if (slope) {
+                        const auto k = static_cast<std::size_t>(j);
+                        const double du = near->du[k], dv = near->dv[k];
+                        at = glm::clamp(shot + gu * du + gv * dv, lo, hi);
+                    }
+                    const glm::dvec3 add =
+                        p.reflectivity * at * (static_cast<double>(f[j]) * sg.area / p.area);
                     B_[static_cast<std::size_t>(j)] += add;
                     dB_[static_cast<std::size_t>(j)] += add;
                 }

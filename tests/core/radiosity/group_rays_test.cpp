@@ -185,3 +185,57 @@ TEST_CASE("group near field: shooting members one by one near the group", "[radi
     CHECK(std::abs(lab - members) < std::abs(pooled - members));
     CHECK(lab == Approx(members).epsilon(0.01));
 }
+
+TEST_CASE("group gradient: far receivers get the members' ΔB as a plane, not the flat mean",
+          "[radiosity]") {
+    // A floor lit by a small lamp just above one corner (its B falls ~10× across the floor) and
+    // a plate facing down above the opposite half, beyond every floor group's near field. Each
+    // floor group's members nearest the lamp hold most of its unshot radiosity; pooled flat,
+    // the group shoots their mean from everywhere, and the plate, which sees the members on its
+    // side nearer, gets too much. The answer without pooling: every receiver member by member
+    // (near field radius 100 diagonals). In lab 08's Cornell box the same pooling put the
+    // ceiling in front of the light 1.5-2% too dark (docs/bench/radiosity.md).
+    Scene s;
+    s.name = "lamp over a floor";
+    const double w = 0.6;
+    s.surfaces.push_back(Surface{
+        {{0, 0, 0}, {0, 0, w}, {w, 0, w}, {w, 0, 0}}, glm::dvec3(0.8), glm::dvec3(0.0), "floor"});
+    s.surfaces.push_back(Surface{{{0, 0.12, 0}, {0.1, 0.12, 0}, {0.1, 0.12, 0.1}, {0, 0.12, 0.1}},
+                                 glm::dvec3(0.0),
+                                 glm::dvec3(1.0),
+                                 "lamp"});
+    s.surfaces.push_back(Surface{{{0.3, 0.45, 0}, {w, 0.45, 0}, {w, 0.45, w}, {0.3, 0.45, w}},
+                                 glm::dvec3(0.5),
+                                 glm::dvec3(0.0),
+                                 "plate"});
+    auto solve = [&](double near, bool gradient) {
+        const PatchMesh m = meshScene(s, MeshConfig{0.03, 0.12});
+        FormFactorConfig fc;
+        fc.method = FormFactorMethod::Rays;
+        fc.rays.samples = 4;
+        fc.groupNearField = near;
+        fc.groupGradient = gradient;
+        std::unique_ptr<FormFactors> ffp;
+        fc.groupRowProvider = [&](int g, const HemicubeFrame&, std::vector<float>& out) {
+            groupGatherRow(m, ffp->bvh(), g, 4, out, ffp->nearFieldReady(g));
+        };
+        ffp = std::make_unique<FormFactors>(m, fc);
+        SolverConfig sc;
+        sc.kind = SolverKind::Progressive;
+        sc.tolerance = 1e-5;
+        sc.ambient = false;
+        Solver solver(m, *ffp, sc);
+        solver.run();
+        double b = 0, a = 0;
+        for (size_t i = 0; i < m.patches.size(); ++i)
+            if (m.surfaces[size_t(m.patches[i].surface)].name == "plate") {
+                b += m.patches[i].area * solver.radiosity()[i].y;
+                a += m.patches[i].area;
+            }
+        return b / a;
+    };
+    const double flat = solve(2.0, false), plane = solve(2.0, true), members = solve(100.0, true);
+    INFO("flat " << flat << ", plane " << plane << ", member by member " << members);
+    CHECK(std::abs(plane - members) < 0.25 * std::abs(flat - members));
+    CHECK(plane == Approx(members).epsilon(0.01));
+}

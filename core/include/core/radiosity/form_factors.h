@@ -44,6 +44,10 @@ struct FormFactorConfig {
     // 2: the Cornell box at lab 08's defaults (0.1 m groups, rays k = 4) is within 2.4% of
     // Cycles on every face (24% at 0, 3.2% at 1: docs/bench/radiosity.md, "Why ours was off").
     double groupNearField = 2.0;
+    // Progressive with shooting groups and a near field: a group's far receivers get its pooled
+    // ΔB plus the members' ΔB gradient times where they see the members (GroupNearField::du/dv)
+    // instead of the flat mean. false: the flat mean (the ceiling in front of the light −2%).
+    bool groupGradient = true;
 };
 
 class FormFactors {

@@ -39,8 +39,19 @@ struct GroupNearField {
     // Every receiver in front of the group is in the near field (an emitter's groups): the
     // group's row is then not needed (the solver does not ask for it).
     bool everyReceiver = false;
+    // Far receivers (the rest, in front of the group): where the group's members are, as j sees
+    // them: the offset from the group's centroid of the members' centroid weighted by the
+    // unoccluded point kernel cos·cos/r² from j's centre, along the group's u and v axes (m);
+    // n entries, 0 for near receivers and those behind. A group shoots its members' ΔB pooled;
+    // the solver fits ΔB's gradient over the members and j gets the pooled mean plus the
+    // gradient times this offset (first order in the group's size: Σ_m A_m ΔB_m F_mj). Pooled
+    // flat, a receiver that sees the group's bright side nearer got its mean: the ceiling in
+    // front of the light 1.5% too dark from the tall block's top (docs/bench/radiosity.md).
+    std::vector<float> du, dv;
 };
-GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius);
+// `offsets`: fill du/dv too (FormFactorConfig::groupGradient).
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
+                              bool offsets = false);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g);
 
