@@ -1,6 +1,7 @@
 #include "core/raytrace/bvh.h"
 
 #include "bvh_internal.h"
+#include "bvh_wide_kinds.h"
 #include "core/raytrace/sphere.h"
 
 #include <algorithm>
@@ -405,15 +406,15 @@ struct Builder {
     // inside such a leaf differs, and no answer depends on it (ties go to the scene
     // index). ~80% of the binary nodes were below that line (balls 5: 132,427 binary
     // nodes, 3,996 wide nodes). Null for width 2 (the binary tree is traversed).
-    const std::uint8_t* sphere = nullptr; // per scene index: exactly a Sphere
+    const std::uint8_t* kind = nullptr; // per scene index (bvh_wide_kinds.h); null: no stop
 
     bool mergedLeaf(const Task& t) const {
         const std::size_t n = t.end - t.begin;
-        if (!sphere || n > 8) return false;
+        if (!kind || n > 8) return false;
         if (n <= 4) return true;
         const Ref* refs = buf[t.buffer];
         for (std::size_t i = t.begin; i < t.end; ++i)
-            if (!sphere[refs[i].prim]) return false;
+            if (kind[refs[i].prim] != kSphere) return false;
         return true;
     }
 
@@ -949,10 +950,13 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
         RefBuffer bufA(count), bufB(count);
-        // Wide trees: which primitives are exactly spheres (Builder::mergedLeaf), read
-        // while the object is in cache for its bounds.
-        const bool wide = options.width != 2 && !options.fullBinary;
-        std::unique_ptr<std::uint8_t[]> sphere(wide ? new std::uint8_t[count] : nullptr);
+        // Wide trees: each primitive's kind (Builder::mergedLeaf, then the collapse's
+        // leaf runs), read while the object is in cache for its bounds. The collapse
+        // read them in leaf order, a cache miss per primitive (perf: the vtable load
+        // was half of collapseWide's own time).
+        const bool wide = options.width != 2;
+        if (wide) sceneKind_.resize(count);
+        std::uint8_t* const kinds = sceneKind_.data();
         std::size_t n = 0;
         Box4 rootBox, rootCBox;
         const __m128 mask = lanes012();
@@ -965,7 +969,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             for (std::size_t i = 0; i < count; ++i) {
                 if (i + 8 < count) __builtin_prefetch(prims[i + 8].get()); // its vtable, box
                 Ref& r = bufA.data[n];
-                if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
+                if (wide) kinds[i] = primitiveKind(prims[i].get());
                 if (makeRef(*prims[i], std::uint32_t(i), r)) {
                     account(r, rootBox, rootCBox);
                     ++n;
@@ -986,7 +990,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 std::size_t v = 0;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
                     ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
-                    if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
+                    if (wide) kinds[i] = primitiveKind(prims[i].get());
                     if (ok[i]) {
                         account(bufA.data[i], boxes[k], cboxes[k]);
                         ++v;
@@ -1025,7 +1029,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
                   parallel,
-                  sphere.get()};
+                  wide && !options.fullBinary ? kinds : nullptr};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
         Tally total;
         if (parallel) {

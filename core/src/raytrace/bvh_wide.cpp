@@ -315,13 +315,6 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     const std::size_t n = order_.size();
     kind_.assign(n, kOther);
     run_.assign(n, 0);
-    auto kindOf = [](const Primitive* p) {
-        if (typeid(*p) == typeid(Sphere)) return kSphere;
-        if (typeid(*p) == typeid(Triangle)) return kTriangle;
-        if (typeid(*p) == typeid(SmoothTriangle) || dynamic_cast<const Triangle*>(p))
-            return kSmoothTriangle; // the triangle's hit test
-        return kOther;
-    };
     // Per primitive in order_'s order, in blocks of the same size for any thread count
     // (parallel with the build's threads), each read of a primitive prefetched 16 ahead:
     // order_ is leaf order, so the objects are scattered in memory.
@@ -350,7 +343,13 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         else
             run();
     };
-    perPrimitive([&](std::size_t i) { kind_[i] = kindOf(order_[i]); });
+    // Kinds: taken by the build in scene order (sceneKind_), here by index.
+    if (sceneKind_.size() >= n)
+        for (std::size_t i = 0; i < n; ++i)
+            kind_[i] = sceneKind_[orderIndex_[i]];
+    else
+        perPrimitive([&](std::size_t i) { kind_[i] = primitiveKind(order_[i]); });
+    std::vector<std::uint8_t>().swap(sceneKind_);
     bool has[3] = {false, false, false}; // per run kind
     for (std::size_t i = 0; i < n; ++i)
         has[runOf(kind_[i])] = true;
