@@ -331,9 +331,8 @@ static std::string buildRateSection(bool quick) {
            << fmt("%.1f", m1 * 1e3) << " | " << fmt("%.2f", n / m1 / 1e6) << " | "
            << fmt("%.1f", median(tc) * 1e3) << " | " << fmt("%.1f", mn * 1e3) << " | "
            << fmt("%.2f", n / mn / 1e6) << " | " << fmt("%.2f", m1 / mn) << " | "
-           << fmt("%.2f", threads * m1 / median(tp)) << " | " << st.nodes
-           << " | " << st.wideNodes << " | " << st.maxDepth << " | " << fmt("%.4f", st.sahCost)
-           << " |\n";
+           << fmt("%.2f", threads * m1 / median(tp)) << " | " << st.nodes << " | " << st.wideNodes
+           << " | " << st.maxDepth << " | " << fmt("%.4f", st.sahCost) << " |\n";
     };
     for (int sf : {5, 6}) {
         if (quick && sf == 6) continue;

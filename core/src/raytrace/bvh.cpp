@@ -334,13 +334,14 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
             hy = _mm_max_ps(hy, t[4]);
             hz = _mm_max_ps(hz, t[5]);
             cnt = _mm_add_ps(cnt, t[6]);
-            const __m128 cost =
-                _mm_add_ps(_mm_mul_ps(cnt, area(lx, ly, lz, hx, hy, hz)),
-                           _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
+            const __m128 cost = _mm_add_ps(
+                _mm_mul_ps(cnt, area(lx, ly, lz, hx, hy, hz)),
+                _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
             const __m128 better = _mm_cmplt_ps(cost, bestCost);
             bestCost = _mm_or_ps(_mm_and_ps(better, cost), _mm_andnot_ps(better, bestCost));
             const __m128i m = _mm_castps_si128(better);
-            bestBin = _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(b)), _mm_andnot_si128(m, bestBin));
+            bestBin =
+                _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(b)), _mm_andnot_si128(m, bestBin));
         }
     }
     alignas(16) float costs[4];
@@ -525,7 +526,7 @@ struct Builder {
             for (int b = 0; b < best.bin; ++b)
                 left += sc.binCount[std::size_t(best.axis * nb + b)];
             const std::size_t mid = t.begin + left;
-                        Ref* out = buf[1 - t.buffer];
+            Ref* out = buf[1 - t.buffer];
             Box4 lc, rc;
             scatter(refs + t.begin, n, out + t.begin, out + mid, s, best.axis, best.bin, lc, rc);
             d.axis = best.axis;

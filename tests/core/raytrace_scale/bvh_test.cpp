@@ -6,8 +6,8 @@
 // the blocked top of big trees gives the same tree for any thread count.
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/cylinder.h"
-#include "core/raytrace/plane.h"
 #include "core/raytrace/nff.h"
+#include "core/raytrace/plane.h"
 #include "core/raytrace/quadric.h"
 #include "core/raytrace/spd.h"
 #include "core/raytrace/sphere.h"
