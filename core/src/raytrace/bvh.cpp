@@ -1,6 +1,7 @@
 #include "core/raytrace/bvh.h"
 
 #include "bvh_internal.h"
+#include "bvh_wide_kinds.h"
 #include "core/raytrace/sphere.h"
 
 #include <algorithm>
@@ -186,10 +187,17 @@ struct Scratch {
     std::vector<std::uint32_t> binCount;
     std::vector<double> rightArea;
     std::vector<std::size_t> rightCount;
+    // sweepLanes: the bins transposed (per bin lo x, y, z, hi x, y, z, counts; lane = axis)
+    // and the right sides' areas and counts.
+    struct V {
+        __m128 v;
+    };
+    std::vector<V> lanes, rightAreaL, rightCountL;
     explicit Scratch(int maxBins)
         : binBox(std::size_t(3 * maxBins)), rightBox(std::size_t(maxBins)),
           binCount(std::size_t(3 * maxBins)), rightArea(std::size_t(maxBins)),
-          rightCount(std::size_t(maxBins)) {}
+          rightCount(std::size_t(maxBins)), lanes(std::size_t(7 * maxBins)),
+          rightAreaL(std::size_t(maxBins)), rightCountL(std::size_t(maxBins)) {}
 };
 
 // The best binned split: SAH cost lc·A(left) + rc·A(right) over every bin boundary of
@@ -200,7 +208,7 @@ struct Split {
     Box4 left, right; // the children's boxes (unions of their bins)
 };
 
-void sweep(const BinSetup& s, Scratch& sc, Split& best) {
+void sweepDouble(const BinSetup& s, Scratch& sc, Split& best) {
     // An empty bin changes neither box nor count: its boundary costs the same as the one
     // before it (never strictly better), and the area of an unchanged box is not taken again.
     const int nb = s.nb;
@@ -242,6 +250,132 @@ void sweep(const BinSetup& s, Scratch& sc, Split& best) {
     }
 }
 
+// Issue 21: the same sweep with the three axes side by side, one per lane, in float
+// (Embree's binned builder does the same): per bin boundary one SIMD step for all axes
+// where the double sweep above took an area per axis and side. The bins are transposed
+// once (lane a = axis a's bin), extents are scaled by a power of two that brings the
+// node's largest extent near 1 (exact; no overflow or underflow of the products), and
+// the first of equal costs wins in each lane (strict <), then axis 0 before 1 before 2:
+// the double sweep's order. Costs in float can order near-ties differently from double,
+// so the tree may differ where two splits' costs agree to ~1e-7 (the tree is valid either
+// way; its SAH cost is compared in the tests and the bench). Empty sides give NaN costs
+// (0 · inf), which never compare below the best. The chosen split's boxes and its cost
+// are then taken in double, as before, for the leaf test. False (the double sweep runs)
+// when the node's extent is beyond the scale's range (|log2| > 100).
+bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best) {
+    const int nb = s.nb;
+    double ext = 0;
+    for (int a = 0; a < 3; ++a)
+        ext = std::max(ext, double(nodeBox.hi_(a)) - double(nodeBox.lo_(a)));
+    if (!(ext > 0)) return false;
+    const int e = std::ilogb(ext);
+    if (e < -100 || e > 100) return false;
+    const __m128 k = _mm_set1_ps(std::ldexp(1.0f, -e));
+    const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
+    const __m128 ninf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+    __m128* T = &sc.lanes.data()->v; // V is one __m128: the array is one of __m128
+    for (int b = 0; b < nb; ++b) {
+        const Box4 &x = sc.binBox[std::size_t(b)], &y = sc.binBox[std::size_t(nb + b)],
+                   &z = sc.binBox[std::size_t(2 * nb + b)];
+        __m128 l0 = x.lo, l1 = y.lo, l2 = z.lo, l3 = inf;
+        _MM_TRANSPOSE4_PS(l0, l1, l2, l3);
+        __m128 h0 = x.hi, h1 = y.hi, h2 = z.hi, h3 = ninf;
+        _MM_TRANSPOSE4_PS(h0, h1, h2, h3);
+        __m128* t = T + 7 * b;
+        t[0] = l0;
+        t[1] = l1;
+        t[2] = l2;
+        t[3] = h0;
+        t[4] = h1;
+        t[5] = h2;
+        const std::uint32_t* c = sc.binCount.data();
+        t[6] = _mm_cvtepi32_ps(_mm_set_epi32(0, std::int32_t(c[2 * nb + b]),
+                                             std::int32_t(c[nb + b]), std::int32_t(c[b])));
+    }
+    // dx·dy + dy·dz + dz·dx of the scaled extents (half the area, in the node's units).
+    auto area = [k](__m128 lx, __m128 ly, __m128 lz, __m128 hx, __m128 hy, __m128 hz) {
+        const __m128 dx = _mm_mul_ps(_mm_sub_ps(hx, lx), k);
+        const __m128 dy = _mm_mul_ps(_mm_sub_ps(hy, ly), k);
+        const __m128 dz = _mm_mul_ps(_mm_sub_ps(hz, lz), k);
+        return _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dy), _mm_mul_ps(dy, dz)), _mm_mul_ps(dz, dx));
+    };
+    {
+        __m128 lx = inf, ly = inf, lz = inf, hx = ninf, hy = ninf, hz = ninf;
+        __m128 cnt = _mm_setzero_ps();
+        for (int b = nb - 1; b > 0; --b) {
+            const __m128* t = T + 7 * b;
+            lx = _mm_min_ps(lx, t[0]);
+            ly = _mm_min_ps(ly, t[1]);
+            lz = _mm_min_ps(lz, t[2]);
+            hx = _mm_max_ps(hx, t[3]);
+            hy = _mm_max_ps(hy, t[4]);
+            hz = _mm_max_ps(hz, t[5]);
+            cnt = _mm_add_ps(cnt, t[6]);
+            sc.rightAreaL[std::size_t(b)].v = area(lx, ly, lz, hx, hy, hz);
+            sc.rightCountL[std::size_t(b)].v = cnt;
+        }
+    }
+    // Lanes that cannot win: the fourth, and axes that are not binnable. NaN: no cost
+    // compares below it, and it compares below no best.
+    const float inff = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    __m128 bestCost = _mm_set_ps(nan, s.scale[2] > 0 ? inff : nan, s.scale[1] > 0 ? inff : nan,
+                                 s.scale[0] > 0 ? inff : nan);
+    __m128i bestBin = _mm_setzero_si128();
+    {
+        __m128 lx = inf, ly = inf, lz = inf, hx = ninf, hy = ninf, hz = ninf;
+        __m128 cnt = _mm_setzero_ps();
+        for (int b = 1; b < nb; ++b) {
+            const __m128* t = T + 7 * (b - 1);
+            lx = _mm_min_ps(lx, t[0]);
+            ly = _mm_min_ps(ly, t[1]);
+            lz = _mm_min_ps(lz, t[2]);
+            hx = _mm_max_ps(hx, t[3]);
+            hy = _mm_max_ps(hy, t[4]);
+            hz = _mm_max_ps(hz, t[5]);
+            cnt = _mm_add_ps(cnt, t[6]);
+            const __m128 cost = _mm_add_ps(
+                _mm_mul_ps(cnt, area(lx, ly, lz, hx, hy, hz)),
+                _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
+            const __m128 better = _mm_cmplt_ps(cost, bestCost);
+            bestCost = _mm_or_ps(_mm_and_ps(better, cost), _mm_andnot_ps(better, bestCost));
+            const __m128i m = _mm_castps_si128(better);
+            bestBin =
+                _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(b)), _mm_andnot_si128(m, bestBin));
+        }
+    }
+    alignas(16) float costs[4];
+    alignas(16) std::int32_t bins[4];
+    _mm_store_ps(costs, bestCost);
+    _mm_store_si128(reinterpret_cast<__m128i*>(bins), bestBin);
+    float bestF = std::numeric_limits<float>::infinity();
+    for (int a = 0; a < 3; ++a)
+        if (costs[a] < bestF) {
+            bestF = costs[a];
+            best.axis = a;
+            best.bin = bins[a];
+        }
+    if (best.axis < 0) return true; // no boundary with references on both sides
+    const Box4* box = sc.binBox.data() + best.axis * nb;
+    const std::uint32_t* count = sc.binCount.data() + best.axis * nb;
+    std::size_t lc = 0, rc = 0;
+    for (int b = 0; b < nb; ++b) {
+        if (b < best.bin) {
+            best.left.extend(box[b]);
+            lc += count[b];
+        } else {
+            best.right.extend(box[b]);
+            rc += count[b];
+        }
+    }
+    best.cost = double(lc) * best.left.area() + double(rc) * best.right.area();
+    return true;
+}
+
+void sweep(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best) {
+    if (!sweepLanes(s, sc, nodeBox, best)) sweepDouble(s, sc, best);
+}
+
 // 2. One node: a task is a range of references in one of the two buffers, with the
 //    bounds of their boxes and of their centroids.
 struct Task {
@@ -273,15 +407,15 @@ struct Builder {
     // inside such a leaf differs, and no answer depends on it (ties go to the scene
     // index). ~80% of the binary nodes were below that line (balls 5: 132,427 binary
     // nodes, 3,996 wide nodes). Null for width 2 (the binary tree is traversed).
-    const std::uint8_t* sphere = nullptr; // per scene index: exactly a Sphere
+    const std::uint8_t* kind = nullptr; // per scene index (bvh_wide_kinds.h); null: no stop
 
     bool mergedLeaf(const Task& t) const {
         const std::size_t n = t.end - t.begin;
-        if (!sphere || n > 8) return false;
+        if (!kind || n > 8) return false;
         if (n <= 4) return true;
         const Ref* refs = buf[t.buffer];
         for (std::size_t i = t.begin; i < t.end; ++i)
-            if (!sphere[refs[i].prim]) return false;
+            if (kind[refs[i].prim] != kSphere) return false;
         return true;
     }
 
@@ -384,7 +518,7 @@ struct Builder {
         Split best;
         if (s.binnable && t.depth < kMedianDepth) {
             binRange(refs + t.begin, n, s, sc.binBox.data(), sc.binCount.data());
-            sweep(s, sc, best);
+            sweep(s, sc, t.box, best);
         }
         if (finish(t, best, d)) return d;
         if (best.axis >= 0) {
@@ -500,7 +634,7 @@ struct Builder {
                 sc.binBox[j] = b;
                 sc.binCount[j] = c;
             }
-            sweep(s, sc, best);
+            sweep(s, sc, t.box, best);
         }
         if (finish(t, best, d)) return d; // cannot happen (n > kBlockNode > 256)
         if (best.axis < 0) {
@@ -582,7 +716,11 @@ void* bigAlloc(std::size_t bytes) {
         const auto start =
             (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
         char* p = reinterpret_cast<char*>(start);
-        madvise(p, length - std::size_t(p - static_cast<char*>(base)), MADV_HUGEPAGE); // a hint
+        // A hint, for the whole 2 MiB pages the array fills: a huge page is zeroed whole
+        // at its first touch, so a tail in one (balls 5's 2.1 MB reference buffers: two
+        // pages, 4 MiB zeroed each) cost more clearing than its faults save; the tail
+        // takes 4 KiB pages, zeroed as touched (issue 21: clear_page was 8% in perf).
+        madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
@@ -817,10 +955,13 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
         RefBuffer bufA(count), bufB(count);
-        // Wide trees: which primitives are exactly spheres (Builder::mergedLeaf), read
-        // while the object is in cache for its bounds.
-        const bool wide = options.width != 2 && !options.fullBinary;
-        std::unique_ptr<std::uint8_t[]> sphere(wide ? new std::uint8_t[count] : nullptr);
+        // Wide trees: each primitive's kind (Builder::mergedLeaf, then the collapse's
+        // leaf runs), read while the object is in cache for its bounds. The collapse
+        // read them in leaf order, a cache miss per primitive (perf: the vtable load
+        // was half of collapseWide's own time).
+        const bool wide = options.width != 2;
+        if (wide) sceneKind_.resize(count);
+        std::uint8_t* const kinds = sceneKind_.data();
         std::size_t n = 0;
         Box4 rootBox, rootCBox;
         const __m128 mask = lanes012();
@@ -833,7 +974,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             for (std::size_t i = 0; i < count; ++i) {
                 if (i + 8 < count) __builtin_prefetch(prims[i + 8].get()); // its vtable, box
                 Ref& r = bufA.data[n];
-                if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
+                if (wide) kinds[i] = primitiveKind(prims[i].get());
                 if (makeRef(*prims[i], std::uint32_t(i), r)) {
                     account(r, rootBox, rootCBox);
                     ++n;
@@ -854,7 +995,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                 std::size_t v = 0;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
                     ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
-                    if (wide) sphere[i] = typeid(*prims[i]) == typeid(Sphere);
+                    if (wide) kinds[i] = primitiveKind(prims[i].get());
                     if (ok[i]) {
                         account(bufA.data[i], boxes[k], cboxes[k]);
                         ++v;
@@ -893,7 +1034,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
                   parallel,
-                  sphere.get()};
+                  wide && !options.fullBinary ? kinds : nullptr};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
         Tally total;
         if (parallel) {

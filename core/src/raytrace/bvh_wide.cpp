@@ -315,13 +315,6 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     const std::size_t n = order_.size();
     kind_.assign(n, kOther);
     run_.assign(n, 0);
-    auto kindOf = [](const Primitive* p) {
-        if (typeid(*p) == typeid(Sphere)) return kSphere;
-        if (typeid(*p) == typeid(Triangle)) return kTriangle;
-        if (typeid(*p) == typeid(SmoothTriangle) || dynamic_cast<const Triangle*>(p))
-            return kSmoothTriangle; // the triangle's hit test
-        return kOther;
-    };
     // Per primitive in order_'s order, in blocks of the same size for any thread count
     // (parallel with the build's threads), each read of a primitive prefetched 16 ahead:
     // order_ is leaf order, so the objects are scattered in memory.
@@ -350,7 +343,29 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         else
             run();
     };
-    perPrimitive([&](std::size_t i) { kind_[i] = kindOf(order_[i]); });
+    // Kinds: taken by the build in scene order (sceneKind_), here by index.
+    if (sceneKind_.size() >= n) {
+        // No object is read: blocks without perPrimitive's prefetches, parallel with the
+        // build's threads (a serial pass here was part of the 2-thread build's serial time).
+        constexpr std::size_t kBlockKinds = 16384;
+        const std::size_t blocks = (n + kBlockKinds - 1) / kBlockKinds;
+        auto block = [&](std::size_t b) {
+            for (std::size_t i = b * kBlockKinds, e = std::min(n, i + kBlockKinds); i < e; ++i)
+                kind_[i] = sceneKind_[orderIndex_[i]];
+        };
+        if (options_.buildThreads == 1 || blocks < 2) {
+            for (std::size_t b = 0; b < blocks; ++b)
+                block(b);
+        } else {
+            auto run = [&] { parallelFor(blocks, block); };
+            if (options_.buildThreads > 1)
+                tbb::task_arena(options_.buildThreads).execute(run);
+            else
+                run();
+        }
+    } else
+        perPrimitive([&](std::size_t i) { kind_[i] = primitiveKind(order_[i]); });
+    std::vector<std::uint8_t>().swap(sceneKind_);
     bool has[3] = {false, false, false}; // per run kind
     for (std::size_t i = 0; i < n; ++i)
         has[runOf(kind_[i])] = true;

@@ -4,8 +4,12 @@
 // before any code compiled for AVX2, so these inline definitions are plain x86-64 code
 // in every translation unit.
 #include "core/raytrace/bvh.h"
+#include "core/raytrace/smooth_triangle.h"
+#include "core/raytrace/sphere.h"
+#include "core/raytrace/triangle.h"
 
 #include <cstdint>
+#include <typeinfo>
 
 namespace wb::rt {
 
@@ -51,6 +55,14 @@ inline std::uint8_t runOf(std::uint8_t kind) {
     return kind == kSphere
                ? kRunSphere
                : (kind == kTriangle || kind == kSmoothTriangle ? kRunTriangle : kRunOther);
+}
+// The kind of a primitive (the build takes it in scene order, the collapse by index).
+inline std::uint8_t primitiveKind(const Primitive* p) {
+    if (typeid(*p) == typeid(Sphere)) return kSphere;
+    if (typeid(*p) == typeid(Triangle)) return kTriangle;
+    if (typeid(*p) == typeid(SmoothTriangle) || dynamic_cast<const Triangle*>(p))
+        return kSmoothTriangle; // the triangle's hit test
+    return kOther;
 }
 } // namespace bvh_detail
 

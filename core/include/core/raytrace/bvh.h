@@ -230,6 +230,7 @@ class Bvh : public Aggregate {
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
     std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
+    std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
     std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
     std::vector<float> sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                                 // radius, their part of the float test's margin
