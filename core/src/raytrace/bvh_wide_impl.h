@@ -300,15 +300,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return true;
     }
 
-    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set). With
-    // `scalar` (the packet walk), the float lanes' values are also written there:
-    // on[3], of[3], inv[3], invFar[3], tMin, and the direction's sign bits.
-    struct Scalars {
-        float on[3], of[3], inv[3], invFar[3], tMin;
-        int signs;
-    };
-    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin,
-                                                       Scalars* scalar) {
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
+    // joinPacket repeats its float part for the packets' lanes.
+    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
@@ -352,16 +346,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const float ftMin = float(tMin);
             const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
             r.tMin = L::set1(lowered);
-            if (scalar) {
-                for (int a = 0; a < 3; ++a) {
-                    scalar->on[a] = on[a];
-                    scalar->of[a] = of[a];
-                    scalar->inv[a] = inv[a];
-                    scalar->invFar[a] = invFar[a];
-                }
-                scalar->tMin = lowered;
-                scalar->signs = signs;
-            }
         } else {
             r.invd = 1.0 / d;
         }
@@ -400,7 +384,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         const std::vector<Node>& nodes = nodesOf(b);
         RayData r;
-        initRay(r, ray, tMin, nullptr);
+        initRay(r, ray, tMin);
         const glm::dvec3 o = ray.origin;
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
