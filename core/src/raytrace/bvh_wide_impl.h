@@ -300,15 +300,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return true;
     }
 
-    // The per-ray set-up, in two parts that the packets' joinPacket shares. rayBase: the
-    // direction's signs and whether the ray takes the float walk (else the double walk).
-    __attribute__((always_inline)) static bool rayBase(RayData& r, const Ray& ray, int& signs) {
-        const glm::dvec3 o = ray.origin;
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
+    // joinPacket repeats its float part for the packets' lanes.
+    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
+        const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
-        signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
         auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
             const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
             return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
@@ -321,50 +321,34 @@ template <class L, bool Q> struct Bvh::WideWalk {
             r.neg[a] = (signs >> a) & 1;
         r.useFloat = ok;
         r.o = o;
-        r.d = ray.direction;
-        return ok;
-    }
-    // The float walk's values of one ray (x, y, z and an unused fourth): 1/d in one division
-    // (a zero component gives ±inf, the slab then no limit, as in double; see kInvFarScaleF
-    // for the roundings), the origin widened by eps with the direction's signs, the lowered
-    // tMin.
-    struct FloatRay {
-        alignas(16) float on[4], of[4], inv[4], invFar[4];
-        float tMin;
-    };
-    __attribute__((always_inline)) static void floatRay(const Ray& ray, double tMin, FloatRay& f) {
-        const glm::dvec3 o = ray.origin;
-        const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.direction[2])));
-        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
-        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-        const __m128 sgnEps =
-            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
-        _mm_store_ps(f.inv, finv);
-        _mm_store_ps(f.invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
-        _mm_store_ps(f.on, _mm_add_ps(fo, sgnEps));
-        _mm_store_ps(f.of, _mm_sub_ps(fo, sgnEps));
-        const float ftMin = float(tMin);
-        f.tMin = ftMin - std::abs(ftMin) * 0x1p-20f;
-    }
-    // The single walk's set-up (r.useFloat false: the double walk, r.invd set).
-    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
-        int signs;
-        if (!rayBase(r, ray, signs)) {
-            r.invd = 1.0 / ray.direction;
-            return;
+        r.d = d;
+        if (ok) {
+            // In four float lanes (x, y, z, unused): 1/d in one division (a zero component
+            // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the
+            // roundings), the origin widened by eps with the direction's signs.
+            const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+            const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                            _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+            const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+            const __m128 sgnEps =
+                _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            alignas(16) float inv[4], invFar[4], on[4], of[4];
+            _mm_store_ps(inv, finv);
+            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+            _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+            _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+            for (int a = 0; a < 3; ++a) {
+                r.on[a] = L::set1(on[a]);
+                r.of[a] = L::set1(of[a]);
+                r.inv[a] = L::set1(inv[a]);
+                r.invFar[a] = L::set1(invFar[a]);
+            }
+            const float ftMin = float(tMin);
+            const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
+            r.tMin = L::set1(lowered);
+        } else {
+            r.invd = 1.0 / d;
         }
-        FloatRay f;
-        floatRay(ray, tMin, f);
-        for (int a = 0; a < 3; ++a) {
-            r.on[a] = L::set1(f.on[a]);
-            r.of[a] = L::set1(f.of[a]);
-            r.inv[a] = L::set1(f.inv[a]);
-            r.invFar[a] = L::set1(f.invFar[a]);
-        }
-        r.tMin = L::set1(f.tMin);
     }
 
     // The walk's limit in float for a nearest hit so far at tMax (widened).
@@ -662,26 +646,54 @@ template <class L, bool Q> struct Bvh::WideWalk {
     }
 
     // Sets up ray j of the packet; false: it cannot join (double walk, zero direction
-    // component, or other signs than `signs`, which the first ray sets). initRay's parts,
-    // the float values written into the packet's lanes only; the ray's own RayData
-    // registers are filled when the ray first runs its own leaf tests (fillLane):
-    // broadcasting them for every ray cost more than a tenth of a packet.
+    // component, or other signs than `signs`, which the first ray sets). initRay's float
+    // values, the same operations, written into the packet's lanes only; the ray's own
+    // RayData registers are filled when the ray first runs its own leaf tests (fillLane):
+    // broadcasting them for every ray cost more than a tenth of a packet. Written out
+    // rather than shared with initRay: a shared helper made GCC 12 put a register-to-
+    // register vmovq (C5 79 D6) into the AVX2 single walk, which valgrind 3.19 cannot
+    // decode, and callgrind is how this walk is profiled (docs/raytrace-scale.md).
     static bool joinPacket(Packet& p, int j, const Ray& ray, double tMin, int& signs) {
-        const glm::dvec3 d = ray.direction;
+        const glm::dvec3 o = ray.origin, d = ray.direction;
         if (d.x == 0 || d.y == 0 || d.z == 0) return false;
-        RayData& r = p.r[j];
-        int sg;
-        if (!rayBase(r, ray, sg) || (signs >= 0 && sg != signs)) return false;
+        const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
+        const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        if (signs >= 0 && sg != signs) return false;
+        const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+        auto inRange = [](__m128d v) { // as initRay
+            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        };
+        if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) return false;
         signs = sg;
-        FloatRay f;
-        floatRay(ray, tMin, f);
+        RayData& r = p.r[j];
+        r.off = kOffsets.v[sg];
+        for (int a = 0; a < 3; ++a)
+            r.neg[a] = (sg >> a) & 1;
+        r.useFloat = true;
+        r.o = o;
+        r.d = d;
+        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+        const __m128 sgnEps =
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+        alignas(16) float inv[4], invFar[4], on[4], of[4];
+        _mm_store_ps(inv, finv);
+        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
         for (int a = 0; a < 3; ++a) {
-            p.on[a][j] = f.on[a];
-            p.of[a][j] = f.of[a];
-            p.inv[a][j] = f.inv[a];
-            p.invFar[a][j] = f.invFar[a];
+            p.on[a][j] = on[a];
+            p.of[a][j] = of[a];
+            p.inv[a][j] = inv[a];
+            p.invFar[a][j] = invFar[a];
         }
-        p.tMin[j] = f.tMin;
+        const float ftMin = float(tMin);
+        p.tMin[j] = ftMin - std::abs(ftMin) * 0x1p-20f;
         p.off = r.off;
         return true;
     }
