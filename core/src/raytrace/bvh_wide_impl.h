@@ -60,6 +60,13 @@ template <int Tag> struct Lanes4 {
     static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
     static void store(float* p, V v) { _mm_store_ps(p, v); }
     static __m128 low(V v) { return v; }
+    // The packets' transposed leaf tests (one primitive against the lanes): the same
+    // operations as the single ray's 4-wide leaf tests, lane by lane.
+    static V add(V a, V b) { return _mm_add_ps(a, b); }
+    static V abs(V a) { return _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff))); }
+    static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
+    static int lt(V a, V b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)); }   // false for NaN
+    static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
 };
 
 template <class L, bool Q> struct Bvh::WideWalk {
@@ -304,15 +311,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return true;
     }
 
-    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set). With
-    // `scalar` (the packet walk), the float lanes' values are also written there:
-    // on[3], of[3], inv[3], invFar[3], tMin, and the direction's sign bits.
-    struct Scalars {
-        float on[3], of[3], inv[3], invFar[3], tMin;
-        int signs;
-    };
-    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin,
-                                                       Scalars* scalar) {
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
+    // joinPacket repeats its float part for the packets' lanes.
+    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
@@ -356,16 +357,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const float ftMin = float(tMin);
             const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
             r.tMin = L::set1(lowered);
-            if (scalar) {
-                for (int a = 0; a < 3; ++a) {
-                    scalar->on[a] = on[a];
-                    scalar->of[a] = of[a];
-                    scalar->inv[a] = inv[a];
-                    scalar->invFar[a] = invFar[a];
-                }
-                scalar->tMin = lowered;
-                scalar->signs = signs;
-            }
         } else {
             r.invd = 1.0 / d;
         }
@@ -407,7 +398,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         const std::vector<Node>& nodes = nodesOf(b);
         RayData r;
-        initRay(r, ray, tMin, nullptr);
+        initRay(r, ray, tMin);
         const glm::dvec3 o = ray.origin;
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
@@ -551,8 +542,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // the lanes (ray j in lane j: the same float operations on the same values as ray j's
     // single walk, so the same verdict). Children are pushed with the mask of the rays
     // that enter them; rays finish (any hit) or shrink their limit (nearest hit) lane by
-    // lane. Leaves run each entering ray's own leaf tests and exact code (visitLeaf), so
-    // every hit is the one its single walk finds.
+    // lane. A leaf entered by few rays runs each one's own leaf tests (visitLeaf); one
+    // entered by kTransposeLanes or more runs its sphere and triangle runs transposed:
+    // one primitive against all the entering rays in the lanes, lane j computing ray j's
+    // own float leaf test operation for operation (the same values, the same roundings:
+    // the single walk's verdict, with its written-down margins), then each candidate's
+    // exact code. So every hit is the one its single walk finds.
     struct Packet {
         RayData r[W];
         alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
@@ -560,26 +555,175 @@ template <class L, bool Q> struct Bvh::WideWalk {
         float onLo[3], onHi[3], ofLo[3], ofHi[3], invLo[3], invHi[3], invFarLo[3], invFarHi[3];
         float tMinLo;
         const std::size_t* off;
+        // The transposed leaf tests' per-lane values (set up at the first run of their
+        // kind): RayData's fo, fd, om (spheres) and to, shx, shy, tom (triangles) of each
+        // lane's ray. sphLanes: lanes with a unit direction (the others visit every
+        // sphere, as their single walk does); triLanes: lanes whose shear axes are the
+        // first lane's (tk; the others run their own test).
+        alignas(32) float sfo[3][W], sfd[3][W], som[W];
+        alignas(32) float tto[3][W], tshx[W], tshy[W], ttom[W];
+        unsigned sphLanes = 0, triLanes = 0;
+        unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
+        bool sphSet = false, triSet = false;
+        int tk[3] = {0, 1, 2};
     };
+    // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
+    // docs/raytrace-scale.md has the measurement).
+    static constexpr int kTransposeLanes = 3;
+
+    static float lane0(__m128 v) { return _mm_cvtss_f32(v); }
+    // The transposed tests' values of the rays of `lanes` (the other lanes keep the first
+    // ray's, never read: their results are masked).
+    static void sphereLanes(Packet& p, unsigned lanes) {
+        const int first = __builtin_ctz(lanes);
+        for (int j = 0; j < W; ++j) {
+            RayData& r = p.r[(lanes >> j) & 1 ? j : first];
+            if (!r.sphReady) r.sphereSetup();
+            if ((lanes >> j) & 1 && r.unitD) p.sphLanes |= 1u << j;
+            for (int a = 0; a < 3; ++a) {
+                p.sfo[a][j] = lane0(r.fo[a]);
+                p.sfd[a][j] = lane0(r.fd[a]);
+            }
+            p.som[j] = lane0(r.om);
+        }
+        p.sphSet = true;
+    }
+    static void triangleLanes(Packet& p, unsigned lanes) {
+        const int first = __builtin_ctz(lanes);
+        for (int j = 0; j < W; ++j) {
+            RayData& r = p.r[(lanes >> j) & 1 ? j : first];
+            if (!r.triReady) r.triangleSetup();
+        }
+        const RayData& r0 = p.r[first];
+        for (int a = 0; a < 3; ++a)
+            p.tk[a] = r0.k[a];
+        for (int j = 0; j < W; ++j) {
+            const bool in = (lanes >> j) & 1;
+            const RayData& r = p.r[in ? j : first];
+            if (in && r.k[0] == p.tk[0] && r.k[1] == p.tk[1] && r.k[2] == p.tk[2])
+                p.triLanes |= 1u << j;
+            for (int a = 0; a < 3; ++a)
+                p.tto[a][j] = lane0(r.to[a]);
+            p.tshx[j] = lane0(r.shx);
+            p.tshy[j] = lane0(r.shy);
+            p.ttom[j] = lane0(r.tom);
+        }
+        p.triSet = true;
+    }
+    // Sphere i against the lanes: visitLeaf's sphere test with ray j's values in lane j
+    // (fo − c, the dot, the rejection, (r + (om + sm))², cmpngt: NaN a candidate).
+    __attribute__((always_inline)) static unsigned sphereLanesTest(const Bvh& b, const Packet& p,
+                                                                   std::uint32_t i) {
+        V f[3];
+        const float c[3] = {b.sx_[i], b.sy_[i], b.sz_[i]};
+        V fd[3];
+        for (int a = 0; a < 3; ++a) {
+            f[a] = L::sub(L::load(p.sfo[a]), L::set1(c[a]));
+            fd[a] = L::load(p.sfd[a]);
+        }
+        const V h = L::add(L::add(L::mul(f[0], fd[0]), L::mul(f[1], fd[1])), L::mul(f[2], fd[2]));
+        const V lx = L::sub(f[0], L::mul(h, fd[0]));
+        const V ly = L::sub(f[1], L::mul(h, fd[1]));
+        const V lz = L::sub(f[2], L::mul(h, fd[2]));
+        const V ll = L::add(L::add(L::mul(lx, lx), L::mul(ly, ly)), L::mul(lz, lz));
+        const V rm = L::add(L::set1(b.sr_[i]), L::add(L::load(p.som), L::set1(b.sm_[i])));
+        return unsigned(L::ngt(ll, L::mul(rm, rm)));
+    }
+    // Triangle i against the lanes of triLanes: visitLeaf's edge functions with their error
+    // bound e, ray j's shear and origin in lane j; rejected only when one is surely negative
+    // and another surely positive.
+    __attribute__((always_inline)) static unsigned triangleLanesTest(const Bvh& b, const Packet& p,
+                                                                     std::uint32_t i) {
+        V px[3], py[3];
+        const V to0 = L::load(p.tto[0]), to1 = L::load(p.tto[1]), to2 = L::load(p.tto[2]);
+        const V shx = L::load(p.tshx), shy = L::load(p.tshy);
+        for (int j = 0; j < 3; ++j) {
+            const V X = L::sub(L::set1(b.tv_[j * 3 + p.tk[0]][i]), to0);
+            const V Y = L::sub(L::set1(b.tv_[j * 3 + p.tk[1]][i]), to1);
+            const V Z = L::sub(L::set1(b.tv_[j * 3 + p.tk[2]][i]), to2);
+            px[j] = L::sub(X, L::mul(shx, Z));
+            py[j] = L::sub(Y, L::mul(shy, Z));
+        }
+        const V u = L::sub(L::mul(px[2], py[1]), L::mul(py[2], px[1]));
+        const V v = L::sub(L::mul(px[0], py[2]), L::mul(py[0], px[2]));
+        const V w = L::sub(L::mul(px[1], py[0]), L::mul(py[1], px[0]));
+        V q = L::set1(0.0f);
+        for (int j = 0; j < 3; ++j)
+            q = L::add(q, L::add(L::abs(px[j]), L::abs(py[j])));
+        const V delta = L::add(L::set1(b.tm_[i]), L::load(p.ttom));
+        const V twoD = L::add(delta, delta);
+        const V e = L::add(L::mul(twoD, L::add(q, twoD)), L::mul(L::mul(q, q), L::set1(0x1p-20f)));
+        const V ne = L::sub(L::set1(0.0f), e);
+        const int someNeg = L::lt(u, ne) | L::lt(v, ne) | L::lt(w, ne);
+        const int somePos = L::gt(u, e) | L::gt(v, e) | L::gt(w, e);
+        return ~unsigned(someNeg & somePos) & ((1u << W) - 1);
+    }
 
     // Sets up ray j of the packet; false: it cannot join (double walk, zero direction
-    // component, or other signs than `signs`, which the first ray sets).
+    // component, or other signs than `signs`, which the first ray sets). initRay's float
+    // values, the same operations, written into the packet's lanes only; the ray's own
+    // RayData registers are filled when the ray first runs its own leaf tests (fillLane):
+    // broadcasting them for every ray cost more than a tenth of a packet. Written out
+    // rather than shared with initRay: a shared helper made GCC 12 put a register-to-
+    // register vmovq (C5 79 D6) into the AVX2 single walk, which valgrind 3.19 cannot
+    // decode, and callgrind is how this walk is profiled (docs/raytrace-scale.md).
     static bool joinPacket(Packet& p, int j, const Ray& ray, double tMin, int& signs) {
-        Scalars s;
-        initRay(p.r[j], ray, tMin, &s);
-        if (!p.r[j].useFloat) return false;
-        if (ray.direction.x == 0 || ray.direction.y == 0 || ray.direction.z == 0) return false;
-        if (signs >= 0 && s.signs != signs) return false;
-        signs = s.signs;
+        const glm::dvec3 o = ray.origin, d = ray.direction;
+        if (d.x == 0 || d.y == 0 || d.z == 0) return false;
+        const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
+        const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        if (signs >= 0 && sg != signs) return false;
+        const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+        auto inRange = [](__m128d v) { // as initRay
+            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        };
+        if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) return false;
+        signs = sg;
+        RayData& r = p.r[j];
+        r.off = kOffsets.v[sg];
+        for (int a = 0; a < 3; ++a)
+            r.neg[a] = (sg >> a) & 1;
+        r.useFloat = true;
+        r.o = o;
+        r.d = d;
+        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
+        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+        const __m128 sgnEps =
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+        alignas(16) float inv[4], invFar[4], on[4], of[4];
+        _mm_store_ps(inv, finv);
+        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
         for (int a = 0; a < 3; ++a) {
-            p.on[a][j] = s.on[a];
-            p.of[a][j] = s.of[a];
-            p.inv[a][j] = s.inv[a];
-            p.invFar[a][j] = s.invFar[a];
+            p.on[a][j] = on[a];
+            p.of[a][j] = of[a];
+            p.inv[a][j] = inv[a];
+            p.invFar[a][j] = invFar[a];
         }
-        p.tMin[j] = s.tMin;
-        p.off = p.r[j].off;
+        const float ftMin = float(tMin);
+        p.tMin[j] = ftMin - std::abs(ftMin) * 0x1p-20f;
+        p.off = r.off;
         return true;
+    }
+    // Ray j's RayData registers as initRay sets them, from the packet's lanes (before the
+    // ray's own leaf tests).
+    static void fillLane(Packet& p, int j) {
+        if ((p.filled >> j) & 1) return;
+        RayData& r = p.r[j];
+        for (int a = 0; a < 3; ++a) {
+            r.on[a] = L::set1(p.on[a][j]);
+            r.of[a] = L::set1(p.of[a][j]);
+            r.inv[a] = L::set1(p.inv[a][j]);
+            r.invFar[a] = L::set1(p.invFar[a][j]);
+        }
+        r.tMin = L::set1(p.tMin[j]);
+        p.filled |= 1u << j;
     }
 
     // The intervals over the rays of `lanes`; lanes outside it get the first ray's
@@ -669,8 +813,61 @@ template <class L, bool Q> struct Bvh::WideWalk {
         float limHi = maxLim(active);
         // Visits a leaf for the rays of m; false when no ray is left (any hit).
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
-            for (m &= active; m; m &= m - 1) {
+            m &= active;
+            if (__builtin_popcount(m) >= kTransposeLanes) {
+                using namespace bvh_detail;
+                const unsigned entered = m;
+                // A lane done (any hit): out of the leaf and the walk.
+                auto done = [&](int j) {
+                    m &= ~(1u << j);
+                    active &= ~(1u << j);
+                    p.lim[j] = -std::numeric_limits<float>::infinity();
+                };
+                const std::uint32_t end = first + count;
+                for (std::uint32_t run = first; run < end && m;) {
+                    const std::uint32_t rEnd = run + b.run_[run];
+                    const std::uint8_t runKind = runOf(b.kind_[run]);
+                    unsigned mt = 0; // lanes tested transposed
+                    if (runKind == kRunSphere) {
+                        if (!p.sphSet) sphereLanes(p, lanes);
+                        mt = m & p.sphLanes;
+                    } else if (runKind == kRunTriangle) {
+                        if (!p.triSet) triangleLanes(p, lanes);
+                        mt = m & p.triLanes;
+                    }
+                    // The other lanes (and the other kinds): each ray's own tests of this
+                    // run (visitLeaf of one run: run_[run] ends it at rEnd).
+                    for (unsigned k = m & ~mt; k; k &= k - 1) {
+                        const int j = __builtin_ctz(k);
+                        fillLane(p, j);
+                        const bool more =
+                            visitLeaf(b, p.r[j], run, rEnd - run, p.lim[j],
+                                      [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
+                        if (kAnyHit && !more) done(j);
+                    }
+                    for (std::uint32_t i = run; i < rEnd && mt; ++i) {
+                        unsigned cand = mt & (runKind == kRunSphere ? sphereLanesTest(b, p, i)
+                                                                    : triangleLanesTest(b, p, i));
+                        for (; cand; cand &= cand - 1) {
+                            const int j = __builtin_ctz(cand);
+                            if (!leaf(j, i, &p.r[j]) && kAnyHit) {
+                                done(j);
+                                mt &= ~(1u << j);
+                            }
+                        }
+                    }
+                    run = rEnd;
+                }
+                if constexpr (!kAnyHit)
+                    for (unsigned k = entered; k; k &= k - 1)
+                        p.lim[__builtin_ctz(k)] = limitOf(tMax[__builtin_ctz(k)]);
+                limV = L::load(p.lim);
+                limHi = maxLim(active);
+                return active != 0;
+            }
+            for (; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
+                fillLane(p, j);
                 const bool more = visitLeaf(b, p.r[j], first, count, p.lim[j],
                                             [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
                 if constexpr (kAnyHit) {
@@ -725,9 +922,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
                             t1);
             }
             int cand = L::le(t0, t1) & validMask(nd);
-            // Each candidate child against each ray (lane j: ray j's own test).
+            // Each candidate child against each ray (lane j: ray j's own test). A child's
+            // distance (its order, and its drop once nearer hits are known) is the interval
+            // test's entry, at most every ray's own entry (monotonic rounding, as above).
             unsigned rays[W];
             alignas(32) float tc[W];
+            if constexpr (!kAnyHit) L::store(tc, t0);
             int mask = 0;
             curRays &= active;
             while (cand) {
@@ -742,14 +942,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 if (!m) continue;
                 mask |= 1 << c;
                 rays[c] = m;
-                if constexpr (!kAnyHit) {
-                    alignas(32) float e[W];
-                    L::store(e, r0);
-                    float lo = std::numeric_limits<float>::infinity();
-                    for (unsigned k = m; k; k &= k - 1)
-                        lo = std::min(lo, e[__builtin_ctz(k)]);
-                    tc[c] = lo;
-                }
             }
             bool haveNext = false;
             if constexpr (kAnyHit) {

@@ -24,9 +24,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <random>
+#include <utility>
 
 using namespace wb::rt;
 
@@ -357,5 +360,73 @@ TEST_CASE("packets: renders with packets equal renders without, any thread count
         opt.packets = true;
         REQUIRE(renderParallel(*sf.scene, cam, model, 70, 50, opt).data == centresSingle.data);
         sf.scene->setAggregate(nullptr);
+    }
+}
+
+TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][packet]") {
+    // A leaf entered by 3 or more rays of a packet tests its spheres and triangles one
+    // primitive against all the lanes (bvh_wide_impl.h, kTransposeLanes), each lane doing its
+    // ray's own float test with that test's margin. Rays from one origin (all 8 lanes, so
+    // the transposed path runs) aimed exactly at triangle vertices and at points on their
+    // edges, and tangent to spheres: the exact code hits (or just misses) them, and a
+    // float test without its margin loses some of those hits (cut either margin to 0 in
+    // sphereLanesTest / triangleLanesTest and this test goes red).
+    std::mt19937_64 g(21);
+    for (double s : {1.0, 1e-30, 1e25}) {
+        INFO("scale " << s);
+        Scene sc;
+        std::vector<std::array<glm::dvec3, 3>> tris;
+        std::vector<std::pair<glm::dvec3, double>> balls;
+        for (int i = 0; i < 300; ++i) {
+            const glm::dvec3 c = rnd3(g, -10 * s, 10 * s);
+            if (i % 2) {
+                const std::array<glm::dvec3, 3> v = {c, c + rnd3(g, -s, s), c + rnd3(g, -s, s)};
+                sc.add(Triangle(v[0], v[1], v[2]), 0);
+                tris.push_back(v);
+            } else {
+                const double r = std::uniform_real_distribution<double>(0.05 * s, 0.6 * s)(g);
+                sc.add(Sphere(c, r), 0);
+                balls.emplace_back(c, r);
+            }
+        }
+        const Trees t(sc);
+        PacketCounts n;
+        std::uniform_real_distribution<double> u(0, 1);
+        for (int i = 0; i < 400; ++i) {
+            Ray rays[kMaxPacket];
+            double tMin[kMaxPacket], tMax[kMaxPacket];
+            const glm::dvec3 o = rnd3(g, -20 * s, 20 * s);
+            // Eight targets near one another (so the lanes share leaves): on one triangle
+            // (its vertices and points on its edges) or on one sphere's silhouette.
+            glm::dvec3 target[kMaxPacket];
+            if (i % 2) {
+                const auto& v = tris[g() % tris.size()];
+                for (int j = 0; j < kMaxPacket; ++j) {
+                    const int e = j % 3;
+                    target[j] = j < 3 ? v[e] : v[e] + u(g) * (v[(e + 1) % 3] - v[e]);
+                }
+            } else {
+                const auto& [c, r] = balls[g() % balls.size()];
+                const glm::dvec3 w = glm::normalize(c - o);
+                const glm::dvec3 a = glm::normalize(glm::cross(w, glm::dvec3(0.3, 0.5, 0.7)));
+                const glm::dvec3 b = glm::cross(w, a);
+                for (int j = 0; j < kMaxPacket; ++j) {
+                    // Tangent: the point of the silhouette seen from o at angle φ.
+                    const double phi = 0.1 * j + 0.01 * double(i % 7);
+                    const double d = glm::length(c - o);
+                    const double back = r * r / d, rad = r * std::sqrt(1 - (r / d) * (r / d));
+                    target[j] = c - back * w + rad * (std::cos(phi) * a + std::sin(phi) * b);
+                }
+            }
+            for (int j = 0; j < kMaxPacket; ++j) {
+                rays[j].origin = o;
+                rays[j].direction = glm::normalize(target[j] - o);
+                tMin[j] = 0;
+                tMax[j] = kInf;
+            }
+            comparePacket(t, rays, tMin, tMax, i % 5 == 4 ? 0x7Fu : 0xFFu, n);
+        }
+        INFO(n.lanes << " lanes, " << n.hits << " hits");
+        REQUIRE(n.hits > n.lanes / 4);
     }
 }
