@@ -24,13 +24,24 @@ double luminance(const glm::dvec3& c) {
 
 int hemicubeFor(const RadiosityState& s) {
     if (s.hemicubeRes > 0) return s.hemicubeRes;
-    // Rows come from ~45 shooting groups but land on ~3.7k small patches (2.9 cm): a patch
-    // gets ~10 pixels of a 128² hemicube, so the hemicube's aliasing shows as blotches. GL:
-    // a hemicube costs ~8 ms up to 256² and ~22 ms at 512² (five viewports and a read-back),
-    // so 512² converges in ~1 s with no visible aliasing; CPU: one BVH ray a pixel, 128² is
-    // the finest that converges in < 3 s here (2.0 s headless; its blotches are the hemicube's
-    // aliasing, which the panel names).
-    return s.method == FfMethod::GlHemicube ? 512 : 128;
+    // The hemicubes shoot from groups of 6×6 default patches (shooterPatchesFor): the light's
+    // groups and every receiver within 2 group diagonals are shot member by member (exact
+    // near field, point_rays.h), so a row's pixels only carry what lies farther away. There
+    // the Cornell box's worst surface against Cycles is 1.9% at 64², 128² and 96² alike
+    // (2.64% at 128² and 2.04% at 512² with the 0.10 m groups before), while a row costs 16×
+    // (GL) or 4× (CPU) less than at the old 512² / 128²: docs/bench/radiosity.md, "Lab 08
+    // defaults". CPU 64²: one BVH ray a pixel, the fewest rays; GL 128²: a GL hemicube's cost
+    // is its five draws of every patch more than its pixels below ~256², so GL keeps the
+    // finer, less aliased picture for the same time.
+    return s.method == FfMethod::GlHemicube ? 128 : 64;
+}
+
+double shooterPatchesFor(FfMethod m) {
+    // Rays gather each row at the receivers (exact F to the group's outline): larger groups
+    // made it worse (0.10 m 2.29%, 0.12 m 2.62%, 0.14 m 2.62% worst surface against Cycles).
+    // The hemicubes' rows see a group from its centre: 0.14 m groups are as close as 0.10 m
+    // (1.9% against 2.0-2.6%) and need 133 rows instead of 248.
+    return m == FfMethod::Rays ? kShooterPatches : kShooterPatchesHemicube;
 }
 
 std::vector<KeyHelp> RadiosityLab::keys() const {
@@ -284,17 +295,18 @@ bool RadiosityLab::loadScene(const std::string& name, double patchSize) {
     stopRun();
     try {
         rad::Scene scene = rad::sceneByName(name);
-        if (patchSize <= 0) patchSize = defaultPatchSize(scene);
+        // Meshes the scene twice to size it: once here (it was made twice more for the groups).
+        const double defaultEdge = defaultPatchSize(scene);
+        if (patchSize <= 0) patchSize = defaultEdge;
         rad::PatchMesh mesh;
-        // Shooting groups of ~4×4 default patches (the Cornell box: 0.10 m, 252 groups), fixed
-        // per scene: [ ] and a refine the receivers, the shooters stay (none when the patches
-        // are as large). A group shoots from its centroid, so a receiver near a large group
-        // gets a point-source form factor: 11×11 groups (0.31 m) converged fastest but put
-        // the block faces 10-96% off the Cycles reference (docs/bench/radiosity.md); 0.1 m
-        // keeps every surface within ~6% and converges in 0.5-2.6 s headless on this
-        // 2-core machine (rays / GL / CPU hemicube), under item 7's 3 s.
+        // Shooting groups of ~4×4 default patches for rays, ~6×6 for the hemicubes (the
+        // Cornell box: 0.10 m, 252 groups; 0.14 m, 133 groups: shooterPatchesFor), fixed per
+        // scene and method: [ ] and a refine the receivers, the shooters stay (none when the
+        // patches are as large). 11×11 groups (0.31 m) converged fastest but put the block
+        // faces 10-96% off the Cycles reference before the near field (docs/bench/radiosity.md).
+        defaultEdge_ = defaultEdge;
         s.shooterEdge =
-            shooterOption_ >= 0 ? shooterOption_ : kShooterPatches * defaultPatchSize(scene);
+            shooterOption_ >= 0 ? shooterOption_ : shooterPatchesFor(s.method) * defaultEdge_;
         if (!meshChecked(scene, patchSize, mesh)) return false;
         auto m = std::make_unique<Model>();
         m->scene = std::move(scene);
@@ -423,6 +435,14 @@ void RadiosityLab::setMethod(FfMethod m) {
     }
     stopRun();
     s.method = m;
+    // The method's own group size (shooterPatchesFor), unless --shooting-patch or the slider
+    // chose one: new groups need a new mesh (the patches are the same, the groups differ).
+    const double edge = shooterPatchesFor(m) * defaultEdge_;
+    if (shooterOption_ < 0 && defaultEdge_ > 0 && edge != s.shooterEdge) {
+        s.shooterEdge = edge;
+        remesh(s.patchSize); // installs the mesh and rebuilds the solver
+        return;
+    }
     rebuildSolver();
 }
 

@@ -145,11 +145,15 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         for (std::size_t m = 0; m < members; ++m)
             memberPieces.push_back(exposedPieces(mesh, bvh, sg.members[m]));
     // Near-field receivers: marked, their F not computed (the solver ignores their entries).
-    std::vector<char> isNear;
+    // nearIndex[j]: j's place in near->receivers (−1: not near), to read the visibility its
+    // near field has already cast from j to every member (GroupNearField::visible).
+    std::vector<int> nearIndex;
+    const bool nearVisible =
+        near && near->members == members && near->visible.size() == near->receivers.size() * members;
     if (near) {
-        isNear.assign(n, 0);
-        for (int j : near->receivers)
-            isNear[static_cast<std::size_t>(j)] = 1;
+        nearIndex.assign(n, -1);
+        for (std::size_t r = 0; r < near->receivers.size(); ++r)
+            nearIndex[static_cast<std::size_t>(near->receivers[r])] = static_cast<int>(r);
     }
     // Whether pointToPolygon(x, nrm, ·) could be > 0: some vertex of G (hull, or the members'
     // pieces) strictly in front of x's tangent plane, the test its clipping makes first.
@@ -183,7 +187,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         // floor group's centroid lay under the block (the face came out 92% dark).
         const double tiny = 1e-9 * std::sqrt(sg.area);
         if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) return;
-        const bool nearJ = near && isNear[j];
+        const bool nearJ = near && nearIndex[j] >= 0;
         double f = nearJ ? (inFront(p.centre, p.normal) ? 1.0 : 0.0)
                          : formFactorAt(p.centre, p.normal);
         // Receivers within two of their own sizes of G's plane (the walls meeting G along an
@@ -224,7 +228,13 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                              std::max(0.0, -glm::dot(sg.normal, d)) / (r2 * r2 + 1e-300);
             if (w <= 0.0) continue;
             allW += w;
-            if (bvh.visible(from, target[m])) {
+            // A near receiver's ray from `from` to target[m] was cast by its near field (the
+            // same two points, so the same answer): read it instead of casting it again.
+            const bool vis =
+                nearJ && nearVisible
+                    ? near->visible[static_cast<std::size_t>(nearIndex[j]) * members + m] != 0
+                    : bvh.visible(from, target[m]);
+            if (vis) {
                 seenW += w;
                 seen[m] = true;
             }
@@ -269,6 +279,8 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         nf.receivers.push_back(static_cast<int>(j));
     }
     nf.w.assign(nf.receivers.size() * members, 0.0f);
+    nf.members = members;
+    nf.visible.assign(nf.receivers.size() * members, 0);
     tbb::parallel_for(std::size_t(0), nf.receivers.size(), [&](std::size_t r) {
         const int j = nf.receivers[r];
         const Patch& p = mesh.patches[static_cast<std::size_t>(j)];
@@ -294,7 +306,14 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
                 for (const auto& piece : pieces[m])
                     f += pointToPolygon(x, p.normal, piece);
             f /= static_cast<double>(pts.size());
-            if (f <= 0.0 || !bvh.visible(from, target[m])) continue;
+            // The ray is cast where w needs it (f > 0) or where the group's row samples it
+            // (groupGatherRow: both cosines at the centres > 0); the row reads it from here.
+            const glm::dvec3 d = target[m] - from;
+            const bool sampled = glm::dot(p.normal, d) > 0.0 && -glm::dot(sg.normal, d) > 0.0;
+            if (f <= 0.0 && !sampled) continue;
+            const bool vis = bvh.visible(from, target[m]);
+            nf.visible[r * members + m] = vis ? 1 : 0;
+            if (f <= 0.0 || !vis) continue;
             nf.w[r * members + m] = static_cast<float>(f);
         }
     });

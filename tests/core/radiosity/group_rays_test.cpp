@@ -185,3 +185,30 @@ TEST_CASE("group near field: shooting members one by one near the group", "[radi
     CHECK(std::abs(lab - members) < std::abs(pooled - members));
     CHECK(lab == Approx(members).epsilon(0.01));
 }
+
+TEST_CASE("group rays: a near receiver's visibility read from its near field is the cast one",
+          "[radiosity]") {
+    // groupGatherRow reads the near receivers' visibility samples from the near field
+    // (GroupNearField::visible: the same rays, same end points) instead of casting them again.
+    // Bit-identical to casting them: the same row with `visible` emptied (the casting path)
+    // must match entry for entry, for every group of the Cornell box, the light's included
+    // (its near field is every receiver). A wrong index into `visible` changes A_live and so
+    // every entry of the row.
+    const PatchMesh m = meshScene(cornellBox(), MeshConfig{0.05, 0.2});
+    const PatchBvh bvh(m);
+    std::vector<float> read, cast;
+    size_t nearReceivers = 0;
+    for (size_t g = 0; g < m.groups.size(); ++g) {
+        const double diagonal = std::sqrt(2.0 * m.groups[g].area);
+        GroupNearField nf = groupNearField(m, bvh, int(g), 2.0 * diagonal);
+        nearReceivers += nf.receivers.size();
+        REQUIRE(nf.visible.size() == nf.receivers.size() * m.groups[g].members.size());
+        groupGatherRow(m, bvh, int(g), 4, read, &nf);
+        nf.visible.clear();
+        groupGatherRow(m, bvh, int(g), 4, cast, &nf);
+        INFO("group " << g << " of " << m.groups.size());
+        REQUIRE(read.size() == cast.size());
+        CHECK(std::equal(read.begin(), read.end(), cast.begin()));
+    }
+    CHECK(nearReceivers > 100); // the case is exercised
+}

@@ -39,6 +39,12 @@ struct GroupNearField {
     // Every receiver in front of the group is in the near field (an emitter's groups): the
     // group's row is then not needed (the solver does not ask for it).
     bool everyReceiver = false;
+    // Whether the ray from receiver r's centre to member m's centre is unblocked (same layout
+    // as w; 0 also where it was not cast: member behind the receiver's plane or the receiver
+    // behind the member's). groupGatherRow reads it for the near receivers' visibility samples
+    // instead of casting the same rays again.
+    std::size_t members = 0;
+    std::vector<unsigned char> visible;
 };
 GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
