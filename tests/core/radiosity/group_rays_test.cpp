@@ -6,6 +6,7 @@
 #include "core/radiosity/patch_bvh.h"
 #include "core/radiosity/point_rays.h"
 #include "core/radiosity/scenes.h"
+#include "core/raytrace/ray.h"
 
 #include <catch2/catch.hpp>
 
@@ -202,7 +203,24 @@ TEST_CASE("group rays: a near receiver's visibility read from its near field is 
         const double diagonal = std::sqrt(2.0 * m.groups[g].area);
         GroupNearField nf = groupNearField(m, bvh, int(g), 2.0 * diagonal);
         nearReceivers += nf.receivers.size();
-        REQUIRE(nf.visible.size() == nf.receivers.size() * m.groups[g].members.size());
+        const size_t members = m.groups[g].members.size();
+        REQUIRE(nf.visible.size() == nf.receivers.size() * members);
+        // What the row reads, against the BVH asked here: every pair the row samples (both
+        // cosines at the centres > 0) holds the answer of the ray between the same points.
+        size_t wrong = 0;
+        for (size_t r = 0; r < nf.receivers.size(); ++r) {
+            const Patch& pj = m.patches[size_t(nf.receivers[r])];
+            const glm::dvec3 from = wb::rt::offsetRayOrigin(pj.centre, pj.normal);
+            for (size_t k = 0; k < members; ++k) {
+                const Patch& pm = m.patches[size_t(m.groups[g].members[k])];
+                const glm::dvec3 to = wb::rt::offsetRayOrigin(pm.centre, pm.normal);
+                const glm::dvec3 d = to - from;
+                if (!(glm::dot(pj.normal, d) > 0.0 && -glm::dot(m.groups[g].normal, d) > 0.0))
+                    continue;
+                if ((nf.visible[r * members + k] != 0) != bvh.visible(from, to)) ++wrong;
+            }
+        }
+        CHECK(wrong == 0);
         groupGatherRow(m, bvh, int(g), 4, read, &nf);
         nf.visible.clear();
         groupGatherRow(m, bvh, int(g), 4, cast, &nf);
