@@ -3,11 +3,14 @@
 #include "core/radiosity/closed_forms.h"
 #include "core/raytrace/ray.h"
 
+#include <glm/gtc/constants.hpp>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -57,6 +60,66 @@ std::vector<std::vector<glm::dvec3>> exposedPieces(const PatchMesh& mesh, const 
         }
     }
     return out;
+}
+
+// One edge's term of Lambert's contour integral, exactly as pointToPolygon sums it for a
+// polygon wholly in front of the point (closed_forms.cpp): a, b the edge's ends minus the
+// point. term(b, a) = −term(a, b) bit for bit (the cross product's components and the dot
+// products negate exactly), so two members sharing an edge can share its atan2.
+double contourTerm(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& normal) {
+    const glm::dvec3 c = glm::cross(a, b);
+    const double cl = glm::length(c);
+    if (!(cl > 0.0)) return 0.0; // pointToPolygon skips it: adding +0 leaves |sum| as it is
+    return std::atan2(cl, glm::dot(a, b)) * glm::dot(normal, c) / cl;
+}
+
+// A group's members as a grid of quads share their inner edges: a 6×6 group has 84 distinct
+// edges for 144 member edges. The near field evaluates F(x → member) for every member from
+// the same point x, so each distinct edge's term is computed once per point (the atan2 was
+// ~20% of a default run: docs/bench/radiosity.md, "Lab 08 defaults").
+struct SharedContours {
+    std::vector<glm::dvec3> vertex;       // the members' corners, each once
+    std::vector<std::array<int, 2>> edge; // vertex pairs, each undirected edge once
+    // Per member: its corners and its edges in polygon order (edge id × 2 + 1 if traversed
+    // from edge[1] to edge[0]); empty when the member is not its whole polygon (ragged:
+    // pieces from exposedPieces), whose F is pointToPolygon's over its pieces.
+    std::vector<std::vector<int>> corner, edgeOf;
+};
+
+SharedContours sharedContours(const PatchMesh& mesh, const ShooterGroup& sg,
+                              const std::vector<std::vector<std::vector<glm::dvec3>>>& pieces) {
+    SharedContours sc;
+    std::map<int, int> vertexOf;                 // mesh vertex id -> sc.vertex
+    std::map<std::pair<int, int>, int> edgeOf;   // (low, high) sc.vertex ids -> sc.edge
+    sc.corner.resize(sg.members.size());
+    sc.edgeOf.resize(sg.members.size());
+    for (std::size_t m = 0; m < sg.members.size(); ++m) {
+        const Patch& p = mesh.patches[static_cast<std::size_t>(sg.members[m])];
+        const auto c = mesh.cornersOf(sg.members[m]);
+        if (pieces[m].size() != 1 || pieces[m][0] != c) continue; // ragged: its own pieces
+        for (int k = 0; k < p.cornerCount; ++k) {
+            const int id = p.corners[static_cast<std::size_t>(k)];
+            auto it = vertexOf.find(id);
+            if (it == vertexOf.end()) {
+                it = vertexOf.emplace(id, static_cast<int>(sc.vertex.size())).first;
+                sc.vertex.push_back(mesh.vertices[static_cast<std::size_t>(id)]);
+            }
+            sc.corner[m].push_back(it->second);
+        }
+        const std::size_t q = sc.corner[m].size();
+        for (std::size_t k = 0; k < q; ++k) {
+            const int a = sc.corner[m][k], b = sc.corner[m][(k + 1) % q];
+            const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+            auto it = edgeOf.find(key);
+            if (it == edgeOf.end()) {
+                it = edgeOf.emplace(key, static_cast<int>(sc.edge.size())).first;
+                sc.edge.push_back({a, b});
+            }
+            const bool reversed = sc.edge[static_cast<std::size_t>(it->second)][0] != a;
+            sc.edgeOf[m].push_back(it->second * 2 + (reversed ? 1 : 0));
+        }
+    }
+    return sc;
 }
 
 } // namespace
@@ -254,7 +317,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         x = static_cast<float>(x / live);
 }
 
-GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius) {
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
+                              bool shareEdges) {
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
     const std::size_t members = sg.members.size();
     GroupNearField nf;
@@ -267,6 +331,7 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         pieces[m] = exposedPieces(mesh, bvh, id);
         target[m] = rt::offsetRayOrigin(p.centre, p.normal);
     }
+    const SharedContours shared = shareEdges ? sharedContours(mesh, sg, pieces) : SharedContours{};
     const double tiny = 1e-9 * std::sqrt(sg.area);
     nf.everyReceiver = true;
     for (std::size_t j = 0; j < mesh.patches.size(); ++j) {
@@ -300,12 +365,47 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
             pts.push_back(p.centre);
         }
         const glm::dvec3 from = rt::offsetRayOrigin(p.centre, p.normal);
+        // F(x → member) summed over the points x, member by member in the order of the
+        // points (the same sums as pointToPolygon per member: bit-identical, tested).
+        std::vector<double> fm(members, 0.0);
+        const std::size_t nv = shared.vertex.size(), ne = shared.edge.size();
+        std::vector<glm::dvec3> a(nv);
+        std::vector<char> front(nv);
+        std::vector<double> term(ne);
+        std::vector<char> known(ne);
+        for (const glm::dvec3& x : pts) {
+            for (std::size_t v = 0; v < nv; ++v) {
+                a[v] = shared.vertex[v] - x;
+                front[v] = glm::dot(a[v], p.normal) > 0.0 ? 1 : 0;
+            }
+            std::fill(known.begin(), known.end(), 0);
+            for (std::size_t m = 0; m < members; ++m) {
+                bool whole = shareEdges && !shared.corner[m].empty();
+                if (whole)
+                    for (int v : shared.corner[m])
+                        whole = whole && front[static_cast<std::size_t>(v)];
+                if (!whole) { // clipped by x's tangent plane, or ragged: on its own
+                    for (const auto& piece : pieces[m])
+                        fm[m] += pointToPolygon(x, p.normal, piece);
+                    continue;
+                }
+                double sum = 0.0;
+                for (int code : shared.edgeOf[m]) {
+                    const auto e = static_cast<std::size_t>(code / 2);
+                    if (!known[e]) {
+                        term[e] = contourTerm(a[static_cast<std::size_t>(shared.edge[e][0])],
+                                              a[static_cast<std::size_t>(shared.edge[e][1])],
+                                              p.normal);
+                        known[e] = 1;
+                    }
+                    sum += code % 2 ? -term[e] : term[e];
+                }
+                const double f = std::abs(sum) / (2.0 * glm::pi<double>());
+                fm[m] += std::isfinite(f) ? std::min(f, 1.0) : 0.0;
+            }
+        }
         for (std::size_t m = 0; m < members; ++m) {
-            double f = 0.0;
-            for (const glm::dvec3& x : pts)
-                for (const auto& piece : pieces[m])
-                    f += pointToPolygon(x, p.normal, piece);
-            f /= static_cast<double>(pts.size());
+            const double f = fm[m] / static_cast<double>(pts.size());
             // The ray is cast where w needs it (f > 0) or where the group's row samples it
             // (groupGatherRow: both cosines at the centres > 0); the row reads it from here.
             const glm::dvec3 d = target[m] - from;

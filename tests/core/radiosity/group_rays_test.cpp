@@ -14,6 +14,7 @@
 #include "core/radiosity/solver.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <memory>
 
@@ -229,4 +230,31 @@ TEST_CASE("group rays: a near receiver's visibility read from its near field is 
         CHECK(std::equal(read.begin(), read.end(), cast.begin()));
     }
     CHECK(nearReceivers > 100); // the case is exercised
+}
+
+TEST_CASE("group near field: members sharing an edge share its term, bit for bit", "[radiosity]") {
+    // groupNearField computes each distinct edge of the members' contours once per receiving
+    // point (shareEdges); each member's own pointToPolygon is the reference. Every group of
+    // the Cornell box (the light's with every receiver; floor groups cut by the blocks, whose
+    // ragged members keep their own pieces), at the lab's radius: w and the visibility must
+    // be equal bit for bit (exact: the shared term negates exactly for the other direction).
+    const PatchMesh m = meshScene(cornellBox(), MeshConfig{0.05, 0.2});
+    const PatchBvh bvh(m);
+    size_t entries = 0, nonzero = 0;
+    for (size_t g = 0; g < m.groups.size(); ++g) {
+        const bool emits = glm::length(m.surfaces[size_t(m.groups[g].surface)].emission) > 0.0;
+        const double radius = emits ? 1e9 : 2.0 * std::sqrt(2.0 * m.groups[g].area);
+        const GroupNearField shared = groupNearField(m, bvh, int(g), radius, true);
+        const GroupNearField own = groupNearField(m, bvh, int(g), radius, false);
+        INFO("group " << g);
+        REQUIRE(shared.receivers == own.receivers);
+        REQUIRE(shared.w.size() == own.w.size());
+        CHECK(std::memcmp(shared.w.data(), own.w.data(), own.w.size() * sizeof(float)) == 0);
+        CHECK(shared.visible == own.visible);
+        entries += own.w.size();
+        for (float w : own.w)
+            nonzero += w > 0.0f;
+    }
+    CHECK(nonzero > 1000); // the case is exercised
+    INFO(entries);
 }

@@ -46,7 +46,11 @@ struct GroupNearField {
     std::size_t members = 0;
     std::vector<unsigned char> visible;
 };
-GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius);
+// shareEdges: members sharing an edge share its contour term, computed once per receiving
+// point (bit-identical to each member's own pointToPolygon; false computes it that way, the
+// reference the tests compare with).
+GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
+                              bool shareEdges = true);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g);
 
