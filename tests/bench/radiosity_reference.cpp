@@ -10,7 +10,8 @@
 //   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
 // METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); PATCH_M
-// and SHOOTER_M "lab" = lab 08's default edges (SHOOTER_M "labhemi": the hemicubes' groups). Default settings: `settings.empty()` below.
+// and SHOOTER_M "lab" = lab 08's default edges (SHOOTER_M "labhemi": the hemicubes' groups).
+// Default settings: `settings.empty()` below.
 // Experiments (docs/bench/radiosity.md, "Why ours was off"): --black-except NAME sets every
 // other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
 // FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
