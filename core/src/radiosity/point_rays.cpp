@@ -89,8 +89,8 @@ struct SharedContours {
 SharedContours sharedContours(const PatchMesh& mesh, const ShooterGroup& sg,
                               const std::vector<std::vector<std::vector<glm::dvec3>>>& pieces) {
     SharedContours sc;
-    std::map<int, int> vertexOf;                 // mesh vertex id -> sc.vertex
-    std::map<std::pair<int, int>, int> edgeOf;   // (low, high) sc.vertex ids -> sc.edge
+    std::map<int, int> vertexOf;               // mesh vertex id -> sc.vertex
+    std::map<std::pair<int, int>, int> edgeOf; // (low, high) sc.vertex ids -> sc.edge
     sc.corner.resize(sg.members.size());
     sc.edgeOf.resize(sg.members.size());
     for (std::size_t m = 0; m < sg.members.size(); ++m) {
@@ -211,8 +211,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
     // nearIndex[j]: j's place in near->receivers (−1: not near), to read the visibility its
     // near field has already cast from j to every member (GroupNearField::visible).
     std::vector<int> nearIndex;
-    const bool nearVisible =
-        near && near->members == members && near->visible.size() == near->receivers.size() * members;
+    const bool nearVisible = near && near->members == members &&
+                             near->visible.size() == near->receivers.size() * members;
     if (near) {
         nearIndex.assign(n, -1);
         for (std::size_t r = 0; r < near->receivers.size(); ++r)
@@ -393,9 +393,9 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
                 for (int code : shared.edgeOf[m]) {
                     const auto e = static_cast<std::size_t>(code / 2);
                     if (!known[e]) {
-                        term[e] = contourTerm(a[static_cast<std::size_t>(shared.edge[e][0])],
-                                              a[static_cast<std::size_t>(shared.edge[e][1])],
-                                              p.normal);
+                        term[e] =
+                            contourTerm(a[static_cast<std::size_t>(shared.edge[e][0])],
+                                        a[static_cast<std::size_t>(shared.edge[e][1])], p.normal);
                         known[e] = 1;
                     }
                     sum += code % 2 ? -term[e] : term[e];

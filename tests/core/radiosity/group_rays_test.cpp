@@ -14,8 +14,8 @@
 #include "core/radiosity/solver.h"
 
 #include <algorithm>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 using namespace wb::rad;
