@@ -74,7 +74,7 @@ void RadiosityLab::gui() {
             if (glm::length(model_->mesh.surfaces[size_t(g.surface)].emission) > 0.0) ++lightGroups;
         if (lightGroups > 0)
             ImGui::TextWrapped(
-                "%s", wb::trf("the light's %zu shooting patches need no row of F: each of their "
+                "%s", wb::trf("the light's shooting patches (%zu) need no row of F: each of their "
                               "patches shoots to every patch on its own (§1.14)",
                               lightGroups)
                           .c_str());
