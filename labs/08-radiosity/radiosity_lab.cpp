@@ -27,13 +27,13 @@ int hemicubeFor(const RadiosityState& s) {
     // The hemicubes shoot from groups of 6×6 default patches (shooterPatchesFor): the light's
     // groups and every receiver within 2 group diagonals are shot member by member (exact
     // near field, point_rays.h), so a row's pixels only carry what lies farther away. There
-    // the Cornell box's worst surface against Cycles is 1.9% at 64², 128² and 96² alike
-    // (2.64% at 128² and 2.04% at 512² with the 0.10 m groups before), while a row costs 16×
-    // (GL) or 4× (CPU) less than at the old 512² / 128²: docs/bench/radiosity.md, "Lab 08
-    // defaults". CPU 64²: one BVH ray a pixel, the fewest rays; GL 128²: a GL hemicube's cost
-    // is its five draws of every patch more than its pixels below ~256², so GL keeps the
-    // finer, less aliased picture for the same time.
-    return s.method == FfMethod::GlHemicube ? 128 : 64;
+    // the Cornell box's worst surface against Cycles is 1.93% at 128² (2.64% at 128² and 2.04%
+    // at 512² with the 0.10 m groups before; 1.91% at 64², 1.96% at 96²): docs/bench/
+    // radiosity.md, "Lab 08 defaults". 128² for both: 64² and 96² alias visibly (dark and
+    // reddish columns of patches on the short block's front face, lit by the walls at a
+    // grazing angle), 128² looks as the old defaults did. The GL row costs 16× fewer pixels
+    // than at 512²; the CPU row the same rays as before, for 132 rows instead of 248.
+    return 128;
 }
 
 double shooterPatchesFor(FfMethod m) {

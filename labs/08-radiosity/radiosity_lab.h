@@ -39,7 +39,7 @@ struct RadiosityState {
                               // 0 before a scene is loaded: sized for ~kDefaultPatches
     double shooterEdge = 0.0; // metres, shooting groups (0: every patch shoots itself)
     int hemicubeRes = 0;      // pixels along a full hemicube face; 0: the method's default
-                              // (GL 128, CPU 64: see hemicubeFor())
+                              // (128 for both: see hemicubeFor())
     int raySamples = 4;       // k rays per patch pair / per group-to-patch pair (method 1): the
                               // group rows' F is exact (point to polygon), k only samples V
     double tolerance = 1e-3;  // a solve stops when the residual (unshot power / emitted) is below

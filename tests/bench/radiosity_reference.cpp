@@ -136,13 +136,13 @@ int main(int argc, char** argv) {
         settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
                     // shooting groups of 4.25 patches (0.10 m) for rays and 6 (0.14 m) for the
                     // hemicubes, stop at unshot 1e-3, rows by the keys' methods: rays k = 4
-                    // gathered at the receivers (key 1, the default), CPU hemicube 64² (key 2),
+                    // gathered at the receivers (key 1, the default), CPU hemicube 128² (key 2),
                     // GL hemicube 128² (key 3: core's CPU hemicube at 128² stands in, they
                     // differ at edge pixels only).
                     parse("default, rays k=4:lab:grouprays:4:lab:1e-3"),
                     // The hemicubes shoot from 0.14 m groups (lab08fast: docs/bench/radiosity.md,
                     // "Lab 08 defaults"); before, 0.10 m groups at 128² and 512².
-                    parse("default, CPU hemicube 64:lab:hemicube:64:labhemi:1e-3"),
+                    parse("default, CPU hemicube 128:lab:hemicube:128:labhemi:1e-3"),
                     parse("default, GL hemicube 128 (as CPU 128):lab:hemicube:128:labhemi:1e-3"),
                     // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
                     parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
