@@ -24,13 +24,24 @@ double luminance(const glm::dvec3& c) {
 
 int hemicubeFor(const RadiosityState& s) {
     if (s.hemicubeRes > 0) return s.hemicubeRes;
-    // Rows come from ~45 shooting groups but land on ~3.7k small patches (2.9 cm): a patch
-    // gets ~10 pixels of a 128² hemicube, so the hemicube's aliasing shows as blotches. GL:
-    // a hemicube costs ~8 ms up to 256² and ~22 ms at 512² (five viewports and a read-back),
-    // so 512² converges in ~1 s with no visible aliasing; CPU: one BVH ray a pixel, 128² is
-    // the finest that converges in < 3 s here (2.0 s headless; its blotches are the hemicube's
-    // aliasing, which the panel names).
-    return s.method == FfMethod::GlHemicube ? 512 : 128;
+    // The light's groups and every receiver within 2 group diagonals are shot member by
+    // member (exact near field, point_rays.h), so a row's pixels only carry what lies farther
+    // away. With the groups' light fitted as a plane and the 1e-4 stop, the Cornell box's worst
+    // surface against Cycles at 128² is 0.97% (0.99% at 512²): docs/bench/radiosity.md, "Lab 08
+    // defaults". 128² for both: 64² and 96² alias visibly (dark and reddish columns of patches
+    // on the short block's front face, lit by the walls at a grazing angle). The GL row costs
+    // 16× fewer pixels than at 512².
+    return 128;
+}
+
+double shooterPatchesFor(FfMethod m) {
+    // Rays gather each row at the receivers (exact F to the group's outline): larger groups
+    // made it worse (0.10 m 2.29%, 0.12 m 2.62%, 0.14 m 2.62% worst surface against Cycles,
+    // before the plane fit). The hemicubes: 0.14 m groups (133 rows instead of 248) were as close
+    // as 0.10 m with flat pooling (1.9%), but with the plane fit and the 1e-4 stop only 0.10 m
+    // keeps every surface within 1% (0.97%; 0.12 m 1.50%, 0.14 m 1.13%, 0.14 m at 256² 1.33%:
+    // the ceiling left of the light), so both constants are 4.25 today.
+    return m == FfMethod::Rays ? kShooterPatches : kShooterPatchesHemicube;
 }
 
 std::vector<KeyHelp> RadiosityLab::keys() const {
@@ -284,17 +295,18 @@ bool RadiosityLab::loadScene(const std::string& name, double patchSize) {
     stopRun();
     try {
         rad::Scene scene = rad::sceneByName(name);
-        if (patchSize <= 0) patchSize = defaultPatchSize(scene);
+        // Meshes the scene twice to size it: once here (it was made twice more for the groups).
+        const double defaultEdge = defaultPatchSize(scene);
+        if (patchSize <= 0) patchSize = defaultEdge;
         rad::PatchMesh mesh;
-        // Shooting groups of ~4×4 default patches (the Cornell box: 0.10 m, 252 groups), fixed
-        // per scene: [ ] and a refine the receivers, the shooters stay (none when the patches
-        // are as large). A group shoots from its centroid, so a receiver near a large group
-        // gets a point-source form factor: 11×11 groups (0.31 m) converged fastest but put
-        // the block faces 10-96% off the Cycles reference (docs/bench/radiosity.md); 0.1 m
-        // keeps every surface within ~6% and converges in 0.5-2.6 s headless on this
-        // 2-core machine (rays / GL / CPU hemicube), under item 7's 3 s.
+        // Shooting groups of ~4×4 default patches (the Cornell box: 0.10 m, 252 groups; per
+        // method: shooterPatchesFor), fixed per
+        // scene and method: [ ] and a refine the receivers, the shooters stay (none when the
+        // patches are as large). 11×11 groups (0.31 m) converged fastest but put the block
+        // faces 10-96% off the Cycles reference before the near field (docs/bench/radiosity.md).
+        defaultEdge_ = defaultEdge;
         s.shooterEdge =
-            shooterOption_ >= 0 ? shooterOption_ : kShooterPatches * defaultPatchSize(scene);
+            shooterOption_ >= 0 ? shooterOption_ : shooterPatchesFor(s.method) * defaultEdge_;
         if (!meshChecked(scene, patchSize, mesh)) return false;
         auto m = std::make_unique<Model>();
         m->scene = std::move(scene);
@@ -423,6 +435,14 @@ void RadiosityLab::setMethod(FfMethod m) {
     }
     stopRun();
     s.method = m;
+    // The method's own group size (shooterPatchesFor), unless --shooting-patch or the slider
+    // chose one: new groups need a new mesh (the patches are the same, the groups differ).
+    const double edge = shooterPatchesFor(m) * defaultEdge_;
+    if (shooterOption_ < 0 && defaultEdge_ > 0 && edge != s.shooterEdge) {
+        s.shooterEdge = edge;
+        remesh(s.patchSize); // installs the mesh and rebuilds the solver
+        return;
+    }
     rebuildSolver();
 }
 

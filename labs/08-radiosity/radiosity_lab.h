@@ -39,7 +39,7 @@ struct RadiosityState {
                               // 0 before a scene is loaded: sized for ~kDefaultPatches
     double shooterEdge = 0.0; // metres, shooting groups (0: every patch shoots itself)
     int hemicubeRes = 0;      // pixels along a full hemicube face; 0: the method's default
-                              // (GL 512, CPU 128: see hemicubeFor())
+                              // (128 for both: see hemicubeFor())
     int raySamples = 4;       // k rays per patch pair / per group-to-patch pair (method 1): the
                               // group rows' F is exact (point to polygon), k only samples V
     // A solve stops when the residual (unshot power / emitted) is below. 1e-4, not 1e-3: the
@@ -61,8 +61,12 @@ struct RadiosityState {
 constexpr int kDefaultPatches = 3700;
 // Patch count no way of setting the patch size (flag, key, slider, adaptive) may exceed.
 constexpr int kMaxPatches = 40000;
-// Edge of a default shooting group in default patch edges (radiosity_lab.cpp says why 4.25).
+// Edge of a default shooting group in default patch edges, per method (shooterPatchesFor):
+// 4.25 for each (0.10 m in the Cornell box, 252 groups): larger groups put a surface over 1%
+// off Cycles (shooterPatchesFor; docs/bench/radiosity.md, "Lab 08 defaults").
 constexpr double kShooterPatches = 4.25;
+constexpr double kShooterPatchesHemicube = 4.25;
+double shooterPatchesFor(FfMethod m);
 // Hemicube resolution a method uses when none is set (--hemicube or the slider).
 int hemicubeFor(const RadiosityState& s);
 

@@ -151,6 +151,7 @@ class RadiosityLab : public Lab {
     double sceneRadius_ = 1.0;
     glm::dvec3 sceneCentre_{0.0};
     double patchSizeOption_ = -1.0;
+    double defaultEdge_ = 0.0;    // the scene's default patch edge (groups are sized by it)
     double shooterOption_ = -1.0; // --shooting-patch (−1: the scene's default)
     std::string message_, refineNote_;
     bool failed_ = false; // headless: no PNG, exit 1 (the scene could not be meshed, a bad click)

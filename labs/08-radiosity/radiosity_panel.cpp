@@ -66,6 +66,19 @@ void RadiosityLab::gui() {
                                groups ? wb::tr("one per shooting patch") : wb::tr("one per patch"),
                                ff.seconds())
                            .c_str());
+    if (groups) {
+        // Why fewer rows than shooting patches (248 of 252 in the Cornell box): the light's
+        // groups are shot member by member to every receiver (form_factors.cpp, nearField).
+        size_t lightGroups = 0;
+        for (const rad::ShooterGroup& g : model_->mesh.groups)
+            if (glm::length(model_->mesh.surfaces[size_t(g.surface)].emission) > 0.0) ++lightGroups;
+        if (lightGroups > 0)
+            ImGui::TextWrapped(
+                "%s", wb::trf("the light's shooting patches (%zu) need no row of F: each of their "
+                              "patches shoots to every patch on its own (§1.14)",
+                              lightGroups)
+                          .c_str());
+    }
     ImGui::TextWrapped("%s", wb::trf("memory for F: %.1f MiB (%s)",
                                      double(ff.bytes()) / (1024.0 * 1024.0),
                                      groups        ? wb::tr("the shooting patches' rows")

@@ -3,11 +3,14 @@
 #include "core/radiosity/closed_forms.h"
 #include "core/raytrace/ray.h"
 
+#include <glm/gtc/constants.hpp>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -57,6 +60,66 @@ std::vector<std::vector<glm::dvec3>> exposedPieces(const PatchMesh& mesh, const 
         }
     }
     return out;
+}
+
+// One edge's term of Lambert's contour integral, exactly as pointToPolygon sums it for a
+// polygon wholly in front of the point (closed_forms.cpp): a, b the edge's ends minus the
+// point. term(b, a) = −term(a, b) bit for bit (the cross product's components and the dot
+// products negate exactly), so two members sharing an edge can share its atan2.
+double contourTerm(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& normal) {
+    const glm::dvec3 c = glm::cross(a, b);
+    const double cl = glm::length(c);
+    if (!(cl > 0.0)) return 0.0; // pointToPolygon skips it: adding +0 leaves |sum| as it is
+    return std::atan2(cl, glm::dot(a, b)) * glm::dot(normal, c) / cl;
+}
+
+// A group's members as a grid of quads share their inner edges: a 6×6 group has 84 distinct
+// edges for 144 member edges. The near field evaluates F(x → member) for every member from
+// the same point x, so each distinct edge's term is computed once per point (the atan2 was
+// ~20% of a default run: docs/bench/radiosity.md, "Lab 08 defaults").
+struct SharedContours {
+    std::vector<glm::dvec3> vertex;       // the members' corners, each once
+    std::vector<std::array<int, 2>> edge; // vertex pairs, each undirected edge once
+    // Per member: its corners and its edges in polygon order (edge id × 2 + 1 if traversed
+    // from edge[1] to edge[0]); empty when the member is not its whole polygon (ragged:
+    // pieces from exposedPieces), whose F is pointToPolygon's over its pieces.
+    std::vector<std::vector<int>> corner, edgeOf;
+};
+
+SharedContours sharedContours(const PatchMesh& mesh, const ShooterGroup& sg,
+                              const std::vector<std::vector<std::vector<glm::dvec3>>>& pieces) {
+    SharedContours sc;
+    std::map<int, int> vertexOf;               // mesh vertex id -> sc.vertex
+    std::map<std::pair<int, int>, int> edgeOf; // (low, high) sc.vertex ids -> sc.edge
+    sc.corner.resize(sg.members.size());
+    sc.edgeOf.resize(sg.members.size());
+    for (std::size_t m = 0; m < sg.members.size(); ++m) {
+        const Patch& p = mesh.patches[static_cast<std::size_t>(sg.members[m])];
+        const auto c = mesh.cornersOf(sg.members[m]);
+        if (pieces[m].size() != 1 || pieces[m][0] != c) continue; // ragged: its own pieces
+        for (int k = 0; k < p.cornerCount; ++k) {
+            const int id = p.corners[static_cast<std::size_t>(k)];
+            auto it = vertexOf.find(id);
+            if (it == vertexOf.end()) {
+                it = vertexOf.emplace(id, static_cast<int>(sc.vertex.size())).first;
+                sc.vertex.push_back(mesh.vertices[static_cast<std::size_t>(id)]);
+            }
+            sc.corner[m].push_back(it->second);
+        }
+        const std::size_t q = sc.corner[m].size();
+        for (std::size_t k = 0; k < q; ++k) {
+            const int a = sc.corner[m][k], b = sc.corner[m][(k + 1) % q];
+            const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+            auto it = edgeOf.find(key);
+            if (it == edgeOf.end()) {
+                it = edgeOf.emplace(key, static_cast<int>(sc.edge.size())).first;
+                sc.edge.push_back({a, b});
+            }
+            const bool reversed = sc.edge[static_cast<std::size_t>(it->second)][0] != a;
+            sc.edgeOf[m].push_back(it->second * 2 + (reversed ? 1 : 0));
+        }
+    }
+    return sc;
 }
 
 } // namespace
@@ -145,11 +208,15 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         for (std::size_t m = 0; m < members; ++m)
             memberPieces.push_back(exposedPieces(mesh, bvh, sg.members[m]));
     // Near-field receivers: marked, their F not computed (the solver ignores their entries).
-    std::vector<char> isNear;
+    // nearIndex[j]: j's place in near->receivers (−1: not near), to read the visibility its
+    // near field has already cast from j to every member (GroupNearField::visible).
+    std::vector<int> nearIndex;
+    const bool nearVisible = near && near->members == members &&
+                             near->visible.size() == near->receivers.size() * members;
     if (near) {
-        isNear.assign(n, 0);
-        for (int j : near->receivers)
-            isNear[static_cast<std::size_t>(j)] = 1;
+        nearIndex.assign(n, -1);
+        for (std::size_t r = 0; r < near->receivers.size(); ++r)
+            nearIndex[static_cast<std::size_t>(near->receivers[r])] = static_cast<int>(r);
     }
     // Whether pointToPolygon(x, nrm, ·) could be > 0: some vertex of G (hull, or the members'
     // pieces) strictly in front of x's tangent plane, the test its clipping makes first.
@@ -183,7 +250,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         // floor group's centroid lay under the block (the face came out 92% dark).
         const double tiny = 1e-9 * std::sqrt(sg.area);
         if (p.group == g || glm::dot(sg.normal, p.centre - sg.centre) <= tiny) return;
-        const bool nearJ = near && isNear[j];
+        const bool nearJ = near && nearIndex[j] >= 0;
         double f = nearJ ? (inFront(p.centre, p.normal) ? 1.0 : 0.0)
                          : formFactorAt(p.centre, p.normal);
         // Receivers within two of their own sizes of G's plane (the walls meeting G along an
@@ -224,7 +291,13 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
                              std::max(0.0, -glm::dot(sg.normal, d)) / (r2 * r2 + 1e-300);
             if (w <= 0.0) continue;
             allW += w;
-            if (bvh.visible(from, target[m])) {
+            // A near receiver's ray from `from` to target[m] was cast by its near field (the
+            // same two points, so the same answer): read it instead of casting it again.
+            const bool vis =
+                nearJ && nearVisible
+                    ? near->visible[static_cast<std::size_t>(nearIndex[j]) * members + m] != 0
+                    : bvh.visible(from, target[m]);
+            if (vis) {
                 seenW += w;
                 seen[m] = true;
             }
@@ -245,7 +318,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
 }
 
 GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
-                              bool offsets) {
+                              bool offsets, bool shareEdges) {
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
     const std::size_t members = sg.members.size();
     GroupNearField nf;
@@ -258,6 +331,7 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         pieces[m] = exposedPieces(mesh, bvh, id);
         target[m] = rt::offsetRayOrigin(p.centre, p.normal);
     }
+    const SharedContours shared = shareEdges ? sharedContours(mesh, sg, pieces) : SharedContours{};
     const double tiny = 1e-9 * std::sqrt(sg.area);
     nf.everyReceiver = true;
     for (std::size_t j = 0; j < mesh.patches.size(); ++j) {
@@ -270,6 +344,8 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
         nf.receivers.push_back(static_cast<int>(j));
     }
     nf.w.assign(nf.receivers.size() * members, 0.0f);
+    nf.members = members;
+    nf.visible.assign(nf.receivers.size() * members, 0);
     tbb::parallel_for(std::size_t(0), nf.receivers.size(), [&](std::size_t r) {
         const int j = nf.receivers[r];
         const Patch& p = mesh.patches[static_cast<std::size_t>(j)];
@@ -289,13 +365,55 @@ GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g,
             pts.push_back(p.centre);
         }
         const glm::dvec3 from = rt::offsetRayOrigin(p.centre, p.normal);
+        // F(x → member) summed over the points x, member by member in the order of the
+        // points (the same sums as pointToPolygon per member: bit-identical, tested).
+        std::vector<double> fm(members, 0.0);
+        const std::size_t nv = shared.vertex.size(), ne = shared.edge.size();
+        std::vector<glm::dvec3> a(nv);
+        std::vector<char> front(nv);
+        std::vector<double> term(ne);
+        std::vector<char> known(ne);
+        for (const glm::dvec3& x : pts) {
+            for (std::size_t v = 0; v < nv; ++v) {
+                a[v] = shared.vertex[v] - x;
+                front[v] = glm::dot(a[v], p.normal) > 0.0 ? 1 : 0;
+            }
+            std::fill(known.begin(), known.end(), 0);
+            for (std::size_t m = 0; m < members; ++m) {
+                bool whole = shareEdges && !shared.corner[m].empty();
+                if (whole)
+                    for (int v : shared.corner[m])
+                        whole = whole && front[static_cast<std::size_t>(v)];
+                if (!whole) { // clipped by x's tangent plane, or ragged: on its own
+                    for (const auto& piece : pieces[m])
+                        fm[m] += pointToPolygon(x, p.normal, piece);
+                    continue;
+                }
+                double sum = 0.0;
+                for (int code : shared.edgeOf[m]) {
+                    const auto e = static_cast<std::size_t>(code / 2);
+                    if (!known[e]) {
+                        term[e] =
+                            contourTerm(a[static_cast<std::size_t>(shared.edge[e][0])],
+                                        a[static_cast<std::size_t>(shared.edge[e][1])], p.normal);
+                        known[e] = 1;
+                    }
+                    sum += code % 2 ? -term[e] : term[e];
+                }
+                const double f = std::abs(sum) / (2.0 * glm::pi<double>());
+                fm[m] += std::isfinite(f) ? std::min(f, 1.0) : 0.0;
+            }
+        }
         for (std::size_t m = 0; m < members; ++m) {
-            double f = 0.0;
-            for (const glm::dvec3& x : pts)
-                for (const auto& piece : pieces[m])
-                    f += pointToPolygon(x, p.normal, piece);
-            f /= static_cast<double>(pts.size());
-            if (f <= 0.0 || !bvh.visible(from, target[m])) continue;
+            const double f = fm[m] / static_cast<double>(pts.size());
+            // The ray is cast where w needs it (f > 0) or where the group's row samples it
+            // (groupGatherRow: both cosines at the centres > 0); the row reads it from here.
+            const glm::dvec3 d = target[m] - from;
+            const bool sampled = glm::dot(p.normal, d) > 0.0 && -glm::dot(sg.normal, d) > 0.0;
+            if (f <= 0.0 && !sampled) continue;
+            const bool vis = bvh.visible(from, target[m]);
+            nf.visible[r * members + m] = vis ? 1 : 0;
+            if (f <= 0.0 || !vis) continue;
             nf.w[r * members + m] = static_cast<float>(f);
         }
     });

@@ -6,6 +6,7 @@
 #include "core/radiosity/patch_bvh.h"
 #include "core/radiosity/point_rays.h"
 #include "core/radiosity/scenes.h"
+#include "core/raytrace/ray.h"
 
 #include <catch2/catch.hpp>
 
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 
 using namespace wb::rad;
@@ -238,4 +240,75 @@ TEST_CASE("group gradient: far receivers get the members' ΔB as a plane, not th
     INFO("flat " << flat << ", plane " << plane << ", member by member " << members);
     CHECK(std::abs(plane - members) < 0.25 * std::abs(flat - members));
     CHECK(plane == Approx(members).epsilon(0.01));
+}
+
+TEST_CASE("group rays: a near receiver's visibility read from its near field is the cast one",
+          "[radiosity]") {
+    // groupGatherRow reads the near receivers' visibility samples from the near field
+    // (GroupNearField::visible: the same rays, same end points) instead of casting them again.
+    // Bit-identical to casting them: the same row with `visible` emptied (the casting path)
+    // must match entry for entry, for every group of the Cornell box, the light's included
+    // (its near field is every receiver). A wrong index into `visible` changes A_live and so
+    // every entry of the row.
+    const PatchMesh m = meshScene(cornellBox(), MeshConfig{0.05, 0.2});
+    const PatchBvh bvh(m);
+    std::vector<float> read, cast;
+    size_t nearReceivers = 0;
+    for (size_t g = 0; g < m.groups.size(); ++g) {
+        const double diagonal = std::sqrt(2.0 * m.groups[g].area);
+        GroupNearField nf = groupNearField(m, bvh, int(g), 2.0 * diagonal);
+        nearReceivers += nf.receivers.size();
+        const size_t members = m.groups[g].members.size();
+        REQUIRE(nf.visible.size() == nf.receivers.size() * members);
+        // What the row reads, against the BVH asked here: every pair the row samples (both
+        // cosines at the centres > 0) holds the answer of the ray between the same points.
+        size_t wrong = 0;
+        for (size_t r = 0; r < nf.receivers.size(); ++r) {
+            const Patch& pj = m.patches[size_t(nf.receivers[r])];
+            const glm::dvec3 from = wb::rt::offsetRayOrigin(pj.centre, pj.normal);
+            for (size_t k = 0; k < members; ++k) {
+                const Patch& pm = m.patches[size_t(m.groups[g].members[k])];
+                const glm::dvec3 to = wb::rt::offsetRayOrigin(pm.centre, pm.normal);
+                const glm::dvec3 d = to - from;
+                if (!(glm::dot(pj.normal, d) > 0.0 && -glm::dot(m.groups[g].normal, d) > 0.0))
+                    continue;
+                if ((nf.visible[r * members + k] != 0) != bvh.visible(from, to)) ++wrong;
+            }
+        }
+        CHECK(wrong == 0);
+        groupGatherRow(m, bvh, int(g), 4, read, &nf);
+        nf.visible.clear();
+        groupGatherRow(m, bvh, int(g), 4, cast, &nf);
+        INFO("group " << g << " of " << m.groups.size());
+        REQUIRE(read.size() == cast.size());
+        CHECK(std::equal(read.begin(), read.end(), cast.begin()));
+    }
+    CHECK(nearReceivers > 100); // the case is exercised
+}
+
+TEST_CASE("group near field: members sharing an edge share its term, bit for bit", "[radiosity]") {
+    // groupNearField computes each distinct edge of the members' contours once per receiving
+    // point (shareEdges); each member's own pointToPolygon is the reference. Every group of
+    // the Cornell box (the light's with every receiver; floor groups cut by the blocks, whose
+    // ragged members keep their own pieces), at the lab's radius: w and the visibility must
+    // be equal bit for bit (exact: the shared term negates exactly for the other direction).
+    const PatchMesh m = meshScene(cornellBox(), MeshConfig{0.05, 0.2});
+    const PatchBvh bvh(m);
+    size_t entries = 0, nonzero = 0;
+    for (size_t g = 0; g < m.groups.size(); ++g) {
+        const bool emits = glm::length(m.surfaces[size_t(m.groups[g].surface)].emission) > 0.0;
+        const double radius = emits ? 1e9 : 2.0 * std::sqrt(2.0 * m.groups[g].area);
+        const GroupNearField shared = groupNearField(m, bvh, int(g), radius, false, true);
+        const GroupNearField own = groupNearField(m, bvh, int(g), radius, false, false);
+        INFO("group " << g);
+        REQUIRE(shared.receivers == own.receivers);
+        REQUIRE(shared.w.size() == own.w.size());
+        CHECK(std::memcmp(shared.w.data(), own.w.data(), own.w.size() * sizeof(float)) == 0);
+        CHECK(shared.visible == own.visible);
+        entries += own.w.size();
+        for (float w : own.w)
+            nonzero += w > 0.0f;
+    }
+    CHECK(nonzero > 1000); // the case is exercised
+    INFO(entries);
 }

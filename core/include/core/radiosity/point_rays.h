@@ -48,10 +48,19 @@ struct GroupNearField {
     // flat, a receiver that sees the group's bright side nearer got its mean: the ceiling in
     // front of the light 1.5% too dark from the tall block's top (docs/bench/radiosity.md).
     std::vector<float> du, dv;
+    // Whether the ray from receiver r's centre to member m's centre is unblocked (same layout
+    // as w; 0 also where it was not cast: member behind the receiver's plane or the receiver
+    // behind the member's). groupGatherRow reads it for the near receivers' visibility samples
+    // instead of casting the same rays again.
+    std::size_t members = 0;
+    std::vector<unsigned char> visible;
 };
-// `offsets`: fill du/dv too (FormFactorConfig::groupGradient).
+// `offsets`: fill du/dv too (FormFactorConfig::groupGradient). `shareEdges`: members sharing an
+// edge share its contour term, computed once per receiving point (bit-identical to each
+// member's own pointToPolygon; false computes it that way, the reference the tests compare
+// with).
 GroupNearField groupNearField(const PatchMesh& mesh, const PatchBvh& bvh, int g, double radius,
-                              bool offsets = false);
+                              bool offsets = false, bool shareEdges = true);
 // The group's outline: convex hull of its members' corners (in its surface's plane).
 std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g);
 
