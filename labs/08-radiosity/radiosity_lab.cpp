@@ -661,10 +661,10 @@ void RadiosityLab::stepOnMainThread(bool headless) {
     const auto t0 = std::chrono::steady_clock::now();
     const int limit = stepLimit();
     try {
-        // 0.25 s of steps a frame: the first shots draw a 512² GL hemicube each (~20 ms), and
-        // a frame of 3.7k patches takes ~50 ms to draw here; 30 ms slices made convergence 3×
-        // slower in a window than headless (1.2-1.3 s now against 0.7 s). Keys answer within
-        // a slice.
+        // 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at 512², the
+        // old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to draw here;
+        // 30 ms slices made convergence 3× slower in a window than headless (measured at 512²:
+        // 1.2-1.3 s against 0.7 s). Keys answer within a slice.
         while (sol.residual() >= s.tolerance && sol.steps() < limit &&
                (headless || secondsSince(t0) < 0.25)) {
             if (overBudget()) {
