@@ -3,6 +3,7 @@
 #include "bench_scenes.h"
 
 #include "core/raytrace/bvh.h"
+#include "core/raytrace/bvh_slots.h"
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/obj_file.h"
 #include "core/raytrace/spd.h"
@@ -707,35 +708,7 @@ std::string embreeBuildSection(int runs, const std::string& meshPath) {
         BvhOptions fo;
         fo.fullBinary = true;
         const Bvh ours(sf.scene->primitives), full(sf.scene->primitives, fo);
-        auto slots = [](const Bvh& b) {
-            std::vector<std::uint64_t> out;
-            auto walk = [&](const auto& nodes) {
-                if (nodes.empty()) return;
-                constexpr int W = sizeof(nodes[0].child) / sizeof(std::uint32_t);
-                std::vector<std::uint32_t> todo{0};
-                while (!todo.empty()) {
-                    const auto& n = nodes[todo.back()];
-                    todo.pop_back();
-                    for (int c = W - 1; c >= 0; --c) {
-                        for (int a = 0; a < 3; ++a) {
-                            std::uint32_t lo, hi;
-                            std::memcpy(&lo, &n.lo[a][c], 4);
-                            std::memcpy(&hi, &n.hi[a][c], 4);
-                            out.push_back(std::uint64_t(lo) << 32 | hi);
-                        }
-                        const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
-                        out.push_back(empty        ? 0xE
-                                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
-                                                   : 1);
-                        if (!empty && n.count[c] == 0) todo.push_back(n.child[c]);
-                    }
-                }
-            };
-            walk(b.wideNodes());
-            walk(b.wideNodes8());
-            return out;
-        };
-        const bool same = slots(ours) == slots(full);
+        const bool same = wideSlots(ours) == wideSlots(full);
         const LookAtCamera cam = sf.camera();
         std::vector<Ray> eye;
         for (int y = 0; y <= 256; ++y)

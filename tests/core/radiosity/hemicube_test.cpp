@@ -108,6 +108,28 @@ TEST_CASE("accumulate: GL-style item buffer, bad ids skipped, mismatched resolut
     CHECK_THROWS_AS(accumulate(other, t, 3, 0, row), std::invalid_argument);
 }
 
+namespace {
+// Every pixel's id in `items` is nearestPatch's for that pixel's ray alone (the packets' answer
+// against one ray per pixel); counts the pixels and those that see a patch.
+void requireItemsMatchRays(const PatchBvh& bvh, const HemicubeFrame& frame, int res,
+                           const ItemBuffer& items, long& pixels, long& seen) {
+    for (int f = 0; f < kHemicubeFaces; ++f) {
+        const auto face = static_cast<HemicubeFace>(f);
+        for (int row = 0; row < faceHeight(res, face); ++row)
+            for (int col = 0; col < faceWidth(res, face); ++col) {
+                const glm::dvec3 d = glm::normalize(pixelDirection(frame, res, face, col, row));
+                const int want =
+                    bvh.nearestPatch(frame.origin, d, 0.0, std::numeric_limits<double>::infinity());
+                const int got = items.faces[static_cast<std::size_t>(f)]
+                                           [static_cast<std::size_t>(row * res + col)];
+                REQUIRE(got == want);
+                ++pixels;
+                seen += want >= 0;
+            }
+    }
+}
+} // namespace
+
 TEST_CASE("hemicube item buffer: packets of pixels give the ids of one ray per pixel") {
     // Issue 21: castItemBuffer traces each face row's neighbouring pixels as packets of up
     // to 8 rays; every id must be nearestPatch's for that pixel's ray alone (the Cornell
@@ -120,21 +142,7 @@ TEST_CASE("hemicube item buffer: packets of pixels give the ids of one ray per p
             const HemicubeFrame frame = hemicubeFrame(m, i);
             ItemBuffer items;
             castItemBuffer(bvh, frame, res, items, false);
-            for (int f = 0; f < kHemicubeFaces; ++f) {
-                const auto face = static_cast<HemicubeFace>(f);
-                for (int row = 0; row < faceHeight(res, face); ++row)
-                    for (int col = 0; col < faceWidth(res, face); ++col) {
-                        const glm::dvec3 d =
-                            glm::normalize(pixelDirection(frame, res, face, col, row));
-                        const int want = bvh.nearestPatch(frame.origin, d, 0.0,
-                                                          std::numeric_limits<double>::infinity());
-                        const int got = items.faces[static_cast<std::size_t>(f)]
-                                                   [static_cast<std::size_t>(row * res + col)];
-                        REQUIRE(got == want);
-                        ++pixels;
-                        seen += want >= 0;
-                    }
-            }
+            requireItemsMatchRays(bvh, frame, res, items, pixels, seen);
         }
     }
     REQUIRE(seen > pixels / 2);
@@ -174,23 +182,10 @@ TEST_CASE("hemicube item buffer: packets equal one ray per pixel from adversaria
             ItemBuffer items, itemsParallel;
             castItemBuffer(bvh, frame, res, items, false);
             castItemBuffer(bvh, frame, res, itemsParallel, true);
-            for (int f = 0; f < kHemicubeFaces; ++f) {
+            for (int f = 0; f < kHemicubeFaces; ++f)
                 REQUIRE(items.faces[static_cast<std::size_t>(f)] ==
                         itemsParallel.faces[static_cast<std::size_t>(f)]);
-                const auto face = static_cast<HemicubeFace>(f);
-                for (int row = 0; row < faceHeight(res, face); ++row)
-                    for (int col = 0; col < faceWidth(res, face); ++col) {
-                        const glm::dvec3 d =
-                            glm::normalize(pixelDirection(frame, res, face, col, row));
-                        const int want = bvh.nearestPatch(frame.origin, d, 0.0,
-                                                          std::numeric_limits<double>::infinity());
-                        const int got = items.faces[static_cast<std::size_t>(f)]
-                                                   [static_cast<std::size_t>(row * res + col)];
-                        REQUIRE(got == want);
-                        ++pixels;
-                        seen += want >= 0;
-                    }
-            }
+            requireItemsMatchRays(bvh, frame, res, items, pixels, seen);
         }
     }
     CHECK(frames.size() >= 40);

@@ -11,6 +11,7 @@
 // bit-identical to the plain loop's and the binary tree's for 1 and 2 threads.
 #include "core/raytrace/box.h"
 #include "core/raytrace/bvh.h"
+#include "core/raytrace/bvh_slots.h"
 #include "core/raytrace/cylinder.h"
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
@@ -696,37 +697,6 @@ TEST_CASE("rt_bvh_wide: scenes of one kind, so leaves hold full runs of four", "
     }
 }
 
-namespace {
-// The wide tree as a depth-first sequence of its nodes' slots (boxes bit for bit, leaf
-// ranges; inner children followed where they point), so two trees compare whatever the
-// order of their nodes in the array.
-template <class Node>
-void wideSequence(const std::vector<Node>& nodes, std::uint32_t i,
-                  std::vector<std::uint64_t>& out) {
-    constexpr int W = sizeof(Node{}.child) / sizeof(std::uint32_t);
-    const Node& n = nodes[i];
-    for (int c = 0; c < W; ++c) {
-        for (int a = 0; a < 3; ++a) {
-            std::uint32_t lo, hi;
-            std::memcpy(&lo, &n.lo[a][c], 4);
-            std::memcpy(&hi, &n.hi[a][c], 4);
-            out.push_back(std::uint64_t(lo) << 32 | hi);
-        }
-        const bool empty = !(n.lo[0][c] <= n.hi[0][c]);
-        out.push_back(empty        ? 0xE
-                      : n.count[c] ? std::uint64_t(n.count[c]) << 32 | n.child[c]
-                                   : 0x1);
-        if (!empty && n.count[c] == 0) wideSequence(nodes, n.child[c], out);
-    }
-}
-std::vector<std::uint64_t> wideSequence(const Bvh& b) {
-    std::vector<std::uint64_t> out;
-    if (!b.wideNodes().empty()) wideSequence(b.wideNodes(), 0, out);
-    if (!b.wideNodes8().empty()) wideSequence(b.wideNodes8(), 0, out);
-    return out;
-}
-} // namespace
-
 TEST_CASE("rt_bvh_wide: the build that stops at the wide leaves gives the wide tree of the "
           "whole binary tree, for 1 and 2 threads",
           "[raytrace][bvh]") {
@@ -757,7 +727,7 @@ TEST_CASE("rt_bvh_wide: the build that stops at the wide leaves gives the wide t
                 full.fullBinary = true;
                 const Bvh a(s->primitives, full), b(s->primitives, fast);
                 CHECK(b.stats().nodes < a.stats().nodes); // it did stop early
-                const auto sa = wideSequence(a), sb = wideSequence(b);
+                const auto sa = wideSlots(a), sb = wideSlots(b);
                 CHECK(sa.size() > 100);
                 CHECK(sa == sb);
                 CHECK(a.stats().wideNodes == b.stats().wideNodes);
