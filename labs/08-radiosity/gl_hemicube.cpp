@@ -1,5 +1,7 @@
 #include "gl_hemicube.h"
 
+#include "core/i18n.h"
+
 #if defined(WB_HEADLESS)
 #include <GL/osmesa.h>
 #endif
@@ -71,27 +73,29 @@ void GlHemicube::release() {
 bool GlHemicube::setGeometry(const std::vector<glm::vec3>& vertices,
                              const std::vector<uint32_t>& items, std::string& error) {
     if (vertices.size() % 3 != 0 || items.size() != vertices.size() / 3) {
-        error = "GL hemicube: " + std::to_string(vertices.size()) + " vertices and " +
-                std::to_string(items.size()) + " items (need 3 vertices per item triangle)";
+        error = wb::trf("GL hemicube: %zu vertices and %zu items (need 3 vertices per item "
+                        "triangle)",
+                        vertices.size(), items.size());
         return false;
     }
     if (vertices.size() > size_t(1) << 30) {
-        error = "GL hemicube: too many triangles";
+        error = wb::tr("GL hemicube: too many triangles");
         return false;
     }
     std::vector<uint8_t> colours(vertices.size() * 3);
     glm::dvec3 lo(1e300), hi(-1e300);
     for (size_t t = 0; t < items.size(); ++t) {
         if (items[t] >= (1u << 24) - 1) {
-            error = "GL hemicube: item id " + std::to_string(items[t]) +
-                    " does not fit 24-bit colour (at most 16,777,214 patches)";
+            error = wb::trf("GL hemicube: item id %u does not fit 24-bit colour (at most "
+                            "16,777,214 patches)",
+                            unsigned(items[t]));
             return false;
         }
         for (int k = 0; k < 3; ++k) {
             encode(items[t], &colours[(3 * t + size_t(k)) * 3]);
             const glm::dvec3 p(vertices[3 * t + size_t(k)]);
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-                error = "GL hemicube: non-finite vertex in triangle " + std::to_string(t);
+                error = wb::trf("GL hemicube: non-finite vertex in triangle %zu", t);
                 return false;
             }
             lo = glm::min(lo, p);
@@ -133,8 +137,9 @@ bool GlHemicube::ensureTarget(int res, std::string& error) {
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
-        error = "GL hemicube: framebuffer " + std::to_string(res) + "x" + std::to_string(3 * res) +
-                " incomplete (status 0x" + std::to_string(status) + ")";
+        // GL's status codes are read in hex (GL_FRAMEBUFFER_UNSUPPORTED is 0x8CDD).
+        error = wb::trf("GL hemicube: framebuffer %dx%d incomplete (status 0x%04X)", res, 3 * res,
+                        unsigned(status));
         release();
         return false;
     }
@@ -145,18 +150,18 @@ bool GlHemicube::ensureTarget(int res, std::string& error) {
 bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDistance,
                         rad::ItemBuffer& out, std::string& error) {
     if (res < 2 || res > 4096 || res % 2 != 0) {
-        error = "GL hemicube: resolution " + std::to_string(res) + " (need an even 2..4096)";
+        error = wb::trf("GL hemicube: resolution %d (need an even 2..4096)", res);
         return false;
     }
     if (!(nearDistance > 0) || !std::isfinite(nearDistance)) {
-        error = "GL hemicube: near distance must be positive and finite";
+        error = wb::tr("GL hemicube: near distance must be positive and finite");
         return false;
     }
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (3 * res > maxSize) {
-        error = "GL hemicube: " + std::to_string(3 * res) + " rows exceed this GL's renderbuffer limit " +
-                std::to_string(maxSize);
+        error = wb::trf("GL hemicube: %d rows exceed this GL's renderbuffer limit %d", 3 * res,
+                        int(maxSize));
         return false;
     }
     if (!ensureTarget(res, error)) return false;
@@ -286,7 +291,7 @@ bool GlHemicube::render(const rad::HemicubeFrame& frame, int res, double nearDis
     }
     const GLenum err = glGetError();
     if (err != GL_NO_ERROR) {
-        error = "GL hemicube: GL error 0x" + std::to_string(err);
+        error = wb::trf("GL hemicube: GL error 0x%04X", unsigned(err));
         return false;
     }
     return true;
