@@ -241,6 +241,38 @@ bool clipBox(const double* a, const double* b, const double* c, int w, int h, in
     return x0 <= x1 && y0 <= y1;
 }
 
+// clipBox for the common case, without clipping: when the three lines g_k = 0 meet pairwise
+// at well-defined corners (not within 2^-20 of parallel) and each corner lies inside the third
+// half-plane by more than its rounding, the region is exactly the triangle of those corners
+// (a triangle on the inner side of each of its edge lines is their intersection). Returns 1
+// with the box (corners' bounds widened by a pixel), 0 when that triangle misses the face,
+// −1 when undecided (a vertex behind the eye: the region is unbounded; near-parallel lines).
+int cornerBox(const double* a, const double* b, const double* c, int w, int h, int& x0, int& x1,
+              int& y0, int& y1) {
+    double lx = 0, hx = 0, ly = 0, hy = 0;
+    for (int i = 0; i < 3; ++i) {
+        const int j = i == 2 ? 0 : i + 1, k = j == 2 ? 0 : j + 1;
+        const double det = b[i] * c[j] - b[j] * c[i];
+        const double gi = std::abs(b[i]) + std::abs(c[i]), gj = std::abs(b[j]) + std::abs(c[j]);
+        if (!(std::abs(det) > 0x1p-20 * gi * gj)) return -1;
+        const double x = (c[i] * a[j] - c[j] * a[i]) / det;
+        const double y = (b[j] * a[i] - b[i] * a[j]) / det;
+        const double gk = a[k] + b[k] * x + c[k] * y;
+        const double tol = 0x1p-30 * (std::abs(a[k]) + std::abs(b[k] * x) + std::abs(c[k] * y));
+        if (!(gk > tol)) return -1;
+        if (i == 0) lx = hx = x, ly = hy = y;
+        else lx = std::min(lx, x), hx = std::max(hx, x), ly = std::min(ly, y), hy = std::max(hy, y);
+    }
+    if (!(std::isfinite(lx) && std::isfinite(hx) && std::isfinite(ly) && std::isfinite(hy)))
+        return -1;
+    // Clamped in double: a corner may lie ~1e20 pixels out (a vertex near the face's plane).
+    const double fx0 = std::max(0.0, std::floor(lx) - 1), fx1 = std::min(w - 1.0, std::ceil(hx) + 1);
+    const double fy0 = std::max(0.0, std::floor(ly) - 1), fy1 = std::min(h - 1.0, std::ceil(hy) + 1);
+    if (!(fx0 <= fx1 && fy0 <= fy1)) return 0;
+    x0 = int(fx0), x1 = int(fx1), y0 = int(fy0), y1 = int(fy1);
+    return 1;
+}
+
 // The triangles of the hemicube's half-space, in scene order; false when a vertex is out of
 // the range the margins are proved for.
 bool setUpTriangles(const PatchBvh& bvh, const HemicubeFrame& fr, std::vector<RasterTri>& out) {
@@ -349,7 +381,11 @@ void rasterFace(const PatchBvh& bvh, const HemicubeFrame& fr, int res, HemicubeF
         if (!front && !back) continue;
         int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
         const double Af[3] = {A[0] + m[0], A[1] + m[1], A[2] + m[2]};
-        bool any = front && clipBox(Af, B, C, w, h, x0, x1, y0, y1);
+        bool any = false;
+        if (front) {
+            const int quick = back ? -1 : cornerBox(Af, B, C, w, h, x0, x1, y0, y1);
+            any = quick < 0 ? clipBox(Af, B, C, w, h, x0, x1, y0, y1) : quick == 1;
+        }
         if (back) {
             const double Ab[3] = {m[0] - A[0], m[1] - A[1], m[2] - A[2]};
             const double Bb[3] = {-B[0], -B[1], -B[2]}, Cb[3] = {-C[0], -C[1], -C[2]};
