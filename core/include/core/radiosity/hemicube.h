@@ -73,10 +73,19 @@ struct DeltaFormFactors {
 // pixel square (pointToPolygon), which sums to 1 up to rounding.
 DeltaFormFactors deltaFormFactors(int resolution, bool exactPixels = false);
 
+// How castItemBuffer finds each pixel's patch; both give nearestPatch's id for the pixel's ray
+// (the same ray, bit for bit), so the item buffers are identical.
+//   Raster: per face, each triangle's edge planes through the eye as edge functions over the
+//     pixels (a conservative filter with a relative error bound), the watertight test only
+//     where two triangles compete or a pixel lies within the bound of an edge (issue 21);
+//   Packets: 8 neighbouring pixels of a row traced as one BVH packet.
+enum class HemicubeCast { Raster, Packets };
+
 // The CPU item buffer: one ray per pixel centre from frame.origin, nearest front-facing patch.
-// Parallel over rows (TBB) when `parallel`.
+// Parallel (TBB: faces for Raster, rows for Packets) when `parallel`.
 void castItemBuffer(const PatchBvh& bvh, const HemicubeFrame& frame, int resolution,
-                    ItemBuffer& out, bool parallel = true);
+                    ItemBuffer& out, bool parallel = true,
+                    HemicubeCast method = HemicubeCast::Raster);
 
 // Form-factor row from an item buffer (CPU or GL): out[j] = Σ weight(pixel) over pixels with id
 // j; ids outside 0..patchCount−1 (background −1) are skipped, `self` is forced to 0. out is

@@ -33,6 +33,12 @@ class PatchBvh {
 
     const rt::BvhStats& stats() const { return bvh_->stats(); }
 
+    // What the CPU hemicube's rasteriser (hemicube.cpp) needs to give nearestPatch's answers
+    // without the walk: the mesh, and the triangles in scene order (rt::Triangle, material =
+    // patch id; on equal t the walk keeps the one later in this order).
+    const PatchMesh& mesh() const { return mesh_; }
+    const std::vector<std::unique_ptr<rt::Primitive>>& triangles() const { return prims_; }
+
   private:
     // The patch seen along `ray` given its nearest hit (the back-side rule above).
     int patchOf(const rt::Ray& ray, const rt::Hit& hit) const;
