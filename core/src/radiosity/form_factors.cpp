@@ -48,6 +48,7 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
     }
     nearFields_.resize(groups);
+    groupMutex_ = std::make_unique<std::mutex[]>(groups);
     nearReady_ = std::make_unique<std::atomic<const GroupNearField*>[]>(groups);
     for (std::size_t g = 0; g < groups; ++g) nearReady_[g] = nullptr;
 }
@@ -61,7 +62,7 @@ const GroupNearField* FormFactors::nearField(int g) const {
     if (!(config_.groupNearField > 0.0)) return nullptr;
     if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size())
         throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::lock_guard<std::mutex> lock(groupMutex_[static_cast<std::size_t>(g)]);
     auto& slot = nearFields_[static_cast<std::size_t>(g)];
     if (!slot) {
         const auto t0 = Clock::now();
@@ -120,7 +121,7 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
     }
     float* dst = groupRows_.data() + static_cast<std::ptrdiff_t>(g) * static_cast<std::ptrdiff_t>(n);
     if (!groupReady_[static_cast<std::size_t>(g)]) {
-        std::lock_guard<std::mutex> lock(mutex_);
+        std::lock_guard<std::mutex> lock(groupMutex_[static_cast<std::size_t>(g)]);
         if (!groupReady_[static_cast<std::size_t>(g)]) {
             compute(scratch);
             std::copy(scratch.begin(), scratch.end(), dst);
@@ -128,6 +129,11 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         }
     }
     return dst;
+}
+
+bool FormFactors::shooterRowReady(int g) const {
+    return !groupRows_.empty() && g >= 0 && static_cast<std::size_t>(g) < mesh_.groups.size() &&
+           groupReady_[static_cast<std::size_t>(g)];
 }
 
 FormFactors::~FormFactors() = default;
