@@ -11,6 +11,7 @@
 #include "core/radiosity/ray_form_factors.h"
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -85,7 +86,8 @@ class FormFactors {
     const GroupNearField* nearFieldReady(int g) const;
 
     std::size_t bytes() const;          // memory held for F (and the BVH's primitives)
-    double seconds() const;             // wall time spent computing rows so far
+    double seconds() const;             // wall time while rows or near fields were computed
+                                        // (by any thread, overlaps counted once)
     long long rowsComputed() const;     // rows computed so far (recomputations count)
     const PatchBvh& bvh() const { return *bvh_; }
     const DeltaFormFactors& deltaTable() const { return table_; }
@@ -111,6 +113,10 @@ class FormFactors {
     // and its prefetch worker, SolverConfig::prefetch) prepare different groups at once, and
     // one asking for the group the other is preparing waits for it instead of redoing it.
     std::unique_ptr<std::mutex[]> groupMutex_;
+    struct Busy; // counts wall time while any thread computes (seconds())
+    mutable std::mutex busyMutex_;
+    mutable int busy_ = 0;
+    mutable std::chrono::steady_clock::time_point busySince_;
     mutable std::atomic<long long> nanos_{0};
     mutable std::atomic<long long> rows_{0};
 };
