@@ -34,16 +34,6 @@ int hemicubeFor(const RadiosityState& s) {
     return 128;
 }
 
-double shooterPatchesFor(FfMethod m) {
-    // Rays gather each row at the receivers (exact F to the group's outline): larger groups
-    // made it worse (0.10 m 2.29%, 0.12 m 2.62%, 0.14 m 2.62% worst surface against Cycles,
-    // before the plane fit). The hemicubes: 0.14 m groups (133 rows instead of 248) were as close
-    // as 0.10 m with flat pooling (1.9%), but with the plane fit and the 1e-4 stop only 0.10 m
-    // keeps every surface within 1% (0.97%; 0.12 m 1.50%, 0.14 m 1.13%, 0.14 m at 256² 1.33%:
-    // the ceiling left of the light), so both constants are 4.25 today.
-    return m == FfMethod::Rays ? kShooterPatches : kShooterPatchesHemicube;
-}
-
 std::vector<KeyHelp> RadiosityLab::keys() const {
     return {{"1", tr("form factors by rays")},
             {"2", tr("form factors by CPU hemicube")},
@@ -299,14 +289,13 @@ bool RadiosityLab::loadScene(const std::string& name, double patchSize) {
         const double defaultEdge = defaultPatchSize(scene);
         if (patchSize <= 0) patchSize = defaultEdge;
         rad::PatchMesh mesh;
-        // Shooting groups of ~4×4 default patches (the Cornell box: 0.10 m, 252 groups; per
-        // method: shooterPatchesFor), fixed per
-        // scene and method: [ ] and a refine the receivers, the shooters stay (none when the
-        // patches are as large). 11×11 groups (0.31 m) converged fastest but put the block
+        // Shooting groups of ~4×4 default patches (the Cornell box: 0.10 m, 252 groups, the
+        // same for every method: kShooterPatches), fixed per scene: [ ] and a refine the
+        // receivers, the shooters stay (none when the patches are as large). 11×11 groups (0.31 m) converged fastest but put the block
         // faces 10-96% off the Cycles reference before the near field (docs/bench/radiosity.md).
         defaultEdge_ = defaultEdge;
         s.shooterEdge =
-            shooterOption_ >= 0 ? shooterOption_ : shooterPatchesFor(s.method) * defaultEdge_;
+            shooterOption_ >= 0 ? shooterOption_ : kShooterPatches * defaultEdge_;
         if (!meshChecked(scene, patchSize, mesh)) return false;
         auto m = std::make_unique<Model>();
         m->scene = std::move(scene);
@@ -435,14 +424,7 @@ void RadiosityLab::setMethod(FfMethod m) {
     }
     stopRun();
     s.method = m;
-    // The method's own group size (shooterPatchesFor), unless --shooting-patch or the slider
-    // chose one: new groups need a new mesh (the patches are the same, the groups differ).
-    const double edge = shooterPatchesFor(m) * defaultEdge_;
-    if (shooterOption_ < 0 && defaultEdge_ > 0 && edge != s.shooterEdge) {
-        s.shooterEdge = edge;
-        remesh(s.patchSize); // installs the mesh and rebuilds the solver
-        return;
-    }
+    // Every method shoots from the same groups (kShooterPatches): the mesh stays.
     rebuildSolver();
 }
 
@@ -505,9 +487,13 @@ void RadiosityLab::rebuildSolver() {
     } else if (s.method == FfMethod::Rays) {
         // A shooting group is not a patch: each receiver gathers from the group's area by the
         // exact point-to-polygon term and k visibility rays (point_rays.h).
-        fc.groupRowProvider = [this](int g, const rad::HemicubeFrame&, std::vector<float>& out) {
-            rad::groupGatherRow(model_->mesh, model_->ff->bvh(), g, s.raySamples, out,
-                                model_->ff->nearFieldReady(g));
+        // Called on the solver's prefetch worker too: it reads this model (the solver, which
+        // joins that worker, is destroyed before the model's form factors) and k as set now.
+        const Model* model = model_.get();
+        const int k = s.raySamples;
+        fc.groupRowProvider = [model, k](int g, const rad::HemicubeFrame&, std::vector<float>& out) {
+            rad::groupGatherRow(model->mesh, model->ff->bvh(), g, k, out,
+                                model->ff->nearFieldReady(g));
         };
     }
     fc.rays.samples = s.raySamples;
@@ -520,6 +506,9 @@ void RadiosityLab::rebuildSolver() {
                               : rad::SolverKind::Progressive;
     sc.ambient = s.ambient;
     sc.tolerance = s.tolerance;
+    // The groups next in line are prepared on the second core while this run shoots (or, with
+    // GL rows, while the GL thread draws them): the same B and steps, sooner.
+    sc.prefetch = true;
     try {
         model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
         if (s.method == FfMethod::GlHemicube && sc.kind != rad::SolverKind::Progressive) {

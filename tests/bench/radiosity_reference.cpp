@@ -47,7 +47,7 @@ struct Setting {
 // Lab 08's default patch edge (RadiosityLab::defaultPatchSize, copied: the lab's class is not
 // in core): e = √(A/3700), corrected twice by the count the mesher makes of it. The Cornell
 // box: 0.02359 m, 3,716 patches; its shooting groups are 4.25 e for every method
-// (kShooterPatches, kShooterPatchesHemicube).
+// (kShooterPatches).
 double labPatch(const Scene& scene) {
     double area = 0;
     for (const Surface& sf : scene.surfaces)
@@ -69,7 +69,7 @@ Setting parse(const std::string& s) {
         throw std::invalid_argument(
             "--setting NAME:PATCH:METHOD:RES_OR_K[:SHOOTER_EDGE[:TOLERANCE]], got " + s);
     // "lab": lab 08's default patch edge; a shooter edge "lab" is 4.25 of it (every method's
-    // groups, kShooterPatches and kShooterPatchesHemicube).
+    // groups, kShooterPatches).
     const bool labShooter = parts.size() > 4 && parts[4] == "lab";
     const double lab = parts[1] == "lab" || labShooter ? labPatch(cornellBox()) : 0.0;
     if (parts.size() > 4)

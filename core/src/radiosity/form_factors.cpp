@@ -19,6 +19,22 @@ long long nanosSince(Clock::time_point t0) {
 }
 } // namespace
 
+// Wall time while any thread computes a row or near field: the solver and its prefetch worker
+// (SolverConfig::prefetch) overlap, and the panel's "rows computed in X s" must not add them.
+struct FormFactors::Busy {
+    explicit Busy(const FormFactors& ff) : ff_(ff) {
+        std::lock_guard<std::mutex> lock(ff_.busyMutex_);
+        if (ff_.busy_++ == 0) ff_.busySince_ = Clock::now();
+    }
+    ~Busy() {
+        std::lock_guard<std::mutex> lock(ff_.busyMutex_);
+        if (--ff_.busy_ == 0) ff_.nanos_ += nanosSince(ff_.busySince_);
+    }
+    Busy(const Busy&) = delete;
+    Busy& operator=(const Busy&) = delete;
+    const FormFactors& ff_;
+};
+
 FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
     : mesh_(mesh), config_(std::move(config)) {
     const std::size_t n = mesh.patches.size();
@@ -48,6 +64,7 @@ FormFactors::FormFactors(const PatchMesh& mesh, FormFactorConfig config)
         for (std::size_t g = 0; g < groups; ++g) groupReady_[g] = false;
     }
     nearFields_.resize(groups);
+    groupMutex_ = std::make_unique<std::mutex[]>(groups);
     nearReady_ = std::make_unique<std::atomic<const GroupNearField*>[]>(groups);
     for (std::size_t g = 0; g < groups; ++g) nearReady_[g] = nullptr;
 }
@@ -61,10 +78,10 @@ const GroupNearField* FormFactors::nearField(int g) const {
     if (!(config_.groupNearField > 0.0)) return nullptr;
     if (g < 0 || static_cast<std::size_t>(g) >= mesh_.groups.size())
         throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
-    std::lock_guard<std::mutex> lock(mutex_);
+    std::lock_guard<std::mutex> lock(groupMutex_[static_cast<std::size_t>(g)]);
     auto& slot = nearFields_[static_cast<std::size_t>(g)];
     if (!slot) {
-        const auto t0 = Clock::now();
+        const Busy busy(*this);
         const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(g)];
         const double diagonal = std::sqrt(2.0 * sg.area);
         // An emitter's groups (the light: 1-2 of them) reach every receiver member by member:
@@ -78,7 +95,6 @@ const GroupNearField* FormFactors::nearField(int g) const {
         slot = std::make_unique<GroupNearField>(
             groupNearField(mesh_, *bvh_, g, radius, config_.groupGradient));
         nearReady_[static_cast<std::size_t>(g)].store(slot.get(), std::memory_order_release);
-        nanos_ += nanosSince(t0);
     }
     return slot.get();
 }
@@ -88,7 +104,7 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         throw std::out_of_range("form factors: shooting group " + std::to_string(g) + " out of range");
     const std::size_t n = mesh_.patches.size();
     auto compute = [&](std::vector<float>& out) {
-        const auto t0 = Clock::now();
+        const Busy busy(*this);
         const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(g)];
         HemicubeFrame fr;
         fr.n = sg.normal;
@@ -98,7 +114,6 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         if (config_.groupRowProvider) {
             out.assign(n, 0.0f);
             config_.groupRowProvider(g, fr, out);
-            nanos_ += nanosSince(t0);
             ++rows_;
             return;
         }
@@ -111,7 +126,6 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
             cast();
         }
         accumulate(items, table_, static_cast<int>(n), -1, out);
-        nanos_ += nanosSince(t0);
         ++rows_;
     };
     if (groupRows_.empty()) {
@@ -120,7 +134,7 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
     }
     float* dst = groupRows_.data() + static_cast<std::ptrdiff_t>(g) * static_cast<std::ptrdiff_t>(n);
     if (!groupReady_[static_cast<std::size_t>(g)]) {
-        std::lock_guard<std::mutex> lock(mutex_);
+        std::lock_guard<std::mutex> lock(groupMutex_[static_cast<std::size_t>(g)]);
         if (!groupReady_[static_cast<std::size_t>(g)]) {
             compute(scratch);
             std::copy(scratch.begin(), scratch.end(), dst);
@@ -128,6 +142,11 @@ const float* FormFactors::shooterRow(int g, std::vector<float>& scratch) const {
         }
     }
     return dst;
+}
+
+bool FormFactors::shooterRowReady(int g) const {
+    return !groupRows_.empty() && g >= 0 && static_cast<std::size_t>(g) < mesh_.groups.size() &&
+           groupReady_[static_cast<std::size_t>(g)];
 }
 
 FormFactors::~FormFactors() = default;
@@ -142,7 +161,7 @@ float* FormFactors::storedRow(int i) const {
 }
 
 void FormFactors::computeRow(int i, std::vector<float>& out) const {
-    const auto t0 = Clock::now();
+    const Busy busy(*this);
     const bool inner = config_.threads != 1; // parallel inside the row (hemicube pixel rows)
     switch (config_.method) {
     case FormFactorMethod::Rays:
@@ -159,7 +178,6 @@ void FormFactors::computeRow(int i, std::vector<float>& out) const {
         out[static_cast<std::size_t>(i)] = 0.0f;
         break;
     }
-    nanos_ += nanosSince(t0);
     ++rows_;
 }
 

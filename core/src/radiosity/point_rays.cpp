@@ -70,7 +70,7 @@ double contourTerm(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& n
     const glm::dvec3 c = glm::cross(a, b);
     const double cl = glm::length(c);
     if (!(cl > 0.0)) return 0.0; // pointToPolygon skips it: adding +0 leaves |sum| as it is
-    return std::atan2(cl, glm::dot(a, b)) * glm::dot(normal, c) / cl;
+    return edgeAngle(cl, glm::dot(a, b)) * glm::dot(normal, c) / cl;
 }
 
 // A group's members as a grid of quads share their inner edges: a 6×6 group has 84 distinct

@@ -1,7 +1,9 @@
 #include "core/radiosity/solver.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -99,104 +101,7 @@ double Solver::step() {
     }
     case SolverKind::Progressive: {
         if (config_.groupShooting && !mesh_.groups.empty()) {
-            // 1. The group with the most unshot power.
-            int best = -1;
-            double bestPower = 0.0;
-            for (std::size_t g = 0; g < mesh_.groups.size(); ++g) {
-                double pw = 0.0;
-                for (int e : mesh_.groups[g].members)
-                    pw += mesh_.patches[static_cast<std::size_t>(e)].area * sum3(dB_[static_cast<std::size_t>(e)]);
-                if (pw > bestPower) {
-                    bestPower = pw;
-                    best = static_cast<int>(g);
-                }
-            }
-            if (best < 0) {
-                residual_ = 0.0;
-                break;
-            }
-            // 2. Pool its members' unshot radiosity (area average) and shoot it from the centroid:
-            //    j receives R_j ΔB_g F_gj A_g/A_j.
-            //    Receivers in the group's near field (FormFactorConfig::groupNearField) are
-            //    shot member by member instead: j receives R_j Σ_m ΔB_m w_jm (point_rays.h).
-            const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(best)];
-            const GroupNearField* near = ff_.nearField(best);
-            memberShot_.resize(sg.members.size());
-            glm::dvec3 pooled(0.0);
-            for (std::size_t m = 0; m < sg.members.size(); ++m) {
-                const auto e = static_cast<std::size_t>(sg.members[m]);
-                memberShot_[m] = dB_[e];
-                pooled += mesh_.patches[e].area * dB_[e];
-                dB_[e] = glm::dvec3(0.0);
-            }
-            const glm::dvec3 shot = pooled / sg.area;
-            // The members' ΔB as a plane over the group (area-weighted least squares in its u,
-            // v axes): a far receiver j gets shot + gu·du_j + gv·dv_j (GroupNearField::du/dv),
-            // clamped to the members' range, rather than the flat mean.
-            glm::dvec3 gu(0.0), gv(0.0), lo(shot), hi(shot);
-            if (near && !near->du.empty()) {
-                const glm::dvec3 v = glm::cross(sg.normal, sg.u);
-                double suu = 0.0, suv = 0.0, svv = 0.0;
-                glm::dvec3 su(0.0), sv(0.0);
-                for (std::size_t m = 0; m < sg.members.size(); ++m) {
-                    const Patch& q = mesh_.patches[static_cast<std::size_t>(sg.members[m])];
-                    const double x = glm::dot(q.centre - sg.centre, sg.u);
-                    const double y = glm::dot(q.centre - sg.centre, v);
-                    const glm::dvec3 d = memberShot_[m] - shot;
-                    suu += q.area * x * x;
-                    suv += q.area * x * y;
-                    svv += q.area * y * y;
-                    su += q.area * x * d;
-                    sv += q.area * y * d;
-                    lo = glm::min(lo, memberShot_[m]);
-                    hi = glm::max(hi, memberShot_[m]);
-                }
-                const double det = suu * svv - suv * suv;
-                if (det > 1e-12 * (suu * svv) && det > 0.0) {
-                    gu = (svv * su - suv * sv) / det;
-                    gv = (suu * sv - suv * su) / det;
-                }
-            }
-            const bool slope = gu != glm::dvec3(0.0) || gv != glm::dvec3(0.0);
-            // An emitter's near field holds every receiver in front of it: no row needed.
-            const float* f =
-                near && near->everyReceiver ? nullptr : ff_.shooterRow(best, scratch_);
-            if (near) {
-                nearMark_.resize(static_cast<std::size_t>(n), 0);
-                const std::size_t members = sg.members.size();
-                for (std::size_t r = 0; r < near->receivers.size(); ++r) {
-                    const auto j = static_cast<std::size_t>(near->receivers[r]);
-                    nearMark_[j] = 1;
-                    glm::dvec3 gathered(0.0);
-                    for (std::size_t m = 0; m < members; ++m)
-                        gathered += static_cast<double>(near->w[r * members + m]) * memberShot_[m];
-                    const glm::dvec3 add = mesh_.patches[j].reflectivity * gathered;
-                    B_[j] += add;
-                    dB_[j] += add;
-                }
-            }
-            double unshot = 0.0;
-            for (int j = 0; j < n; ++j) {
-                const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
-                if (near && nearMark_[static_cast<std::size_t>(j)]) {
-                    nearMark_[static_cast<std::size_t>(j)] = 0;
-                } else if (f && f[j] != 0.0f) {
-                    glm::dvec3 at = shot;
-                    if (slope) {
-                        const auto k = static_cast<std::size_t>(j);
-                        const double du = near->du[k], dv = near->dv[k];
-                        at = glm::clamp(shot + gu * du + gv * dv, lo, hi);
-                    }
-                    const glm::dvec3 add =
-                        p.reflectivity * at * (static_cast<double>(f[j]) * sg.area / p.area);
-                    B_[static_cast<std::size_t>(j)] += add;
-                    dB_[static_cast<std::size_t>(j)] += add;
-                }
-                unshot += p.area * sum3(dB_[static_cast<std::size_t>(j)]);
-            }
-            lastGroup_ = best;
-            lastShooter_ = sg.members.front();
-            residual_ = unshot / emittedSum_;
+            shootGroup();
             break;
         }
         // 1. The shooter: most unshot power A·ΔB (channels summed).
@@ -236,6 +141,197 @@ double Solver::step() {
     ++steps_;
     history_.push_back(residual_);
     return residual_;
+}
+
+Solver::~Solver() {
+    if (!prefetcher_.joinable()) return;
+    {
+        std::lock_guard<std::mutex> lock(prefetchMutex_);
+        stopPrefetch_ = true;
+        queue_.clear();
+    }
+    prefetchWake_.notify_all();
+    prefetcher_.join();
+}
+
+const Solver::PlaneFit& Solver::planeFit(int g) {
+    PlaneFit& fit = fits_[static_cast<std::size_t>(g)];
+    if (fit.ready) return fit;
+    const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(g)];
+    const glm::dvec3 v = glm::cross(sg.normal, sg.u);
+    fit.ax.resize(sg.members.size());
+    fit.ay.resize(sg.members.size());
+    for (std::size_t m = 0; m < sg.members.size(); ++m) {
+        const Patch& q = mesh_.patches[static_cast<std::size_t>(sg.members[m])];
+        const double x = glm::dot(q.centre - sg.centre, sg.u);
+        const double y = glm::dot(q.centre - sg.centre, v);
+        fit.suu += q.area * x * x;
+        fit.suv += q.area * x * y;
+        fit.svv += q.area * y * y;
+        fit.ax[m] = q.area * x;
+        fit.ay[m] = q.area * y;
+    }
+    fit.ready = true;
+    return fit;
+}
+
+// Hands the worker the groups next in line: the few with the most unshot power, other than
+// `best` (this thread prepares it now), whose near field (and row) are not ready yet.
+void Solver::prefetchAfter(int best, const std::vector<double>& power) {
+    constexpr std::size_t kAhead = 4; // the worker takes the first; the rest keep it busy
+    const bool rows = ff_.config().method != FormFactorMethod::External && ff_.shooterRowsCached();
+    std::vector<int> next;
+    for (std::size_t g = 0; g < power.size(); ++g) {
+        if (static_cast<int>(g) == best || !(power[g] > 0.0)) continue;
+        const GroupNearField* near = ff_.nearFieldReady(static_cast<int>(g));
+        const bool nearDone = near || !(ff_.config().groupNearField > 0.0);
+        const bool rowDone = !rows || (near && near->everyReceiver) ||
+                             ff_.shooterRowReady(static_cast<int>(g));
+        if (nearDone && rowDone) continue;
+        next.push_back(static_cast<int>(g));
+    }
+    const std::size_t keep = std::min(kAhead, next.size());
+    std::partial_sort(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(keep), next.end(),
+                      [&](int a, int b) {
+                          const double pa = power[static_cast<std::size_t>(a)];
+                          const double pb = power[static_cast<std::size_t>(b)];
+                          return pa > pb || (pa == pb && a < b);
+                      });
+    next.resize(keep);
+    if (!prefetcher_.joinable()) {
+        if (next.empty()) return;
+        prefetcher_ = std::thread(&Solver::prefetchLoop, this,
+                                  tbb::this_task_arena::max_concurrency());
+    }
+    {
+        std::lock_guard<std::mutex> lock(prefetchMutex_);
+        queue_ = std::move(next);
+    }
+    prefetchWake_.notify_one();
+}
+
+void Solver::prefetchLoop(int concurrency) {
+    // As wide as the solver's arena: a solve made in a 1-thread arena keeps the worker's
+    // rows on the worker alone (the ThreadSanitizer test: Debian's TBB is not instrumented).
+    tbb::task_arena arena(concurrency);
+    const bool rows = ff_.config().method != FormFactorMethod::External && ff_.shooterRowsCached();
+    std::vector<float> scratch;
+    std::unique_lock<std::mutex> lock(prefetchMutex_);
+    for (;;) {
+        prefetchWake_.wait(lock, [&] { return stopPrefetch_ || !queue_.empty(); });
+        if (stopPrefetch_) return;
+        const int g = queue_.front();
+        queue_.erase(queue_.begin());
+        lock.unlock();
+        try {
+            arena.execute([&] {
+                const GroupNearField* near = ff_.nearField(g);
+                if (rows && !(near && near->everyReceiver)) ff_.shooterRow(g, scratch);
+            });
+        } catch (...) {
+            // Nothing kept: the solver's own call for this group meets the error and reports it.
+        }
+        lock.lock();
+    }
+}
+
+// Progressive with shooting groups (the lab's default).
+void Solver::shootGroup() {
+    const int n = ff_.size();
+    // 1. The group with the most unshot power.
+    groupPower_.assign(mesh_.groups.size(), 0.0);
+    int best = -1;
+    double bestPower = 0.0;
+    for (std::size_t g = 0; g < mesh_.groups.size(); ++g) {
+        double pw = 0.0;
+        for (int e : mesh_.groups[g].members)
+            pw += mesh_.patches[static_cast<std::size_t>(e)].area * sum3(dB_[static_cast<std::size_t>(e)]);
+        groupPower_[g] = pw;
+        if (pw > bestPower) {
+            bestPower = pw;
+            best = static_cast<int>(g);
+        }
+    }
+    if (best < 0) {
+        residual_ = 0.0;
+        return;
+    }
+    if (config_.prefetch) prefetchAfter(best, groupPower_);
+    // 2. Pool its members' unshot radiosity (area average) and shoot it from the centroid:
+    //    j receives R_j ΔB_g F_gj A_g/A_j.
+    //    Receivers in the group's near field (FormFactorConfig::groupNearField) are
+    //    shot member by member instead: j receives R_j Σ_m ΔB_m w_jm (point_rays.h).
+    const ShooterGroup& sg = mesh_.groups[static_cast<std::size_t>(best)];
+    const GroupNearField* near = ff_.nearField(best);
+    memberShot_.resize(sg.members.size());
+    glm::dvec3 pooled(0.0);
+    for (std::size_t m = 0; m < sg.members.size(); ++m) {
+        const auto e = static_cast<std::size_t>(sg.members[m]);
+        memberShot_[m] = dB_[e];
+        pooled += mesh_.patches[e].area * dB_[e];
+        dB_[e] = glm::dvec3(0.0);
+    }
+    const glm::dvec3 shot = pooled / sg.area;
+    // The members' ΔB as a plane over the group (area-weighted least squares in its u,
+    // v axes): a far receiver j gets shot + gu·du_j + gv·dv_j (GroupNearField::du/dv),
+    // clamped to the members' range, rather than the flat mean.
+    glm::dvec3 gu(0.0), gv(0.0), lo(shot), hi(shot);
+    if (near && !near->du.empty()) {
+        if (fits_.empty()) fits_.resize(mesh_.groups.size());
+        const PlaneFit& fit = planeFit(best);
+        glm::dvec3 su(0.0), sv(0.0);
+        for (std::size_t m = 0; m < sg.members.size(); ++m) {
+            const glm::dvec3 d = memberShot_[m] - shot;
+            su += fit.ax[m] * d;
+            sv += fit.ay[m] * d;
+            lo = glm::min(lo, memberShot_[m]);
+            hi = glm::max(hi, memberShot_[m]);
+        }
+        const double det = fit.suu * fit.svv - fit.suv * fit.suv;
+        if (det > 1e-12 * (fit.suu * fit.svv) && det > 0.0) {
+            gu = (fit.svv * su - fit.suv * sv) / det;
+            gv = (fit.suu * sv - fit.suv * su) / det;
+        }
+    }
+    const bool slope = gu != glm::dvec3(0.0) || gv != glm::dvec3(0.0);
+    // An emitter's near field holds every receiver in front of it: no row needed.
+    const float* f = near && near->everyReceiver ? nullptr : ff_.shooterRow(best, scratch_);
+    if (near) {
+        nearMark_.resize(static_cast<std::size_t>(n), 0);
+        const std::size_t members = sg.members.size();
+        for (std::size_t r = 0; r < near->receivers.size(); ++r) {
+            const auto j = static_cast<std::size_t>(near->receivers[r]);
+            nearMark_[j] = 1;
+            glm::dvec3 gathered(0.0);
+            for (std::size_t m = 0; m < members; ++m)
+                gathered += static_cast<double>(near->w[r * members + m]) * memberShot_[m];
+            const glm::dvec3 add = mesh_.patches[j].reflectivity * gathered;
+            B_[j] += add;
+            dB_[j] += add;
+        }
+    }
+    double unshot = 0.0;
+    for (int j = 0; j < n; ++j) {
+        const Patch& p = mesh_.patches[static_cast<std::size_t>(j)];
+        if (near && nearMark_[static_cast<std::size_t>(j)]) {
+            nearMark_[static_cast<std::size_t>(j)] = 0;
+        } else if (f && f[j] != 0.0f) {
+            glm::dvec3 at = shot;
+            if (slope) {
+                const auto k = static_cast<std::size_t>(j);
+                const double du = near->du[k], dv = near->dv[k];
+                at = glm::clamp(shot + gu * du + gv * dv, lo, hi);
+            }
+            const glm::dvec3 add =
+                p.reflectivity * at * (static_cast<double>(f[j]) * sg.area / p.area);
+            B_[static_cast<std::size_t>(j)] += add;
+            dB_[static_cast<std::size_t>(j)] += add;
+        }
+        unshot += p.area * sum3(dB_[static_cast<std::size_t>(j)]);
+    }
+    lastGroup_ = best;
+    lastShooter_ = sg.members.front();
+    residual_ = unshot / emittedSum_;
 }
 
 int Solver::run(const std::atomic<bool>* cancel) {

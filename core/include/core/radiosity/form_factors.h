@@ -11,6 +11,7 @@
 #include "core/radiosity/ray_form_factors.h"
 
 #include <atomic>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -71,6 +72,10 @@ class FormFactors {
     // groupRowProvider, or the CPU hemicube at hemicubeResolution without one. Cached
     // for all groups when groups × n <= maxStoredPatches². Thread-safe.
     const float* shooterRow(int g, std::vector<float>& scratch) const;
+    // Whether group rows are cached at all (groups × n <= maxStoredPatches²), and whether
+    // shooterRow(g) is.
+    bool shooterRowsCached() const { return !groupRows_.empty(); }
+    bool shooterRowReady(int g) const;
     bool rowReady(int i) const;
     // Near field of group g (config.groupNearField), computed on first use and kept; nullptr when
     // off. Thread-safe.
@@ -81,7 +86,8 @@ class FormFactors {
     const GroupNearField* nearFieldReady(int g) const;
 
     std::size_t bytes() const;          // memory held for F (and the BVH's primitives)
-    double seconds() const;             // wall time spent computing rows so far
+    double seconds() const;             // wall time while rows or near fields were computed
+                                        // (by any thread, overlaps counted once)
     long long rowsComputed() const;     // rows computed so far (recomputations count)
     const PatchBvh& bvh() const { return *bvh_; }
     const DeltaFormFactors& deltaTable() const { return table_; }
@@ -103,6 +109,14 @@ class FormFactors {
     mutable std::vector<std::unique_ptr<GroupNearField>> nearFields_; // per group, lazily
     std::unique_ptr<std::atomic<const GroupNearField*>[]> nearReady_; // published nearFields_
     mutable std::mutex mutex_;                        // guards lazy row computation
+    // Per group: guards its near field and its cached row, so that two threads (the solver
+    // and its prefetch worker, SolverConfig::prefetch) prepare different groups at once, and
+    // one asking for the group the other is preparing waits for it instead of redoing it.
+    std::unique_ptr<std::mutex[]> groupMutex_;
+    struct Busy; // counts wall time while any thread computes (seconds())
+    mutable std::mutex busyMutex_;
+    mutable int busy_ = 0;
+    mutable std::chrono::steady_clock::time_point busySince_;
     mutable std::atomic<long long> nanos_{0};
     mutable std::atomic<long long> rows_{0};
 };

@@ -14,6 +14,9 @@
 #include "core/radiosity/form_factors.h"
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 namespace wb::rad {
@@ -27,6 +30,14 @@ struct SolverConfig {
     // unshot power from its centroid (FormFactors::shooterRow), receive at every patch. Rows of
     // groups are few and cached, so later shots cost O(n). false: every patch shoots itself.
     bool groupShooting = true;
+    // Progressive with shooting groups: a worker thread prepares the groups next in line (the
+    // few with the most unshot power that have not shot yet): their near fields, and their rows
+    // unless the method is External (lab 08's GL rows are drawn on the GL thread, the caller's).
+    // A group's near field and row depend on the group only, never on who computed them or
+    // when, so B and the steps are the same with it on or off (tested bit for bit); it only
+    // moves work onto the second core while this thread shoots or draws GL rows. The worker
+    // runs in a TBB arena as wide as the one the solver was made in.
+    bool prefetch = false;
     double tolerance = 1e-6;   // run(): stop when residual() < tolerance
     int maxSteps = 1000000;    // run(): stop after this many steps (sweeps or shots)
 };
@@ -35,6 +46,9 @@ class Solver {
   public:
     // Keeps references to mesh and form factors (must outlive the solver). B starts at E.
     Solver(const PatchMesh& mesh, const FormFactors& ff, SolverConfig config);
+    ~Solver(); // stops the prefetch worker (waits for the group it is preparing)
+    Solver(const Solver&) = delete;
+    Solver& operator=(const Solver&) = delete;
 
     // One Jacobi/Gauss–Seidel sweep or one progressive shot; returns the new residual.
     double step();
@@ -57,8 +71,19 @@ class Solver {
     const SolverConfig& config() const { return config_; }
 
   private:
+    // A group's plane-fit moments (area-weighted, its members' centres in its u, v axes): they
+    // depend on the geometry only, so they are made at the group's first shot and kept.
+    struct PlaneFit {
+        bool ready = false;
+        std::vector<double> ax, ay;     // per member: A·x, A·y
+        double suu = 0, suv = 0, svv = 0; // Σ A x², Σ A x y, Σ A y²
+    };
     double computeResidual();
     void jacobiSweep(); // one sweep of B = E + R·F·B from the old B
+    void shootGroup();  // one progressive shot from the group with the most unshot power
+    const PlaneFit& planeFit(int g);
+    void prefetchAfter(int best, const std::vector<double>& power);
+    void prefetchLoop(int concurrency);
     const PatchMesh& mesh_;
     const FormFactors& ff_;
     SolverConfig config_;
@@ -67,6 +92,16 @@ class Solver {
     std::vector<float> scratch_;
     std::vector<glm::dvec3> memberShot_; // a group's members' ΔB at its shot
     std::vector<char> nearMark_;         // receivers of the shooting group's near field
+    std::vector<PlaneFit> fits_;         // per group, made at its first shot
+    std::vector<double> groupPower_;     // per group: unshot power A·ΔB (this step's ranking)
+    // Prefetch (SolverConfig::prefetch): queue_ holds the groups the worker should prepare next,
+    // best first, replaced after every ranking; queued_ marks the groups ever handed to it.
+    std::thread prefetcher_;
+    std::mutex prefetchMutex_;
+    std::condition_variable prefetchWake_;
+    std::vector<int> queue_;
+    bool stopPrefetch_ = false;
+    std::vector<char> queued_;
     double emittedSum_ = 0.0;
     double residual_ = 1.0;
     int steps_ = 0;
