@@ -5,7 +5,6 @@
 #include "cdt2.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <functional>
 #include <cmath>
 #include <limits>
@@ -535,7 +534,7 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
             mesh.vertexLattice.push_back(l);
         }
     }
-    if (!std::getenv("WB_EXP_NOSTITCH")) stitch(mesh);
+    if (mesh.conforming) stitch(mesh);
     // Shooting groups: numbered densely (a triangle's grid leaves some coarse cells empty),
     // then members, area, centroid; the frame comes from the surface.
     std::map<int, int> dense;
@@ -708,6 +707,7 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
     PatchMesh mesh;
     mesh.surfaces = scene.surfaces;
     mesh.closed = scene.closed;
+    mesh.conforming = config.conforming;
     if (!(config.shooterEdge >= 0.0) || !std::isfinite(config.shooterEdge))
         throw std::invalid_argument("radiosity meshing: shooterEdge must be >= 0");
     const bool grouped = config.shooterEdge > config.maxEdge;
@@ -786,7 +786,7 @@ PatchMesh meshScene(const Scene& scene, const MeshConfig& config) {
                 }
         } else {
             std::vector<char> ring;
-            for (const auto& t : std::getenv("WB_EXP_NOCDT") ? std::vector<std::vector<glm::dvec2>>{} : contactTriangles(scene, grids, si, config.maxEdge, ring)) {
+            for (const auto& t : !config.conforming ? std::vector<std::vector<glm::dvec2>>{} : contactTriangles(scene, grids, si, config.maxEdge, ring)) {
                 glm::dvec2 m(0.0);
                 std::array<glm::dvec2, 4> lat{};
                 for (std::size_t k = 0; k < t.size(); ++k) {
