@@ -7,7 +7,7 @@ pkgs=(
   cmake g++ make pkg-config
   freeglut3-dev libglew-dev libglm-dev libimgui-dev catch2
   libosmesa6-dev libglu1-mesa-dev libstb-dev libtinyobjloader-dev libtbb-dev
-  libcli11-dev fonts-dejavu-core libeigen3-dev
+  libcli11-dev fonts-dejavu-core libeigen3-dev libcgal-dev
   xvfb xauth imagemagick dpkg-dev
   gettext libx11-dev libxkbcommon-dev x11-xkb-utils xdotool
 )

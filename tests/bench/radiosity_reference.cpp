@@ -11,7 +11,8 @@
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
 // METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); PATCH_M
 // and SHOOTER_M "lab" = lab 08's default edges.
-// Default settings: `settings.empty()` below.
+// Default settings: `settings.empty()` below. --conforming (before the settings): mesh with
+// MeshConfig::conforming (issue 19 item 10's conforming mesh; "lab" edges then from its count).
 // Experiments (docs/bench/radiosity.md, "Why ours was off"): --black-except NAME sets every
 // other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
 // FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
@@ -35,6 +36,14 @@ using namespace wb::rad;
 
 namespace {
 
+bool gConforming = false; // --conforming
+
+MeshConfig meshConfig(double maxEdge, double shooterEdge) {
+    MeshConfig c{maxEdge, shooterEdge};
+    c.conforming = gConforming;
+    return c;
+}
+
 struct Setting {
     std::string name;
     double patch = 0.05;
@@ -54,7 +63,7 @@ double labPatch(const Scene& scene) {
         area += polygonArea(sf.vertices);
     double e = std::sqrt(area / 3700.0);
     for (int pass = 0; pass < 2; ++pass)
-        e *= std::sqrt(double(meshScene(scene, MeshConfig{e, 0.0}).patches.size()) / 3700.0);
+        e *= std::sqrt(double(meshScene(scene, meshConfig(e, 0.0)).patches.size()) / 3700.0);
     return e;
 }
 
@@ -192,6 +201,8 @@ int main(int argc, char** argv) {
             const std::string arg = argv[a];
             if (arg == "--out" && a + 1 < argc)
                 outPath = argv[++a];
+            else if (arg == "--conforming")
+                gConforming = true;
             else if (arg == "--black-except" && a + 1 < argc)
                 keepLit = argv[++a];
             else if (arg == "--setting" && a + 1 < argc)
@@ -236,7 +247,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < settings.size(); ++k) {
         const Setting& st = settings[k];
         const auto t0 = std::chrono::steady_clock::now();
-        const PatchMesh mesh = meshScene(scene, {st.patch, st.shooter});
+        const PatchMesh mesh = meshScene(scene, meshConfig(st.patch, st.shooter));
         FormFactorConfig fc;
         if (st.method == "rays" || st.method == "grouprays" || st.method == "p2p" ||
             st.method == "grouppool") {

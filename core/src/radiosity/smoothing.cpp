@@ -23,6 +23,11 @@ std::vector<glm::dvec3> vertexRadiosity(const PatchMesh& mesh, const std::vector
     }
     for (std::size_t v = 0; v < sum.size(); ++v)
         if (weight[v] > 0.0) sum[v] /= weight[v];
+    // Stitched vertices (on a patch edge where another surface meets it): interpolated along
+    // that edge, in the order they were put there (an end may be an earlier one).
+    for (const auto& sv : mesh.seamVertices)
+        sum[static_cast<std::size_t>(sv.vertex)] =
+            (1.0 - sv.t) * sum[static_cast<std::size_t>(sv.a)] + sv.t * sum[static_cast<std::size_t>(sv.b)];
     // Centre vertices (apex of a T-vertex patch's fan): the mean of its outline's values.
     for (const Patch& p : mesh.patches) {
         if (p.centreVertex < 0) continue;

@@ -9,10 +9,22 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 using namespace wb::rad;
+
+namespace {
+// These tests are of the conforming mesh (issue 19 item 10, MeshConfig::conforming; off in the
+// labs until it holds the Cycles bar: mesh.h).
+MeshConfig conforming(double maxEdge) {
+    MeshConfig c{maxEdge, 0.0};
+    c.conforming = true;
+    return c;
+}
+} // namespace
 
 namespace {
 // The test's own copy of "inside a body": the first surface along the normal is met from behind.
@@ -26,7 +38,7 @@ bool coveredPoint(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n)
 TEST_CASE("meshing: edge lengths, areas, normals") {
     for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
         const double maxEdge = s.name == "Cornell box" ? 0.05 : 0.4;
-        const PatchMesh m = meshScene(s, {maxEdge});
+        const PatchMesh m = meshScene(s, conforming(maxEdge));
         std::vector<double> area(s.surfaces.size(), 0.0);
         for (std::size_t i = 0; i < m.patches.size(); ++i) {
             const auto c = m.cornersOf(static_cast<int>(i));
@@ -39,7 +51,8 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
         // Patches tile their surface: areas add up (rounding of ~1e4 additions: 1e-12), except
         // where a body covers the surface (buildFitted counts only the exposed part, sampled
         // 8×8 per patch): the Cornell floor under the blocks, the sliver of its back wall behind
-        // the red wall, the classroom's floor under the red box and its ceiling behind the lamps.
+        // the red wall, the classroom's floor under the red box and its ceiling behind the lamps,
+        // the floor lamp's floor under its pole (a table panel is open at the top: not a body).
         for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
             const double full = polygonArea(s.surfaces[k].vertices);
             const std::string& name = s.surfaces[k].name;
@@ -55,6 +68,8 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
                 CHECK(area[k] == Approx(full).epsilon(3e-3)); // the sliver is 8.8e-4 m² of 0.303
             } else if (s.name == "classroom" && name == "floor") {
                 CHECK(area[k] == Approx(full - 0.36).epsilon(1e-12)); // the 0.6 × 0.6 m box
+            } else if (s.name == "floor lamp" && name == "floor") {
+                CHECK(area[k] == Approx(full - 0.04 * 0.04).epsilon(1e-12)); // the lamp's 4 cm pole
             } else if (s.name == "classroom" && name == "ceiling") {
                 CHECK(area[k] == Approx(full - 6 * 0.36).epsilon(5e-3)); // six 1.2 × 0.3 m lamps
             } else {
@@ -70,7 +85,7 @@ TEST_CASE("meshing: no patch is seen from inside a body (no black blotches at th
     // the patch showed, and 22 whole patches under the blocks that nobody sees.
     for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
         for (double edge : s.name == "Cornell box" ? std::vector<double>{0.03, 0.05, 0.1} : std::vector<double>{0.2, 0.4}) {
-            const PatchMesh m = meshScene(s, {edge});
+            const PatchMesh m = meshScene(s, conforming(edge));
             const PatchBvh bvh(m);
             int inside = 0;
             for (const Patch& p : m.patches) inside += coveredPoint(bvh, p.centre, p.normal) ? 1 : 0;
@@ -86,7 +101,7 @@ TEST_CASE("meshing: a ray census finds no crack between patches that share an ed
     // the surface there, never pass through to what lies behind (a crack). Watertight
     // triangles (core/raytrace) make a shared edge hit exactly once; a crack is a miss.
     for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
-        PatchMesh m = meshScene(s, {s.name == "Cornell box" ? 0.1 : 0.8});
+        PatchMesh m = meshScene(s, conforming(s.name == "Cornell box" ? 0.1 : 0.8));
         // Refine once so T-vertices are in the census.
         std::vector<glm::dvec3> B(m.patches.size());
         for (std::size_t i = 0; i < B.size(); ++i) B[i] = glm::dvec3(m.patches[i].centre.x < 0.3 * m.patches[i].centre.x + 0.2 ? 1.0 : 0.0);
@@ -164,9 +179,17 @@ void checkConforming(const PatchMesh& m) {
                          p2 = m.vertices[static_cast<std::size_t>(tris[t][2])];
         area[static_cast<std::size_t>(patchOf[t])] += 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
     }
-    // The triangles cover the patch's polygon (its area may be less: the exposed part).
+    // The triangles cover the patch's polygon (its area may be less: the exposed part), up to
+    // two moves of a few µm: a triangle patch on a trapezoid surface (the Cornell floor, 552.8
+    // / 549.6 mm) gets its finer neighbour's T-vertex at the lattice midpoint of an edge not
+    // along the lattice, which the bilinear map puts off the straight edge; stitching gives
+    // vertices within 1e-5 m of each other on two surfaces one position (the Cornell red wall
+    // meets the back wall 10-20 µm off its plane). Measured 1.4e-4 of a patch's area at worst.
+    double worstRel = 0.0;
     for (std::size_t i = 0; i < m.patches.size(); ++i)
-        CHECK(area[i] == Approx(polygonArea(m.cornersOf(static_cast<int>(i)))).epsilon(1e-12));
+        worstRel = std::max(worstRel, std::abs(area[i] / polygonArea(m.cornersOf(static_cast<int>(i))) - 1.0));
+    INFO("worst relative area of a display fan against its patch " << worstRel);
+    CHECK(worstRel <= 1e-3);
     const PatchBvh bvh(m);
     int boundary = 0;
     for (const auto& [e, n] : uses) {
@@ -200,7 +223,7 @@ void checkConforming(const PatchMesh& m) {
 } // namespace
 
 TEST_CASE("adaptive refinement: T-vertices handled, display mesh conforming") {
-    PatchMesh m = meshScene(cornellBox(), {0.1});
+    PatchMesh m = meshScene(cornellBox(), conforming(0.1));
     const std::size_t n0 = m.patches.size();
     // A sharp step in B across the floor makes the patches along it split.
     std::vector<glm::dvec3> B(n0);
@@ -226,11 +249,11 @@ TEST_CASE("adaptive refinement: T-vertices handled, display mesh conforming") {
     int maxLevel = 0;
     for (const Patch& p : m.patches) maxLevel = std::max(maxLevel, p.level);
     CHECK(maxLevel == 3);
-    checkConforming(meshScene(cornellBox(), {0.05}));
+    checkConforming(meshScene(cornellBox(), conforming(0.05)));
     // Triangles split too.
     Scene tri = perpendicularPlates(1, 1, 1);
     tri.surfaces[1].vertices.pop_back();
-    PatchMesh t = meshScene(tri, {0.25});
+    PatchMesh t = meshScene(tri, conforming(0.25));
     std::vector<glm::dvec3> bt(t.patches.size());
     for (std::size_t i = 0; i < bt.size(); ++i) bt[i] = glm::dvec3(t.patches[i].centre.x < 0.5 ? 1.0 : 0.1);
     CHECK(refineAdaptive(t, bt, {0.05, 3, 0.001, 100000}, nullptr) > 0);
@@ -238,7 +261,7 @@ TEST_CASE("adaptive refinement: T-vertices handled, display mesh conforming") {
 }
 
 TEST_CASE("smoothing: constant stays constant, surfaces never mix (no light leaks)") {
-    PatchMesh m = meshScene(cornellBox(), {0.1});
+    PatchMesh m = meshScene(cornellBox(), conforming(0.1));
     std::vector<glm::dvec3> B(m.patches.size());
     for (std::size_t i = 0; i < B.size(); ++i) B[i] = glm::dvec3(m.patches[i].centre.x < 0.26 ? 1.0 : 0.1);
     refineAdaptive(m, B, {0.05, 2, 0.001, 100000}, nullptr);
@@ -261,7 +284,7 @@ TEST_CASE("smoothing: constant stays constant, surfaces never mix (no light leak
 TEST_CASE("adaptive refinement ignores the emitters' brightness for its threshold") {
     // Cornell box: B = E on the light (17), walls lit ~1: a 0.05 threshold relative to the
     // light would split nothing; relative to the brightest wall it splits at the step.
-    PatchMesh m = meshScene(cornellBox(), {0.1});
+    PatchMesh m = meshScene(cornellBox(), conforming(0.1));
     std::vector<glm::dvec3> B(m.patches.size());
     for (std::size_t i = 0; i < B.size(); ++i)
         B[i] = m.patches[i].emission.x > 0 ? m.patches[i].emission
@@ -270,21 +293,40 @@ TEST_CASE("adaptive refinement ignores the emitters' brightness for its threshol
 }
 
 TEST_CASE("meshing: bounded aspect ratio on every scene") {
+    // The bound stated in mesh.h: quads L²/A <= kMaxAspect, triangles every angle >=
+    // kMinTriangleAngleDeg (so L²/(2A) <= kMaxTriangleAspect). Before issue 19 item 10: 3.3
+    // (edge 0.1) to 20 (edge 0.8) on the tables' 3 cm top edges, and a floor patch partly
+    // under a Cornell block drawn as its whole quad.
     for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
         const bool box = s.name == "Cornell box";
-        for (double edge : box ? std::vector<double>{0.02, 0.035, 0.05, 0.1, 0.2} : std::vector<double>{0.1, 0.2, 0.4, 0.8}) {
-            const PatchMesh m = meshScene(s, {edge});
-            double worst = 0.0;
-            int at = -1;
+        for (double edge : box ? std::vector<double>{0.02, 0.0236, 0.035, 0.05, 0.1, 0.2} : std::vector<double>{0.1, 0.2, 0.243, 0.4, 0.8}) {
+            const PatchMesh m = meshScene(s, conforming(edge));
+            double worstQuad = 0.0, worstTri = 0.0, minAngle = 180.0;
+            int tris = 0;
             for (std::size_t i = 0; i < m.patches.size(); ++i) {
                 const double a = patchAspect(m, static_cast<int>(i));
-                if (a > worst) { worst = a; at = static_cast<int>(i); }
+                if (m.patches[i].cornerCount == 4) {
+                    worstQuad = std::max(worstQuad, a);
+                    continue;
+                }
+                ++tris;
+                worstTri = std::max(worstTri, a);
+                const auto c = m.cornersOf(static_cast<int>(i));
+                for (int k = 0; k < 3; ++k) {
+                    const glm::dvec3 u = glm::normalize(c[static_cast<std::size_t>((k + 1) % 3)] - c[static_cast<std::size_t>(k)]);
+                    const glm::dvec3 v = glm::normalize(c[static_cast<std::size_t>((k + 2) % 3)] - c[static_cast<std::size_t>(k)]);
+                    minAngle = std::min(minAngle, glm::degrees(std::acos(std::clamp(glm::dot(u, v), -1.0, 1.0))));
+                }
             }
-            INFO(s.name << " edge " << edge << ": " << m.patches.size() << " patches, worst aspect " << worst
-                        << " on " << m.surfaces[static_cast<std::size_t>(m.patches[static_cast<std::size_t>(at)].surface)].name);
-            // Before issue 19 item 10: 3.3 (edge 0.1) to 20 (edge 0.8) on the tables' 3 cm top
-            // edges; the bound is mesh.h's kMaxAspect (measured 2.15, the shade rim's end cells).
-            CHECK(worst <= kMaxAspect);
+            INFO(s.name << " edge " << edge << ": " << m.patches.size() << " patches (" << tris
+                        << " triangles), worst quad " << worstQuad << ", worst triangle " << worstTri
+                        << ", smallest angle " << minAngle << "°");
+            CHECK(worstQuad <= kMaxAspect);
+            CHECK(worstTri <= kMaxTriangleAspect);
+            // The mesher's bound is on its 2D points; the lattice round trip moves a corner by
+            // ~1e-16 of the surface: 1e-6° of slack.
+            CHECK(minAngle >= kMinTriangleAngleDeg - 1e-6);
+            CHECK(tris > 0); // every scene has a body standing on a surface
         }
     }
 }
@@ -316,5 +358,92 @@ TEST_CASE("scenes: no two surfaces lie face to face in one plane (no depth ties)
                 }
             }
         CHECK(ties == 0);
+    }
+}
+
+namespace {
+// Display edges (exact endpoint positions, both orders alike) that lie on ANOTHER surface's
+// polygon but have no twin there: a T-junction where two surfaces meet, which the rasteriser
+// opens into a row of 1-px holes (the background or a body's inside shows through).
+int openSeams(const PatchMesh& m, int* seamEdges) {
+    using Key = std::array<double, 6>;
+    std::map<Key, std::pair<int, int>> uses; // edge -> (count, surface of the first use)
+    const auto tris = displayTriangles(m);
+    for (const auto& t : tris)
+        for (int k = 0; k < 3; ++k) {
+            glm::dvec3 a = m.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+            glm::dvec3 b = m.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])];
+            if (std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z)) std::swap(a, b);
+            auto& u = uses[Key{a.x, a.y, a.z, b.x, b.y, b.z}];
+            if (u.first++ == 0) u.second = m.vertexSurface[static_cast<std::size_t>(t[0])];
+        }
+    int open = 0;
+    *seamEdges = 0;
+    for (const auto& [e, u] : uses) {
+        const glm::dvec3 a(e[0], e[1], e[2]), b(e[3], e[4], e[5]), mid = 0.5 * (a + b);
+        for (std::size_t s = 0; s < m.surfaces.size(); ++s) {
+            if (static_cast<int>(s) == u.second) continue;
+            const auto& d = m.surfaces[s].vertices;
+            const glm::dvec3 n = polygonNormal(d);
+            const double tol = 1e-9;
+            if (std::abs(glm::dot(a - d[0], n)) > tol || std::abs(glm::dot(b - d[0], n)) > tol) continue;
+            bool in = true;
+            for (std::size_t k = 0; k < d.size(); ++k)
+                in = in && glm::dot(glm::cross(d[(k + 1) % d.size()] - d[k], mid - d[k]), n) >= -tol;
+            if (!in) continue;
+            ++*seamEdges;
+            // The other surface running on across the edge (a table panel standing on the
+            // floor, open at the top: no hole under it) leaves nothing to crack.
+            auto coveredBySurface = [&](const glm::dvec3& q) {
+                for (const auto& t : tris) {
+                    if (m.vertexSurface[static_cast<std::size_t>(t[0])] != static_cast<int>(s)) continue;
+                    const glm::dvec3 p0 = m.vertices[static_cast<std::size_t>(t[0])], p1 = m.vertices[static_cast<std::size_t>(t[1])],
+                                     p2 = m.vertices[static_cast<std::size_t>(t[2])];
+                    const double area2 = glm::dot(glm::cross(p1 - p0, p2 - p0), n);
+                    const double w0 = glm::dot(glm::cross(p2 - p1, q - p1), n) / area2, w1 = glm::dot(glm::cross(p0 - p2, q - p2), n) / area2;
+                    if (w0 >= -1e-9 && w1 >= -1e-9 && 1.0 - w0 - w1 >= -1e-9) return true;
+                }
+                return false;
+            };
+            bool under = false;
+            if (u.first == 1) {
+                const glm::dvec3 side = glm::normalize(glm::cross(n, b - a)) * (1e-4 * glm::length(b - a));
+                under = coveredBySurface(mid + side) && coveredBySurface(mid - side);
+            }
+            if (u.first == 1 && !under) {
+                ++open;
+                if (std::getenv("WB_DEBUG_SEAMS")) std::fprintf(stderr, "open %s | %s: %.6f %.6f %.6f - %.6f %.6f %.6f\n", m.surfaces[static_cast<std::size_t>(u.second)].name.c_str(), m.surfaces[s].name.c_str(), a.x, a.y, a.z, b.x, b.y, b.z);
+            }
+            break;
+        }
+    }
+    return open;
+}
+} // namespace
+
+TEST_CASE("meshing: conforming where surfaces meet (no T-junction at a seam)") {
+    // Issue 19 item 10: the Cornell floor was a grid whose patches ran under the blocks, with
+    // no vertex on the blocks' bottom edges; the walls' and the floor's grids met at the room's
+    // corners with different vertices. Every display edge lying on another surface must have a
+    // twin there, endpoint for endpoint (exact positions: GL's rasteriser shares an edge
+    // without a gap only between identical vertices). At the lab's sizes and after refinement.
+    for (const Scene& s : {cornellBox(), classroom(), floorLamp()}) {
+        const bool box = s.name == "Cornell box";
+        for (double edge : box ? std::vector<double>{0.0236, 0.05} : std::vector<double>{0.243, 0.4}) {
+            PatchMesh m = meshScene(s, conforming(edge));
+            int seams = 0;
+            const int open = openSeams(m, &seams);
+            INFO(s.name << " edge " << edge << ": " << seams << " display edges on another surface, " << open << " without a twin");
+            CHECK(seams > 100);
+            CHECK(open == 0);
+            // A refinement step splits patches on one side of a seam only.
+            std::vector<glm::dvec3> B(m.patches.size());
+            for (std::size_t i = 0; i < B.size(); ++i)
+                B[i] = glm::dvec3(std::fmod(std::floor(m.patches[i].centre.x / (3 * edge)) + std::floor(m.patches[i].centre.z / (3 * edge)), 2.0));
+            CHECK(refineAdaptive(m, B, {0.05, 1, 0.001, 100000}, nullptr) > 0);
+            const int openAfter = openSeams(m, &seams);
+            INFO("after refinement: " << m.patches.size() << " patches, " << seams << " seam edges, " << openAfter << " open");
+            CHECK(openAfter == 0);
+        }
     }
 }
