@@ -166,13 +166,16 @@ int surfaceNamed(const PatchMesh& mesh, const std::string& name) {
 } // namespace
 
 // Both meshes at the lab's default size for them (~3,700 patches). The conforming mesh
-// (MeshConfig::conforming) must show no crack. The default grid mesh (the labs') shows two on
-// main, reported and allowed to fail ([!mayfail]) until it is mended: the Cornell box one pixel
-// at a block's foot (a floor cell running under the block, not conforming), the classroom a
-// 1-2 px line along the ceiling above the lamps (a ceiling cell wholly above a lamp's back is
-// dropped as "inside a body", and from the lab's camera the 2 cm gap beside the lamp shows
-// the background through it: 852 px measured).
-void noCracks(bool conforming) {
+// (MeshConfig::conforming) must show no crack. The default grid mesh (the labs') showed two:
+//  - the classroom a 1-2 px line along the ceiling above the lamps (852 px): a ceiling cell
+//    over a lamp's back was dropped as "inside a body", and the 2 cm gap beside the lamp showed
+//    the background through it. Mended (mesh.cpp covered(): grazing rays leave through the
+//    gap); the census is 0 and this case is red without the mend.
+//  - the Cornell box one pixel at the short block's right foot (846, ·): a floor cell whose
+//    8×8 exposure samples all lie under the block is dropped, and the sliver of it outside
+//    the footprint (narrower than the samples' 1/16 inset) leaves a 1 px hole. Not mended: it
+//    is allowed here (`cornellAllowed` = 1, measured), so a second crack is red.
+void noCracks(bool conforming, int cornellAllowed) {
     wb::HeadlessContext ctx(kW, kH);
     REQUIRE(ctx.ok());
     const std::pair<const char*, Scene> scenes[] = {
@@ -184,16 +187,18 @@ void noCracks(bool conforming) {
                   << " px, enclosed " << c.enclosed << " (first at " << c.firstX << ", " << c.firstY << ")");
         WARN(name << (conforming ? " (conforming)" : " (grid)") << ": " << mesh.patches.size() << " patches, "
                   << c.background << " background px, enclosed " << c.enclosed);
-        CHECK(c.enclosed == 0);
+        CHECK(c.enclosed <= (std::string(name) == "Cornell box" ? cornellAllowed : 0));
     }
 }
 
 TEST_CASE("issue 19 item 10: no background shows between patches of the conforming mesh", "[gl]") {
-    noCracks(true);
+    noCracks(true, 0);
 }
 
-TEST_CASE("the default grid mesh's crack census (known cracks on main)", "[gl][!mayfail]") {
-    noCracks(false);
+TEST_CASE("the default grid mesh's crack census: none in the classroom and floor lamp, one "
+          "known pixel in the Cornell box",
+          "[gl]") {
+    noCracks(false, 1);
 }
 
 TEST_CASE("the crack census fails on a cracked mesh", "[gl]") {

@@ -10,7 +10,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <random>
 #include <set>
 #include <tuple>
 
@@ -27,11 +29,27 @@ MeshConfig conforming(double maxEdge) {
 } // namespace
 
 namespace {
-// The test's own copy of "inside a body": the first surface along the normal is met from behind.
+// The test's own "inside a body": the first surface is met from behind along the normal and
+// along 64 seeded directions uniform over the hemisphere (mesh.cpp looks along two fixed rings
+// instead). A panel hanging just off a surface is no body: from the classroom's ceiling above
+// a lamp, 2 cm over it, directions more than ~82° from the normal (14% of the hemisphere)
+// leave through the gap.
 bool coveredPoint(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
     const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
-    if (bvh.nearestPatch(o, n, 0.0, 1e4) >= 0) return false;
-    return !bvh.visible(o, o + 1e4 * n);
+    auto behind = [&](const glm::dvec3& d) {
+        return bvh.nearestPatch(o, d, 0.0, 1e4) < 0 && !bvh.visible(o, o + 1e4 * d);
+    };
+    if (!behind(n)) return false;
+    const glm::dvec3 a = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 t1 = glm::normalize(glm::cross(n, a)), t2 = glm::cross(n, t1);
+    std::mt19937 rng(20261202);
+    std::uniform_real_distribution<double> u01(0.0, 1.0);
+    for (int k = 0; k < 64; ++k) {
+        const double c = u01(rng), s = std::sqrt(std::max(0.0, 1.0 - c * c)),
+                     phi = 2.0 * 3.14159265358979323846 * u01(rng);
+        if (!behind(c * n + s * (std::cos(phi) * t1 + std::sin(phi) * t2))) return false;
+    }
+    return true;
 }
 } // namespace
 
@@ -51,7 +69,8 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
         // Patches tile their surface: areas add up (rounding of ~1e4 additions: 1e-12), except
         // where a body covers the surface (buildFitted counts only the exposed part, sampled
         // 8×8 per patch): the Cornell floor under the blocks, the sliver of its back wall behind
-        // the red wall, the classroom's floor under the red box and its ceiling behind the lamps,
+        // the red wall, the classroom's floor under the red box (not its ceiling over the lamps, which hang 2 cm
+        // below it: no body, the ceiling there is seen through the gap),
         // the floor lamp's floor under its pole (a table panel is open at the top: not a body).
         for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
             const double full = polygonArea(s.surfaces[k].vertices);
@@ -70,8 +89,6 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
                 CHECK(area[k] == Approx(full - 0.36).epsilon(1e-12)); // the 0.6 × 0.6 m box
             } else if (s.name == "floor lamp" && name == "floor") {
                 CHECK(area[k] == Approx(full - 0.04 * 0.04).epsilon(1e-12)); // the lamp's 4 cm pole
-            } else if (s.name == "classroom" && name == "ceiling") {
-                CHECK(area[k] == Approx(full - 6 * 0.36).epsilon(5e-3)); // six 1.2 × 0.3 m lamps
             } else {
                 CHECK(area[k] == Approx(full).epsilon(1e-12));
             }
