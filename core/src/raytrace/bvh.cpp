@@ -949,7 +949,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
     const auto start = std::chrono::steady_clock::now();
     const bool parallel = options.buildThreads != 1;
     Nodes build;
-    auto run = [&] {
+    auto buildTree = [&] {
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
         RefBuffer bufA(count), bufB(count);
@@ -1058,6 +1058,17 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         else
             fill(0, n);
     };
+    // The collapse runs in the build's arena too: its parallel parts use the same threads,
+    // and its serial parts run beside them (Bvh::collapseInto).
+    auto run = [&] {
+        buildTree();
+        if (options_.width != 2) {
+            const auto t0 = std::chrono::steady_clock::now();
+            collapseWide(build.data(), build.size());
+            stats_.collapseSeconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        }
+    };
     if (options.buildThreads > 1)
         tbb::task_arena(options.buildThreads).execute(run);
     else
@@ -1102,12 +1113,6 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     fnodes_[i].child[c] = nodes_[i].child[c];
                     fnodes_[i].count[c] = nodes_[i].count[c];
                 }
-    }
-    if (options_.width != 2) {
-        const auto t0 = std::chrono::steady_clock::now();
-        collapseWide(build.data(), build.size());
-        stats_.collapseSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen
