@@ -292,27 +292,33 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
         t[6] = _mm_cvtepi32_ps(_mm_set_epi32(0, std::int32_t(c[2 * nb + b]),
                                              std::int32_t(c[nb + b]), std::int32_t(c[b])));
     }
+    // The running union of bins (per lane: lo x, y, z, hi x, y, z) and their count, one
+    // bin at a time: the right-to-left pass and the left-to-right pass below share it.
+    struct Running {
+        __m128 l[3], h[3], cnt;
+        Running(__m128 inf, __m128 ninf)
+            : l{inf, inf, inf}, h{ninf, ninf, ninf}, cnt(_mm_setzero_ps()) {}
+        void add(const __m128* t) {
+            for (int a = 0; a < 3; ++a) {
+                l[a] = _mm_min_ps(l[a], t[a]);
+                h[a] = _mm_max_ps(h[a], t[3 + a]);
+            }
+            cnt = _mm_add_ps(cnt, t[6]);
+        }
+    };
     // dx·dy + dy·dz + dz·dx of the scaled extents (half the area, in the node's units).
-    auto area = [k](__m128 lx, __m128 ly, __m128 lz, __m128 hx, __m128 hy, __m128 hz) {
-        const __m128 dx = _mm_mul_ps(_mm_sub_ps(hx, lx), k);
-        const __m128 dy = _mm_mul_ps(_mm_sub_ps(hy, ly), k);
-        const __m128 dz = _mm_mul_ps(_mm_sub_ps(hz, lz), k);
+    auto area = [k](const Running& r) {
+        const __m128 dx = _mm_mul_ps(_mm_sub_ps(r.h[0], r.l[0]), k);
+        const __m128 dy = _mm_mul_ps(_mm_sub_ps(r.h[1], r.l[1]), k);
+        const __m128 dz = _mm_mul_ps(_mm_sub_ps(r.h[2], r.l[2]), k);
         return _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dy), _mm_mul_ps(dy, dz)), _mm_mul_ps(dz, dx));
     };
     {
-        __m128 lx = inf, ly = inf, lz = inf, hx = ninf, hy = ninf, hz = ninf;
-        __m128 cnt = _mm_setzero_ps();
+        Running right(inf, ninf);
         for (int b = nb - 1; b > 0; --b) {
-            const __m128* t = T + 7 * b;
-            lx = _mm_min_ps(lx, t[0]);
-            ly = _mm_min_ps(ly, t[1]);
-            lz = _mm_min_ps(lz, t[2]);
-            hx = _mm_max_ps(hx, t[3]);
-            hy = _mm_max_ps(hy, t[4]);
-            hz = _mm_max_ps(hz, t[5]);
-            cnt = _mm_add_ps(cnt, t[6]);
-            sc.rightAreaL[std::size_t(b)].v = area(lx, ly, lz, hx, hy, hz);
-            sc.rightCountL[std::size_t(b)].v = cnt;
+            right.add(T + 7 * b);
+            sc.rightAreaL[std::size_t(b)].v = area(right);
+            sc.rightCountL[std::size_t(b)].v = right.cnt;
         }
     }
     // Lanes that cannot win: the fourth, and axes that are not binnable. NaN: no cost
@@ -323,19 +329,11 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
                                  s.scale[0] > 0 ? inff : nan);
     __m128i bestBin = _mm_setzero_si128();
     {
-        __m128 lx = inf, ly = inf, lz = inf, hx = ninf, hy = ninf, hz = ninf;
-        __m128 cnt = _mm_setzero_ps();
+        Running left(inf, ninf);
         for (int b = 1; b < nb; ++b) {
-            const __m128* t = T + 7 * (b - 1);
-            lx = _mm_min_ps(lx, t[0]);
-            ly = _mm_min_ps(ly, t[1]);
-            lz = _mm_min_ps(lz, t[2]);
-            hx = _mm_max_ps(hx, t[3]);
-            hy = _mm_max_ps(hy, t[4]);
-            hz = _mm_max_ps(hz, t[5]);
-            cnt = _mm_add_ps(cnt, t[6]);
+            left.add(T + 7 * (b - 1));
             const __m128 cost = _mm_add_ps(
-                _mm_mul_ps(cnt, area(lx, ly, lz, hx, hy, hz)),
+                _mm_mul_ps(left.cnt, area(left)),
                 _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
             const __m128 better = _mm_cmplt_ps(cost, bestCost);
             bestCost = _mm_or_ps(_mm_and_ps(better, cost), _mm_andnot_ps(better, bestCost));
@@ -951,7 +949,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
     const auto start = std::chrono::steady_clock::now();
     const bool parallel = options.buildThreads != 1;
     Nodes build;
-    auto run = [&] {
+    auto buildTree = [&] {
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
         RefBuffer bufA(count), bufB(count);
@@ -1060,6 +1058,17 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         else
             fill(0, n);
     };
+    // The collapse runs in the build's arena too: its parallel parts use the same threads,
+    // and its serial parts run beside them (Bvh::collapseInto).
+    auto run = [&] {
+        buildTree();
+        if (options_.width != 2) {
+            const auto t0 = std::chrono::steady_clock::now();
+            collapseWide(build.data(), build.size());
+            stats_.collapseSeconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        }
+    };
     if (options.buildThreads > 1)
         tbb::task_arena(options.buildThreads).execute(run);
     else
@@ -1104,12 +1113,6 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     fnodes_[i].child[c] = nodes_[i].child[c];
                     fnodes_[i].count[c] = nodes_[i].count[c];
                 }
-    }
-    if (options_.width != 2) {
-        const auto t0 = std::chrono::steady_clock::now();
-        collapseWide(build.data(), build.size());
-        stats_.collapseSeconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     if (stats_.maxDepth >= kMaxDepth)
         throw std::logic_error("Bvh: tree deeper than the traversal stack"); // cannot happen

@@ -194,7 +194,12 @@ class Bvh : public Aggregate {
     static const WidePath* avx512Path(bool quantised); // bvh_wide_avx512.cpp: width 8
     bool quantiseNodes(); // wnodes8_ into qnodes8_; false (nothing changed) if a box cannot be
     void collapseWide(const void* buildNodes, std::size_t count);
-    template <int W> void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out);
+    // besideTasks and besideAppend: the caller's work run beside the collapse's parallel
+    // tasks and beside their serial append (bvh_wide.cpp).
+    template <int W>
+    void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
+                      const std::function<void()>& besideTasks,
+                      const std::function<void()>& besideAppend);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
     void fillLeafData(std::uint32_t i);
     // Inline: one indirect call from the query to the walk (a cheap ray's cost counts).
