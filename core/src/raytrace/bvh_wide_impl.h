@@ -679,7 +679,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const Ray& ray = rays[j];
             const glm::dvec3 o = ray.origin, d = ray.direction;
             if (d.x == 0 || d.y == 0 || d.z == 0) continue;
-            const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
+            const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
+                          dz = _mm_load_sd(&ray.direction[2]);
             const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
             if (signs >= 0 && sg != signs) continue;
             const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
@@ -733,7 +734,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
                 const __m128 sgnEps = _mm_xor_ps(eps, _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
                 _mm_store_ps(&p.inv[a][j], finv);
-                _mm_store_ps(&p.invFar[a][j], _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+                _mm_store_ps(&p.invFar[a][j],
+                             _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
                 _mm_store_ps(&p.on[a][j], _mm_add_ps(fo, sgnEps));
                 _mm_store_ps(&p.of[a][j], _mm_sub_ps(fo, sgnEps));
             }

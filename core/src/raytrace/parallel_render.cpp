@@ -131,7 +131,8 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         long long nBad = 0;
         const Aggregate& agg = scene.aggregate();
         std::vector<const Primitive*> lastBlockers(
-            opt.packets ? std::size_t(std::max(opt.trace.maxDepth, 0) + 1) * scene.lights.size() : 0);
+            opt.packets ? std::size_t(std::max(opt.trace.maxDepth, 0) + 1) * scene.lights.size()
+                        : 0);
         auto rayOf = [&](int x, int y) {
             return opt.cornerRays ? lookAt->rayAt(x, y, width, height)
                                   : camera.primaryRay(x, y, width, height);
@@ -173,7 +174,8 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
                 for (int j = 0; j < n; ++j) {
                     if (!((found >> j) & 1)) hits[j].primitive = nullptr;
-                    store(x + j, y, tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data()));
+                    store(x + j, y,
+                          tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data()));
                 }
             }
         }

@@ -127,9 +127,9 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                     cached->occluded(feeler, t0, s.distance))
                     s.transmittance = 0.0;
                 else
-                    s.transmittance = feelerTransmittance(hit.point, s.toLight, t0, s.distance,
-                                                          self, lastBlockers ? &lastBlockers[li]
-                                                                             : nullptr);
+                    s.transmittance =
+                        feelerTransmittance(hit.point, s.toLight, t0, s.distance, self,
+                                            lastBlockers ? &lastBlockers[li] : nullptr);
             } else {
                 s.transmittance = 1.0; // the light is closer than the offset
             }
@@ -142,8 +142,7 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
 
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                       RayCounts& counts, const Hit* known,
-                       const Primitive** lastBlockers) const {
+                       RayCounts& counts, const Hit* known, const Primitive** lastBlockers) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
@@ -238,9 +237,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
                 t.weight = ray.weight * m.kt / share;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                const Color tc =
-                    traceRay<kObserve>(t, RayKind::Refracted, observer, budget, counts, nullptr,
-                                       childBlockers);
+                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget, counts,
+                                                    nullptr, childBlockers);
                 if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
                 c = model_.addScaled(c, tc, m.kt);
             } else if (kObserve) {
