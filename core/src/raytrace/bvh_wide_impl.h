@@ -659,57 +659,91 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return ~unsigned(someNeg & somePos) & ((1u << W) - 1);
     }
 
-    // Sets up ray j of the packet; false: it cannot join (double walk, zero direction
-    // component, or other signs than `signs`, which the first ray sets). initRay's float
-    // values, the same operations, written into the packet's lanes only; the ray's own
-    // RayData registers are filled when the ray first runs its own leaf tests (fillLane):
-    // broadcasting them for every ray cost more than a tenth of a packet. Written out
-    // rather than shared with initRay: a shared helper made GCC 12 put a register-to-
-    // register vmovq (C5 79 D6) into the AVX2 single walk, which valgrind 3.19 cannot
-    // decode, and callgrind is how this walk is profiled (docs/raytrace-scale.md).
-    static bool joinPacket(Packet& p, int j, const Ray& ray, double tMin, int& signs) {
-        const glm::dvec3 o = ray.origin, d = ray.direction;
-        if (d.x == 0 || d.y == 0 || d.z == 0) return false;
-        const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
-        const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        if (signs >= 0 && sg != signs) return false;
-        const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-        auto inRange = [](__m128d v) { // as initRay
-            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
-        };
-        if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) return false;
-        signs = sg;
-        RayData& r = p.r[j];
-        r.off = kOffsets.v[sg];
-        for (int a = 0; a < 3; ++a)
-            r.neg[a] = (sg >> a) & 1;
-        r.useFloat = true;
-        r.o = o;
-        r.d = d;
-        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
-        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
-        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-        const __m128 sgnEps =
-            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
-        alignas(16) float inv[4], invFar[4], on[4], of[4];
-        _mm_store_ps(inv, finv);
-        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
-        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
-        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
-        for (int a = 0; a < 3; ++a) {
-            p.on[a][j] = on[a];
-            p.of[a][j] = of[a];
-            p.inv[a][j] = inv[a];
-            p.invFar[a][j] = invFar[a];
+    // Sets up the rays of `lanes` that can join the packet and returns their mask; the others
+    // (double walk, a zero direction component, or other signs than the first joining
+    // ray's) are traced one by one. initRay's checks per ray; then initRay's float values
+    // (the same IEEE operations lane by lane: conversions, 1/d, products, sums, so the same
+    // bits) four rays at a time, stored straight into the packet's lanes: one division for
+    // four rays instead of one a ray (issue 21: the per-ray set-up was a fifth of a mesh
+    // packet's instructions). The ray's own RayData registers are filled when it first
+    // runs its own leaf tests (fillLane). Written out rather than shared with initRay: a
+    // shared helper made GCC 12 put a register-to-register vmovq (C5 79 D6) into the AVX2
+    // single walk, which valgrind 3.19 cannot decode, and callgrind is how this walk is
+    // profiled (docs/raytrace-scale.md).
+    static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
+        alignas(16) double dd[3][W], oo[3][W], omax[W], tm[W];
+        unsigned joined = 0;
+        int signs = -1;
+        for (unsigned m = lanes; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            const Ray& ray = rays[j];
+            const glm::dvec3 o = ray.origin, d = ray.direction;
+            if (d.x == 0 || d.y == 0 || d.z == 0) continue;
+            const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
+                          dz = _mm_load_sd(&ray.direction[2]);
+            const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+            if (signs >= 0 && sg != signs) continue;
+            const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+            auto inRange = [](__m128d v) { // as initRay
+                const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+                return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                                 _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                            _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+            };
+            if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) continue;
+            signs = sg;
+            joined |= 1u << j;
+            RayData& r = p.r[j];
+            r.off = kOffsets.v[sg];
+            for (int a = 0; a < 3; ++a)
+                r.neg[a] = (sg >> a) & 1;
+            r.useFloat = true;
+            r.o = o;
+            r.d = d;
+            const double* op = &o.x;
+            const double* dp = &d.x;
+            for (int a = 0; a < 3; ++a) {
+                oo[a][j] = op[a];
+                dd[a][j] = dp[a];
+            }
+            omax[j] = om;
+            tm[j] = tMin[j];
         }
-        const float ftMin = float(tMin);
-        p.tMin[j] = ftMin - std::abs(ftMin) * 0x1p-20f;
-        p.off = r.off;
-        return true;
+        if (!joined) return 0;
+        // Lanes outside the packet compute the first ray's values (closePacket overwrites
+        // them; this only keeps their arithmetic on finite numbers).
+        const int first = __builtin_ctz(joined);
+        for (int j = 0; j < W; ++j) {
+            if ((joined >> j) & 1) continue;
+            for (int a = 0; a < 3; ++a) {
+                oo[a][j] = oo[a][first];
+                dd[a][j] = dd[a][first];
+            }
+            omax[j] = omax[first];
+            tm[j] = tm[first];
+        }
+        p.off = p.r[first].off;
+        auto toFloat = [](const double* x) { // four doubles rounded to float, as _mm_cvtpd_ps
+            return _mm_movelh_ps(_mm_cvtpd_ps(_mm_load_pd(x)), _mm_cvtpd_ps(_mm_load_pd(x + 2)));
+        };
+        for (int j = 0; j < W; j += 4) {
+            // float(om)·2^-21 with the direction's sign, as initRay's sgnEps.
+            const __m128 eps = _mm_mul_ps(toFloat(omax + j), _mm_set1_ps(0x1p-21f));
+            for (int a = 0; a < 3; ++a) {
+                const __m128 fd = toFloat(dd[a] + j), fo = toFloat(oo[a] + j);
+                const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+                const __m128 sgnEps = _mm_xor_ps(eps, _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+                _mm_store_ps(&p.inv[a][j], finv);
+                _mm_store_ps(&p.invFar[a][j],
+                             _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+                _mm_store_ps(&p.on[a][j], _mm_add_ps(fo, sgnEps));
+                _mm_store_ps(&p.of[a][j], _mm_sub_ps(fo, sgnEps));
+            }
+            const __m128 ftMin = toFloat(tm + j);
+            const __m128 absT = _mm_and_ps(ftMin, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)));
+            _mm_store_ps(&p.tMin[j], _mm_sub_ps(ftMin, _mm_mul_ps(absT, _mm_set1_ps(0x1p-20f))));
+        }
+        return joined;
     }
     // Ray j's RayData registers as initRay sets them, from the packet's lanes (before the
     // ray's own leaf tests).
@@ -1021,19 +1055,17 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const Primitive* best[W];
         std::uint8_t bestKind[W];
         std::uint32_t bestIndex[W];
-        unsigned packet = 0;
-        int signs = -1;
-        for (unsigned m = lanes; m; m &= m - 1) {
+        const unsigned packet = joinPacket(p, rays, tMin, lanes);
+        for (unsigned m = lanes & ~packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            if (joinPacket(p, j, rays[j], tMin[j], signs)) {
-                packet |= 1u << j;
-                tMax[j] = tMaxIn[j];
-                best[j] = nullptr;
-            } else {
-                found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
-            }
+            found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
         }
         if (!packet) return found;
+        for (unsigned m = packet; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            tMax[j] = tMaxIn[j];
+            best[j] = nullptr;
+        }
         // intersect()'s offer, per ray (ties: the primitive later in the scene wins).
         auto offer = [&](int j, const Primitive& q, std::uint8_t kind, std::uint32_t index,
                          const RayData* r) {
@@ -1078,22 +1110,18 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return blocked;
         }
         Packet p;
-        unsigned packet = 0;
-        int signs = -1;
         for (unsigned m = lanes; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            bool unboundedHit = false;
             for (const Primitive* q : b.unbounded_)
                 if (q != skipOf(j) && q->occluded(rays[j], tMin[j], tMax[j])) {
-                    unboundedHit = true;
+                    blocked |= 1u << j;
                     break;
                 }
-            if (unboundedHit)
-                blocked |= 1u << j;
-            else if (joinPacket(p, j, rays[j], tMin[j], signs))
-                packet |= 1u << j;
-            else
-                blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
+        }
+        const unsigned packet = joinPacket(p, rays, tMin, lanes & ~blocked);
+        for (unsigned m = lanes & ~blocked & ~packet; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
         }
         if (!packet) return blocked;
         walkPacket<true>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {

@@ -130,6 +130,9 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         RayCounts counts;
         long long nBad = 0;
         const Aggregate& agg = scene.aggregate();
+        std::vector<const Primitive*> lastBlockers(
+            opt.packets ? std::size_t(std::max(opt.trace.maxDepth, 0) + 1) * scene.lights.size()
+                        : 0);
         auto rayOf = [&](int x, int y) {
             return opt.cornerRays ? lookAt->rayAt(x, y, width, height)
                                   : camera.primaryRay(x, y, width, height);
@@ -154,7 +157,10 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 continue;
             }
             // Eye rays of up to kMaxPacket neighbouring pixels of the row share one walk;
-            // each is then shaded from its hit as trace() would (the same colour).
+            // each is then shaded from its hit as trace() would (the same colour), their
+            // feelers to each light through one shadow cache along the row (the last
+            // opaque blocker: Tracer::traceFrom).
+            std::fill(lastBlockers.begin(), lastBlockers.end(), nullptr);
             for (int x = x0; x < x1; x += kMaxPacket) {
                 const int n = std::min(kMaxPacket, x1 - x);
                 Ray rays[kMaxPacket];
@@ -168,7 +174,8 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
                 for (int j = 0; j < n; ++j) {
                     if (!((found >> j) & 1)) hits[j].primitive = nullptr;
-                    store(x + j, y, tracer.traceFrom(rays[j], hits[j], counts));
+                    store(x + j, y,
+                          tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data()));
                 }
             }
         }

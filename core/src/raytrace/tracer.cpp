@@ -28,7 +28,8 @@ double Tracer::transmittance(const glm::dvec3& origin, const glm::dvec3& dir, do
 }
 
 double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                                   double dist, const Primitive* self) const {
+                                   double dist, const Primitive* self,
+                                   const Primitive** blocker) const {
     Ray feeler;
     feeler.origin = origin;
     feeler.direction = dir;
@@ -39,6 +40,7 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
         const std::vector<Material>& materials;
         double opaqueKt;
         double k = 1.0;
+        const Primitive* opaque = nullptr;
     } walk{scene_.materials, settings_.opaqueKt};
     // Only the blockers' materials matter: no hit records (Primitive::occluded). A flat
     // primitive cannot shadow its own point: the aggregate never asks it (issue 21; the
@@ -47,11 +49,13 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
         const double kt = walk.materials[size_t(p.material)].kt;
         if (kt < walk.opaqueKt) {
             walk.k = 0.0; // an opaque blocker: no need to look further
+            walk.opaque = &p;
             return false;
         }
         walk.k *= kt;
         return true;
     }, self);
+    if (blocker) *blocker = walk.opaque;
     return walk.k;
 }
 
@@ -82,14 +86,16 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
 }
 
 void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
-                              std::vector<LightSample>& out, RayCounts& counts) const {
+                              std::vector<LightSample>& out, RayCounts& counts,
+                              const Primitive** lastBlockers) const {
     out.clear();
     out.reserve(scene_.lights.size());
     // Per hit, not per light: the feelers' start distance at normal incidence and the
     // primitive they must not count (a virtual call).
     const double eps = glm::length(offsetOrigin - hit.point);
     const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
-    for (const Light& l : scene_.lights) {
+    for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+        const Light& l = scene_.lights[li];
         LightSample s;
         s.light = &l;
         if (l.kind == Light::Kind::Point) {
@@ -109,7 +115,21 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
             const double t0 = feelerStartAt(eps, hit.normal, s.toLight);
             if (t0 < s.distance) {
                 ++counts.shadow;
-                s.transmittance = feelerTransmittance(hit.point, s.toLight, t0, s.distance, self);
+                const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
+                Ray feeler;
+                feeler.origin = hit.point;
+                feeler.direction = s.toLight;
+                // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked
+                // by its exact test on this feeler's segment, as the walk would ask it (never
+                // `self`; only an opaque material makes the transmittance 0).
+                if (cached && cached != self &&
+                    scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
+                    cached->occluded(feeler, t0, s.distance))
+                    s.transmittance = 0.0;
+                else
+                    s.transmittance =
+                        feelerTransmittance(hit.point, s.toLight, t0, s.distance, self,
+                                            lastBlockers ? &lastBlockers[li] : nullptr);
             } else {
                 s.transmittance = 1.0; // the light is closer than the offset
             }
@@ -122,7 +142,7 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
 
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                       RayCounts& counts, const Hit* known) const {
+                       RayCounts& counts, const Hit* known, const Primitive** lastBlockers) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
@@ -156,11 +176,14 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         // used up by direct() before the recursion below, so nested rays can refill it.
         // (A shading model must not call trace() from direct().)
         thread_local std::vector<LightSample> samples;
-        sampleLightsFrom(hit, offsetOrigin, samples, counts);
+        sampleLightsFrom(hit, offsetOrigin, samples, counts, lastBlockers);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
     }
 
     if (ray.depth < settings_.maxDepth) {
+        // The children's shadow cache: the next level's entries (traceFrom).
+        const Primitive** childBlockers =
+            lastBlockers ? lastBlockers + scene_.lights.size() : nullptr;
         // A child's weight is its share of this ray's, k / max(1, kr + kt) (issue 12): the
         // weights of one level then sum to <= 1 for any kr, kt, so at most 1/minWeight
         // rays a level pass the cut-off (kr = kt = 1 made 2^depth rays of weight 1).
@@ -179,7 +202,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
             r.weight = ray.weight * m.kr / share;
             r.medium = ray.medium;
             r.depth = ray.depth + 1;
-            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget, counts);
+            const Color rc = traceRay<kObserve>(r, RayKind::Reflected, observer, budget, counts,
+                                                nullptr, childBlockers);
             if constexpr (kObserve) observer->childResult(RayKind::Reflected, rc, m.kr);
             c = model_.addScaled(c, rc, m.kr);
         } else if (kObserve && m.kr > 0) {
@@ -213,8 +237,8 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
                 t.weight = ray.weight * m.kt / share;
                 t.medium = medium;
                 t.depth = ray.depth + 1;
-                const Color tc =
-                    traceRay<kObserve>(t, RayKind::Refracted, observer, budget, counts);
+                const Color tc = traceRay<kObserve>(t, RayKind::Refracted, observer, budget, counts,
+                                                    nullptr, childBlockers);
                 if constexpr (kObserve) observer->childResult(RayKind::Refracted, tc, m.kt);
                 c = model_.addScaled(c, tc, m.kt);
             } else if (kObserve) {
@@ -259,6 +283,14 @@ Color Tracer::trace(const Ray& ray, RayCounts& counts) const {
 Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts) const {
     long budget = settings_.maxRaysPerSample;
     return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit);
+}
+
+Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
+                        const Primitive** lastBlockers) const {
+    long budget = settings_.maxRaysPerSample;
+    // The cache's levels count depth from 0 (an eye ray).
+    return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit,
+                           ray.depth == 0 ? lastBlockers : nullptr);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {

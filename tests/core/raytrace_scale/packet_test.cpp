@@ -430,3 +430,118 @@ TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][pac
         REQUIRE(n.hits > n.lanes / 4);
     }
 }
+
+// The packet path's shadow cache (Tracer::traceFrom: each light's last opaque blocker, one
+// level per depth, asked first by its exact test). A floor under rows of opaque spheres
+// (shadow edges along every packet row), transparent spheres in front of them (a feeler
+// meets a transparent blocker, then an opaque one, or only the transparent one: its
+// transmittance is kt, never the cache's 0), mirror spheres (the cache of the reflected
+// rays' level) and a light placed between the floor and a sphere above it (that sphere
+// lies beyond the light on the floor's feelers: the cache must ask the segment, not the
+// ray). Every picture equals the single path's, for 1, 2 and 3 threads and every tree.
+namespace {
+// The shadow cache's scene (below).
+void shadowCacheScene(Scene& sc) {
+    Material floor;
+    floor.colour = {0.9, 0.8, 0.6};
+    floor.kd = 0.8;
+    const int mFloor = sc.addMaterial(floor);
+    Material opaque;
+    opaque.colour = {0.8, 0.2, 0.2};
+    const int mOpaque = sc.addMaterial(opaque);
+    Material glass;
+    glass.colour = {0.6, 0.9, 0.9};
+    glass.kt = 0.6;
+    glass.medium.refract = 1.3;
+    const int mGlass = sc.addMaterial(glass);
+    Material mirror;
+    mirror.kr = 0.5;
+    const int mMirror = sc.addMaterial(mirror);
+    sc.add(Triangle({-20, -20, 0}, {20, -20, 0}, {20, 20, 0}), mFloor);
+    sc.add(Triangle({-20, -20, 0}, {20, 20, 0}, {-20, 20, 0}), mFloor);
+    for (int i = 0; i < 5; ++i)
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 c(-4.0 + 2.0 * i, -3.0 + 2.5 * k, 1.0 + 0.3 * k);
+            const int m = (i + k) % 3 == 0 ? mGlass : (i + k) % 3 == 1 ? mOpaque : mMirror;
+            sc.add(Sphere(c, 0.7), m);
+        }
+    sc.add(Sphere({1, 1, 5.5}, 1.0), mOpaque); // above the low light
+    sc.lights.push_back(Light::point({1, 1, 3.5}));
+    sc.lights.push_back(Light::point({-8, -6, 12}));
+    sc.lights.push_back(Light::directional({0.3, 0.5, -1}));
+}
+} // namespace
+
+TEST_CASE("packets: the shadow cache along a row keeps the single path's picture",
+          "[bvh][packet][shadow]") {
+    Scene sc;
+    shadowCacheScene(sc);
+    const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+    PhongModel model;
+    Trees trees(sc);
+    for (const auto& bvh : trees.bvhs) {
+        INFO("width " << bvh->stats().width << " avx2 " << bvh->stats().avx2 << " avx512 "
+                      << bvh->stats().avx512 << " packets " << bvh->packetWidth());
+        sc.setAggregate(bvh.get());
+        for (bool corners : {true, false}) {
+            ParallelRenderOptions opt;
+            opt.trace.maxDepth = 4;
+            opt.cornerRays = corners;
+            opt.threads = 1;
+            opt.packets = false;
+            ParallelRenderStats sst;
+            const wb::Image single = renderParallel(sc, cam, model, 96, 72, opt, &sst);
+            for (int threads : {1, 2, 3}) {
+                opt.threads = threads;
+                opt.packets = true;
+                ParallelRenderStats st;
+                REQUIRE(renderParallel(sc, cam, model, 96, 72, opt, &st).data == single.data);
+                REQUIRE(st.shadowRays == sst.shadowRays);
+                REQUIRE(st.secondaryRays == sst.secondaryRays);
+            }
+        }
+    }
+    sc.setAggregate(nullptr);
+}
+
+// The cache's contract, adversarially: whatever primitive each entry holds (opaque,
+// transparent, a mirror, the hit's own floor triangle, the sphere beyond the low light on
+// the floor's feelers, or null), traceFrom's colour is the uncached one bit for bit.
+TEST_CASE("packets: any shadow cache content gives the uncached colour", "[bvh][packet][shadow]") {
+    Scene sc;
+    shadowCacheScene(sc);
+    Bvh bvh(sc.primitives);
+    sc.setAggregate(&bvh);
+    PhongModel model;
+    TraceSettings settings;
+    settings.maxDepth = 4;
+    const Tracer tracer(sc, model, settings);
+    const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+    const std::size_t levels = std::size_t(settings.maxDepth + 1) * sc.lights.size();
+    std::vector<const Primitive*> contents{nullptr};
+    for (const auto& p : sc.primitives)
+        contents.push_back(p.get());
+    int hits = 0, changed = 0;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 48; ++x) {
+            const Ray ray = cam.primaryRay(x, y, 48, 36);
+            Hit hit;
+            if (!sc.intersect(ray, 0.0, kInf, hit)) hit.primitive = nullptr;
+            hits += hit.primitive != nullptr;
+            RayCounts plainCounts;
+            const Color plain = tracer.traceFrom(ray, hit, plainCounts);
+            for (const Primitive* q : contents) {
+                std::vector<const Primitive*> cache(levels, q);
+                RayCounts counts;
+                const Color c = tracer.traceFrom(ray, hit, counts, cache.data());
+                INFO("pixel " << x << " " << y);
+                REQUIRE(sameBits(c, plain));
+                REQUIRE(counts.shadow == plainCounts.shadow);
+                for (const Primitive* left : cache)
+                    changed += left != q;
+            }
+        }
+    REQUIRE(hits > 48 * 36 / 2);
+    REQUIRE(changed > 0); // the feelers wrote their blockers back
+    sc.setAggregate(nullptr);
+}

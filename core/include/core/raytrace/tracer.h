@@ -100,6 +100,18 @@ class Tracer {
     // renderParallel traces eye rays in packets): `hit` is what scene.intersect(ray, 0, inf)
     // gave, hit.primitive == nullptr when it missed. The ray is counted as traced.
     Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts) const;
+    // The same colour, with a shadow cache for the hit's feelers (issue 21: neighbouring
+    // eye rays of a packet): lastBlockers[i] (one entry per scene light, null at first) is
+    // an opaque primitive that blocked the previous feeler to light i. Its exact test is
+    // asked first; if it blocks this feeler too, the transmittance is 0 without a walk —
+    // what the walk gives (it stops at an opaque blocker with 0, and its float filters
+    // never drop a primitive whose exact test says yes). Each feeler leaves its own opaque
+    // blocker there, or null. The rays the hit spawns use the next entries, one level of
+    // lights.size() per depth: lastBlockers holds (maxDepth + 1)·lights.size() entries.
+    // The same colour bit for bit whatever the entries hold (null or any primitive of the
+    // scene: a transparent one or the hit's own flat primitive is not taken as a blocker).
+    Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
+                    const Primitive** lastBlockers) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -119,20 +131,26 @@ class Tracer {
   private:
     // sampleLights with offsetRayOrigin(hit.point, hit.normal) given (traceRay needs it
     // for the reflected ray too).
+    // lastBlockers: traceFrom's shadow cache, or null.
     void sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
-                          std::vector<LightSample>& out, RayCounts& counts) const;
-    // transmittance without counting the feeler (the caller counts it).
+                          std::vector<LightSample>& out, RayCounts& counts,
+                          const Primitive** lastBlockers = nullptr) const;
+    // transmittance without counting the feeler (the caller counts it); *blocker (if not
+    // null) gets the opaque blocker that ended the walk, or null.
     double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
-                               double dist, const Primitive* self) const;
+                               double dist, const Primitive* self,
+                               const Primitive** blocker = nullptr) const;
     void add(const RayCounts& counts) const; // to the atomic counters
     // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
     // `budget`: child rays this trace() may still spawn (TraceSettings::maxRaysPerSample).
     // `counts`: the rays it shoots are added there (trace() adds them to the atomics).
     // `known`: the ray's nearest hit, found by the caller (primitive null: a miss), or null.
+    // `lastBlockers`: the shadow cache of this ray's own feelers (traceFrom), or null.
     template <bool kObserve>
     Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                   RayCounts& counts, const Hit* known = nullptr) const;
+                   RayCounts& counts, const Hit* known = nullptr,
+                   const Primitive** lastBlockers = nullptr) const;
 
     const Scene& scene_;
     const ShadingModel& model_;
