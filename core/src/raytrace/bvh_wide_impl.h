@@ -69,8 +69,16 @@ template <int Tag> struct Lanes4 {
     static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
 };
 
+// Lanes with L::pushSorted (kPushSorted: AVX-512, a sorting network in the lanes) order a
+// node's hit children without branches; the others sort them in scalar code.
+template <class L, class = void> struct HasPushSorted : std::false_type {};
+template <class L>
+struct HasPushSorted<L, std::void_t<decltype(L::kPushSorted)>>
+    : std::integral_constant<bool, L::kPushSorted> {};
+
 template <class L, bool Q> struct Bvh::WideWalk {
     static constexpr int W = L::W;
+    static constexpr bool kSortNet = HasPushSorted<L>::value;
     using V = typename L::V;
     // Q: quantised 8-wide nodes (QuantNode8), each plane decoded in the lanes as
     // quantDecode does it; else float nodes.
@@ -109,18 +117,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             sphReady = true;
         }
         void triangleSetup() {
-            // The watertight test's axes and shear: triangleShear (triangle.cpp) written out
-            // here, the same operations (so the same bits, which the exact tests reuse), but
-            // compiled into this walk instead of an out-of-line call (issue 21).
-            const double dd[3] = {d.x, d.y, d.z};
-            const double ax = std::abs(dd[0]), ay = std::abs(dd[1]), az = std::abs(dd[2]);
-            sh.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-            sh.kx = sh.kz == 2 ? 0 : sh.kz + 1;
-            sh.ky = sh.kx == 2 ? 0 : sh.kx + 1;
-            if (dd[sh.kz] < 0) std::swap(sh.kx, sh.ky);
-            sh.sx = dd[sh.kx] / dd[sh.kz];
-            sh.sy = dd[sh.ky] / dd[sh.kz];
-            sh.sz = 1.0 / dd[sh.kz];
+            // The watertight test's axes and shear (inline: compiled into this walk), the
+            // same bits as Triangle::intersect's, which the exact tests reuse.
+            sh = triangleShear(d);
             k[0] = sh.kx;
             k[1] = sh.ky;
             k[2] = sh.kz;
@@ -311,8 +310,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return true;
     }
 
-    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
-    // joinPacket repeats its float part for the packets' lanes.
+    // The float values of a ray the float walk can carry, in four lanes (x, y, z, unused),
+    // for initRay and joinPacket (the packets' lanes): 1/d in one division (a zero component
+    // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the roundings),
+    // the origin widened by eps = |o|max·2^-21 with the direction's signs. Written to plain
+    // float arrays, as both callers had it: shared as a function of __m128 values, GCC 12
+    // put a register-to-register vmovq (C5 79 D6) into the AVX2 walk, which valgrind 3.19
+    // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
+    __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
+                                                        float* invFar, float* on, float* of) {
+        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.direction[2])));
+        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+        const __m128 sgnEps =
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+        _mm_store_ps(inv, finv);
+        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+    }
+
+    // The range check of two doubles, branch-free: bit i set when lane i is 0 or
+    // 1e-30 <= |v| <= 1e30 (false for NaN).
+    __attribute__((always_inline)) static int inRange(__m128d v) {
+        const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+        return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
+                                         _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
+                                                    _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+    }
+
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set); its
+    // float values come from floatRay, as the packets' lanes' (joinPacket).
     __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
@@ -320,12 +350,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
-            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
-        };
         const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
         r.off = kOffsets.v[signs];
         for (int a = 0; a < 3; ++a)
@@ -334,20 +358,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         r.o = o;
         r.d = d;
         if (ok) {
-            // In four float lanes (x, y, z, unused): 1/d in one division (a zero component
-            // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the
-            // roundings), the origin widened by eps with the direction's signs.
-            const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
-            const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                            _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
-            const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-            const __m128 sgnEps =
-                _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
             alignas(16) float inv[4], invFar[4], on[4], of[4];
-            _mm_store_ps(inv, finv);
-            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
-            _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
-            _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+            floatRay(ray, om, inv, invFar, on, of);
             for (int a = 0; a < 3; ++a) {
                 r.on[a] = L::set1(on[a]);
                 r.of[a] = L::set1(of[a]);
@@ -406,13 +418,18 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return lim > 3e38 ? std::numeric_limits<float>::infinity()
                               : float(lim) * (1 + 0x1p-20f);
         };
-        struct Entry {
-            std::uint32_t child;
-            std::uint32_t count;
-            float t;
-        };
-        Entry stack[kStack];
+        // The stack as three arrays (child, leaf count, entry distance): the sorting
+        // network's path stores a node's hit children with one vector store each.
+        // kStack + W: that path writes all W lanes above the top before it moves it.
+        alignas(32) std::uint32_t stChild[kStack + W], stCount[kStack + W];
+        alignas(32) float stT[kStack + W];
         int sp = 0;
+        auto push = [&](std::uint32_t child, std::uint32_t count, float t) {
+            stChild[sp] = child;
+            stCount[sp] = count;
+            stT[sp] = t;
+            ++sp;
+        };
         float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         std::uint32_t cur = 0;
         while (true) {
@@ -468,19 +485,29 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (nd.count[c] > 0) {
                         if (!visitLeaf(b, r, nd.child[c], nd.count[c], flim, leaf)) return;
                     } else {
-                        if (haveNext) stack[sp++] = {cur, 0, 0.0f};
+                        if (haveNext) push(cur, 0, 0.0f);
                         cur = nd.child[c];
                         haveNext = true;
                     }
                 }
                 if (haveNext) continue;
                 if (sp == 0) return;
-                cur = stack[--sp].child;
+                cur = stChild[--sp];
                 continue;
             } else {
                 // One child hit: go on with it; two: the nearer now, the farther pushed;
                 // more: sorted by entry distance, the farther ones pushed farthest first.
                 // A leaf met as the nearest is visited at once.
+                if constexpr (kSortNet) {
+                    // Branch-free order (AVX-512): the hit children's keys sorted farthest
+                    // first by a network, all pushed, the nearest popped below.
+                    if ((mask & (mask - 1)) != 0 && r.useFloat) {
+                        L::pushSorted(mask, L::load(t), nd.child, nd.count, stChild + sp,
+                                      stCount + sp, stT + sp);
+                        sp += __builtin_popcount(unsigned(mask));
+                        mask = 0;
+                    }
+                }
                 if (mask != 0) {
                     int next;
                     const int c0 = __builtin_ctz(unsigned(mask));
@@ -490,7 +517,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     } else if ((rest & (rest - 1)) == 0) {
                         const int c1 = __builtin_ctz(unsigned(rest));
                         const int nearC = t[c1] < t[c0] ? c1 : c0, farC = nearC == c0 ? c1 : c0;
-                        stack[sp++] = {nd.child[farC], nd.count[farC], t[farC]};
+                        push(nd.child[farC], nd.count[farC], t[farC]);
                         next = nearC;
                     } else {
                         int order[W], n = 0;
@@ -506,7 +533,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         }
                         for (int k = 0; k + 1 < n; ++k) {
                             const int c = order[k];
-                            stack[sp++] = {nd.child[c], nd.count[c], t[c]};
+                            push(nd.child[c], nd.count[c], t[c]);
                         }
                         next = order[n - 1];
                     }
@@ -519,14 +546,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
                 while (true) {
                     if (sp == 0) return;
-                    const Entry e = stack[--sp];
-                    if (e.t > flim) continue;
-                    if (e.count > 0) {
-                        if (!visitLeaf(b, r, e.child, e.count, flim, leaf)) return;
+                    --sp;
+                    if (stT[sp] > flim) continue;
+                    const std::uint32_t child = stChild[sp], count = stCount[sp];
+                    if (count > 0) {
+                        if (!visitLeaf(b, r, child, count, flim, leaf)) return;
                         flim = limitF();
                         continue;
                     }
-                    cur = e.child;
+                    cur = child;
                     break;
                 }
             }
@@ -663,10 +691,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // component, or other signs than `signs`, which the first ray sets). initRay's float
     // values, the same operations, written into the packet's lanes only; the ray's own
     // RayData registers are filled when the ray first runs its own leaf tests (fillLane):
-    // broadcasting them for every ray cost more than a tenth of a packet. Written out
-    // rather than shared with initRay: a shared helper made GCC 12 put a register-to-
-    // register vmovq (C5 79 D6) into the AVX2 single walk, which valgrind 3.19 cannot
-    // decode, and callgrind is how this walk is profiled (docs/raytrace-scale.md).
+    // broadcasting them for every ray cost more than a tenth of a packet. The float values
+    // are initRay's (floatRay).
     static bool joinPacket(Packet& p, int j, const Ray& ray, double tMin, int& signs) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         if (d.x == 0 || d.y == 0 || d.z == 0) return false;
@@ -674,12 +700,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
         if (signs >= 0 && sg != signs) return false;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-        auto inRange = [](__m128d v) { // as initRay
-            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
-        };
         if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) return false;
         signs = sg;
         RayData& r = p.r[j];
@@ -689,17 +709,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         r.useFloat = true;
         r.o = o;
         r.d = d;
-        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
-        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
-        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-        const __m128 sgnEps =
-            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
         alignas(16) float inv[4], invFar[4], on[4], of[4];
-        _mm_store_ps(inv, finv);
-        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
-        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
-        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+        floatRay(ray, om, inv, invFar, on, of);
         for (int a = 0; a < 3; ++a) {
             p.on[a][j] = on[a];
             p.of[a][j] = of[a];
