@@ -60,43 +60,6 @@ struct L8 {
     static int ngt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_NGT_UQ)); }
     static int lt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_LT_OQ)); }
     static int gt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_GT_OQ)); }
-
-    // The nearest-hit walk's child order without branches (issue 21: the scalar insertion
-    // sort mispredicted ~3.8 times a ray on balls 4). Each hit lane's key is its entry
-    // distance's bits (t >= 0 orders as an int; a negative t, from a negative tMin, counts
-    // as 0: the order is only a heuristic, the stack keeps the true t for the drop test)
-    // with the slot in the low 3 bits; missed lanes are −1. A sorting network (19
-    // comparators in 6 layers, checked on all 2^8 0-1 inputs) puts the keys farthest
-    // first, and the hit slots' child, leaf count and t go to the stack in that order
-    // (all 8 lanes written: the caller's stack has W spare entries; it keeps popcount).
-    static constexpr bool kPushSorted = true;
-    static void pushSorted(int mask, V t, const std::uint32_t* child, const std::uint16_t* count,
-                           std::uint32_t* outChild, std::uint32_t* outCount, float* outT) {
-        const __m256i slot = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-        __m256i k = _mm256_or_si256(
-            _mm256_and_si256(_mm256_max_epi32(_mm256_castps_si256(t), _mm256_setzero_si256()),
-                             _mm256_set1_epi32(~7)),
-            slot);
-        k = _mm256_mask_mov_epi32(_mm256_set1_epi32(-1), __mmask8(mask), k);
-        // One layer: each pair's lower slot (bit set in `lower`) keeps the larger key.
-        auto layer = [&k](__m256i p, unsigned lower) {
-            k = _mm256_mask_blend_epi32(__mmask8(lower), _mm256_min_epi32(k, p),
-                                        _mm256_max_epi32(k, p));
-        };
-        layer(_mm256_shuffle_epi32(k, _MM_SHUFFLE(1, 0, 3, 2)), 0x33);    // 0-2 1-3 4-6 5-7
-        layer(_mm256_permute4x64_epi64(k, _MM_SHUFFLE(1, 0, 3, 2)), 0x0F); // 0-4 1-5 2-6 3-7
-        layer(_mm256_shuffle_epi32(k, _MM_SHUFFLE(2, 3, 0, 1)), 0x55);    // 0-1 2-3 4-5 6-7
-        layer(_mm256_permutexvar_epi32(_mm256_setr_epi32(0, 1, 4, 5, 2, 3, 6, 7), k), 0x0C);
-        layer(_mm256_permutexvar_epi32(_mm256_setr_epi32(0, 4, 2, 6, 1, 5, 3, 7), k), 0x0A);
-        layer(_mm256_permutexvar_epi32(_mm256_setr_epi32(0, 2, 1, 4, 3, 6, 5, 7), k), 0x2A);
-        const __m256i idx = _mm256_and_si256(k, _mm256_set1_epi32(7));
-        const __m256i c = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(child));
-        const __m256i n =
-            _mm256_cvtepu16_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(count)));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(outChild), _mm256_permutexvar_epi32(idx, c));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(outCount), _mm256_permutexvar_epi32(idx, n));
-        _mm256_storeu_ps(outT, _mm256_permutexvar_ps(idx, t));
-    }
 };
 
 } // namespace wb::rt::avx512

@@ -69,16 +69,8 @@ template <int Tag> struct Lanes4 {
     static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
 };
 
-// Lanes with L::pushSorted (kPushSorted: AVX-512, a sorting network in the lanes) order a
-// node's hit children without branches; the others sort them in scalar code.
-template <class L, class = void> struct HasPushSorted : std::false_type {};
-template <class L>
-struct HasPushSorted<L, std::void_t<decltype(L::kPushSorted)>>
-    : std::integral_constant<bool, L::kPushSorted> {};
-
 template <class L, bool Q> struct Bvh::WideWalk {
     static constexpr int W = L::W;
-    static constexpr bool kSortNet = HasPushSorted<L>::value;
     using V = typename L::V;
     // Q: quantised 8-wide nodes (QuantNode8), each plane decoded in the lanes as
     // quantDecode does it; else float nodes.
@@ -418,18 +410,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return lim > 3e38 ? std::numeric_limits<float>::infinity()
                               : float(lim) * (1 + 0x1p-20f);
         };
-        // The stack as three arrays (child, leaf count, entry distance): the sorting
-        // network's path stores a node's hit children with one vector store each.
-        // kStack + W: that path writes all W lanes above the top before it moves it.
-        alignas(32) std::uint32_t stChild[kStack + W], stCount[kStack + W];
-        alignas(32) float stT[kStack + W];
-        int sp = 0;
-        auto push = [&](std::uint32_t child, std::uint32_t count, float t) {
-            stChild[sp] = child;
-            stCount[sp] = count;
-            stT[sp] = t;
-            ++sp;
+        struct Entry {
+            std::uint32_t child;
+            std::uint32_t count;
+            float t;
         };
+        Entry stack[kStack];
+        int sp = 0;
         float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         std::uint32_t cur = 0;
         while (true) {
@@ -485,29 +472,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (nd.count[c] > 0) {
                         if (!visitLeaf(b, r, nd.child[c], nd.count[c], flim, leaf)) return;
                     } else {
-                        if (haveNext) push(cur, 0, 0.0f);
+                        if (haveNext) stack[sp++] = {cur, 0, 0.0f};
                         cur = nd.child[c];
                         haveNext = true;
                     }
                 }
                 if (haveNext) continue;
                 if (sp == 0) return;
-                cur = stChild[--sp];
+                cur = stack[--sp].child;
                 continue;
             } else {
                 // One child hit: go on with it; two: the nearer now, the farther pushed;
                 // more: sorted by entry distance, the farther ones pushed farthest first.
                 // A leaf met as the nearest is visited at once.
-                if constexpr (kSortNet) {
-                    // Branch-free order (AVX-512): the hit children's keys sorted farthest
-                    // first by a network, all pushed, the nearest popped below.
-                    if ((mask & (mask - 1)) != 0 && r.useFloat) {
-                        L::pushSorted(mask, L::load(t), nd.child, nd.count, stChild + sp,
-                                      stCount + sp, stT + sp);
-                        sp += __builtin_popcount(unsigned(mask));
-                        mask = 0;
-                    }
-                }
                 if (mask != 0) {
                     int next;
                     const int c0 = __builtin_ctz(unsigned(mask));
@@ -517,7 +494,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     } else if ((rest & (rest - 1)) == 0) {
                         const int c1 = __builtin_ctz(unsigned(rest));
                         const int nearC = t[c1] < t[c0] ? c1 : c0, farC = nearC == c0 ? c1 : c0;
-                        push(nd.child[farC], nd.count[farC], t[farC]);
+                        stack[sp++] = {nd.child[farC], nd.count[farC], t[farC]};
                         next = nearC;
                     } else {
                         int order[W], n = 0;
@@ -533,7 +510,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         }
                         for (int k = 0; k + 1 < n; ++k) {
                             const int c = order[k];
-                            push(nd.child[c], nd.count[c], t[c]);
+                            stack[sp++] = {nd.child[c], nd.count[c], t[c]};
                         }
                         next = order[n - 1];
                     }
@@ -546,15 +523,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
                 while (true) {
                     if (sp == 0) return;
-                    --sp;
-                    if (stT[sp] > flim) continue;
-                    const std::uint32_t child = stChild[sp], count = stCount[sp];
-                    if (count > 0) {
-                        if (!visitLeaf(b, r, child, count, flim, leaf)) return;
+                    const Entry e = stack[--sp];
+                    if (e.t > flim) continue;
+                    if (e.count > 0) {
+                        if (!visitLeaf(b, r, e.child, e.count, flim, leaf)) return;
                         flim = limitF();
                         continue;
                     }
-                    cur = child;
+                    cur = e.child;
                     break;
                 }
             }
