@@ -328,9 +328,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // 1e-30 <= |v| <= 1e30 (false for NaN).
     __attribute__((always_inline)) static int inRange(__m128d v) {
         const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-        return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                         _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                    _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        return _mm_movemask_pd(_mm_or_pd(
+            _mm_cmpeq_pd(av, _mm_setzero_pd()),
+            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
     }
 
     // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set); its
