@@ -109,18 +109,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             sphReady = true;
         }
         void triangleSetup() {
-            // The watertight test's axes and shear: triangleShear (triangle.cpp) written out
-            // here, the same operations (so the same bits, which the exact tests reuse), but
-            // compiled into this walk instead of an out-of-line call (issue 21).
-            const double dd[3] = {d.x, d.y, d.z};
-            const double ax = std::abs(dd[0]), ay = std::abs(dd[1]), az = std::abs(dd[2]);
-            sh.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-            sh.kx = sh.kz == 2 ? 0 : sh.kz + 1;
-            sh.ky = sh.kx == 2 ? 0 : sh.kx + 1;
-            if (dd[sh.kz] < 0) std::swap(sh.kx, sh.ky);
-            sh.sx = dd[sh.kx] / dd[sh.kz];
-            sh.sy = dd[sh.ky] / dd[sh.kz];
-            sh.sz = 1.0 / dd[sh.kz];
+            // The watertight test's axes and shear (inline: compiled into this walk), the
+            // same bits as Triangle::intersect's, which the exact tests reuse.
+            sh = triangleShear(d);
             k[0] = sh.kx;
             k[1] = sh.ky;
             k[2] = sh.kz;
@@ -311,8 +302,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return true;
     }
 
-    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
-    // joinPacket repeats its float part for the packets' lanes.
+    // The float values of a ray the float walk can carry, in four lanes (x, y, z, unused),
+    // for initRay (joinPacket computes the same operations for four rays at a time): 1/d in one division (a zero component
+    // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the roundings),
+    // the origin widened by eps = |o|max·2^-21 with the direction's signs. Written to plain
+    // float arrays, as both callers had it: shared as a function of __m128 values, GCC 12
+    // put a register-to-register vmovq (C5 79 D6) into the AVX2 walk, which valgrind 3.19
+    // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
+    __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
+                                                        float* invFar, float* on, float* of) {
+        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.direction[2])));
+        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+        const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
+        const __m128 sgnEps =
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+        _mm_store_ps(inv, finv);
+        _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
+        _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
+        _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+    }
+
+    // The range check of two doubles, branch-free: bit i set when lane i is 0 or
+    // 1e-30 <= |v| <= 1e30 (false for NaN).
+    __attribute__((always_inline)) static int inRange(__m128d v) {
+        const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
+        return _mm_movemask_pd(_mm_or_pd(
+            _mm_cmpeq_pd(av, _mm_setzero_pd()),
+            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+    }
+
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set); its
+    // float values come from floatRay (the packets' lanes: joinPacket, the same operations).
     __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
         const glm::dvec3 o = ray.origin, d = ray.direction;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
@@ -320,12 +342,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        auto inRange = [](__m128d v) { // each lane: 0, or 1e-30 <= |v| <= 1e30 (false for NaN)
-            const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                        _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
-        };
         const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
         r.off = kOffsets.v[signs];
         for (int a = 0; a < 3; ++a)
@@ -334,20 +350,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         r.o = o;
         r.d = d;
         if (ok) {
-            // In four float lanes (x, y, z, unused): 1/d in one division (a zero component
-            // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the
-            // roundings), the origin widened by eps with the direction's signs.
-            const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(dxy), _mm_cvtpd_ps(dz));
-            const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                            _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
-            const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
-            const __m128 sgnEps =
-                _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
             alignas(16) float inv[4], invFar[4], on[4], of[4];
-            _mm_store_ps(inv, finv);
-            _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
-            _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
-            _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
+            floatRay(ray, om, inv, invFar, on, of);
             for (int a = 0; a < 3; ++a) {
                 r.on[a] = L::set1(on[a]);
                 r.of[a] = L::set1(of[a]);
@@ -666,10 +670,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // bits) four rays at a time, stored straight into the packet's lanes: one division for
     // four rays instead of one a ray (issue 21: the per-ray set-up was a fifth of a mesh
     // packet's instructions). The ray's own RayData registers are filled when it first
-    // runs its own leaf tests (fillLane). Written out rather than shared with initRay: a
-    // shared helper made GCC 12 put a register-to-register vmovq (C5 79 D6) into the AVX2
-    // single walk, which valgrind 3.19 cannot decode, and callgrind is how this walk is
-    // profiled (docs/raytrace-scale.md).
+    // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
+    // float values are floatRay's operations, written out four rays at a time (one call per
+    // ray would cost the division per ray this saves).
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
         alignas(16) double dd[3][W], oo[3][W], omax[W], tm[W];
         unsigned joined = 0;
@@ -684,12 +687,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
             if (signs >= 0 && sg != signs) continue;
             const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-            auto inRange = [](__m128d v) { // as initRay
-                const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-                return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()),
-                                                 _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)),
-                                                            _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
-            };
             if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) continue;
             signs = sg;
             joined |= 1u << j;

@@ -21,23 +21,6 @@ Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
     normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
 }
 
-TriangleShear triangleShear(const glm::dvec3& dir) {
-    // Woop–Benthin–Wald: kz = dominant axis of the direction; swap kx, ky to keep winding.
-    // Components read through a pointer: glm's operator[] is a switch, a branch per read
-    // (issue 21: ~7% of a balls 4 eye ray's instructions went to those switches).
-    const double d[3] = {dir.x, dir.y, dir.z};
-    const double ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
-    TriangleShear s;
-    s.kz = (ax > ay) ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-    s.kx = s.kz == 2 ? 0 : s.kz + 1;
-    s.ky = s.kx == 2 ? 0 : s.kx + 1;
-    if (d[s.kz] < 0) std::swap(s.kx, s.ky);
-    s.sx = d[s.kx] / d[s.kz];
-    s.sy = d[s.ky] / d[s.kz];
-    s.sz = 1.0 / d[s.kz];
-    return s;
-}
-
 bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
     if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
     return intersectSheared(ray, triangleShear(ray.direction), tMin, tMax, hit);
