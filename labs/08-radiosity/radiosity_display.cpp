@@ -89,6 +89,7 @@ void RadiosityLab::updateColours() {
         steps_ = snapshot_.steps;
         residual_ = snapshot_.residual;
         lastShooter_ = snapshot_.lastShooter;
+        drawnPreview_ = snapshot_.preview;
     }
     coloursVersion_ = version;
     coloursDirty_ = false;
@@ -250,8 +251,21 @@ void RadiosityLab::draw(const View& view) {
     // hemicubes (before, glutSwapBuffers waited ~30-50 ms a frame for it); the frame shows
     // the previous slice's state, and the shell draws one more when the run ends.
     drawScene(view);
+    // The first frame that shows a usable picture (unshot light < 5%): the time the student
+    // waits for it (docs/bench/radiosity.md; the frame is swapped right after this).
+    if (running() && shownSeconds_ < 0 && residual_ < 0.05) {
+        shownSeconds_ = secondsSince(runStart_);
+        std::printf("lab08: usable picture drawn after %.2f s%s\n", shownSeconds_.load(),
+                    drawnPreview_ ? " (preview)" : "");
+        std::fflush(stdout);
+    }
     glFlush(); // hand the frame to the rasterizer now
-    stepOnMainThread(false);
+    // A GL run's slice ended on a picture to show (the preview became usable, or the full
+    // solve overtook it): this frame is swapped at once, the next one steps on.
+    if (skipSlice_)
+        skipSlice_ = false;
+    else
+        stepOnMainThread(false);
 }
 
 void RadiosityLab::drawScene(const View& view) {

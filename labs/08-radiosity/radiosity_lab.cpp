@@ -64,6 +64,9 @@ std::vector<OptionHelp> RadiosityLab::options() const {
             {"shooting-patch", "M",
              wb::tr("edge of the shooting patches, metres (0: every patch shoots)")},
             {"exposure", "X", wb::tr("display scale of B (default: automatic)")},
+            {"preview", "on|off",
+             wb::tr("first solve at coarse shooting patches and show it (default: on in a "
+                    "window, off headless)")},
             {"white-balance", "on|off", wb::tr("divide by the light's colour (default on)")}};
 }
 
@@ -194,6 +197,14 @@ bool RadiosityLab::setOption(const std::string& name, const std::string& value,
         if (!number(1e-6, 1e6, v)) return false;
         s.exposure = float(v);
         s.autoExposure = false;
+        return true;
+    }
+    if (name == "preview") {
+        if (value != "on" && value != "off") {
+            error = wb::trf("expected on or off, got '%s'", value.c_str());
+            return false;
+        }
+        previewOption_ = value == "on";
         return true;
     }
     if (name == "white-balance") {
@@ -523,6 +534,13 @@ void RadiosityLab::rebuildSolver() {
             model_->ff->computeAll();
         }
         model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        try {
+            buildPreview(fc, sc);
+        } catch (const std::exception& e) {
+            // Without a preview the run is the full solve alone, as before.
+            model_->preview = Model::Preview{};
+            std::fprintf(stderr, "lab08: no preview: %s\n", e.what());
+        }
     } catch (const std::exception& e) {
         // Never leave the lab without a solver: progressive with the CPU hemicube.
         message_ = e.what();
@@ -535,6 +553,8 @@ void RadiosityLab::rebuildSolver() {
         sc.kind = rad::SolverKind::Progressive;
         model_->ff = std::make_unique<rad::FormFactors>(model_->mesh, fc);
         model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
+        model_->preview = Model::Preview{};
+        previewShown_ = false;
     }
     publish();
     selectedDirty_ = selected_ >= 0;
@@ -589,7 +609,12 @@ void RadiosityLab::startRun() {
     runStart_ = std::chrono::steady_clock::now();
     runSeconds_ = 0;
     usableSeconds_ = -1;
+    shownSeconds_ = -1;
     stepSeconds_ = 0;
+    // A fresh solve starts with the preview (radiosity_preview.cpp); a run resumed after a key
+    // stopped it goes on where it was.
+    rad::Solver* preview = runPreview() ? model_->preview.solver.get() : nullptr;
+    previewPhase_ = preview != nullptr;
     if (s.method == FfMethod::GlHemicube) {
         // GL rows need the GL thread: draw() takes steps for ~30 ms per frame instead.
         mainThreadRun_ = true;
@@ -598,29 +623,44 @@ void RadiosityLab::startRun() {
     rad::Solver* solver = model_->solver.get();
     const double tol = s.tolerance;
     const int limit = stepLimit();
-    worker_ = std::thread([this, solver, tol, limit] {
-        auto lastPublish = std::chrono::steady_clock::now();
-        while (!cancel_.load() && solver->residual() >= tol && solver->steps() < limit) {
-            if (overBudget()) {
-                budgetHit_ = true;
-                break;
+    worker_ = std::thread([this, solver, preview, tol, limit] {
+        // One phase: the preview's solver to its tolerance, then the full solve's.
+        auto phase = [this](rad::Solver& sol, double tolerance, int cap, bool isPreview) {
+            auto lastPublish = std::chrono::steady_clock::now();
+            while (!cancel_.load() && sol.residual() >= tolerance && sol.steps() < cap) {
+                if (overBudget()) {
+                    budgetHit_ = true;
+                    return false;
+                }
+                try {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    sol.step();
+                    stepSeconds_ = stepSeconds_ + secondsSince(t0);
+                } catch (const std::exception& e) {
+                    std::lock_guard<std::mutex> lock(snapMutex_);
+                    workerError_ = e.what();
+                    return false;
+                }
+                // At most ~30 snapshots a second (copying B per shot would dominate at 10k
+                // patches), and at once when the picture becomes usable or the full solve
+                // overtakes the preview.
+                const bool now = (usableSeconds_ < 0 && sol.residual() < 0.05) ||
+                                 (!isPreview && previewShown_ && sol.residual() < previewResidual_);
+                if (now || secondsSince(lastPublish) > 0.033) {
+                    publish(sol, isPreview);
+                    lastPublish = std::chrono::steady_clock::now();
+                }
             }
-            try {
-                const auto t0 = std::chrono::steady_clock::now();
-                solver->step();
-                stepSeconds_ = stepSeconds_ + secondsSince(t0);
-            } catch (const std::exception& e) {
-                std::lock_guard<std::mutex> lock(snapMutex_);
-                workerError_ = e.what();
-                break;
-            }
-            // At most ~30 snapshots a second: copying B per shot would dominate at 10k patches.
-            if (secondsSince(lastPublish) > 0.033) {
-                publish();
-                lastPublish = std::chrono::steady_clock::now();
-            }
+            return !cancel_.load();
+        };
+        bool go = true;
+        if (preview) {
+            go = phase(*preview, preview->config().tolerance, preview->config().maxSteps, true);
+            publish(*preview, true);
+            if (go) finishPreview();
         }
-        publish();
+        if (go) phase(*solver, tol, limit, false);
+        publish(*solver, false, !cancel_.load());
         runSeconds_ = secondsSince(runStart_);
         running_ = false;
         reportRun();
@@ -632,6 +672,8 @@ void RadiosityLab::stopRun() {
     if (worker_.joinable()) worker_.join();
     if (mainThreadRun_) runSeconds_ = secondsSince(runStart_);
     mainThreadRun_ = false;
+    previewPhase_ = false;
+    skipSlice_ = false;
     running_ = false;
 }
 
@@ -646,29 +688,46 @@ void RadiosityLab::finishRun() {
 // The GL method's run: steps until the frame's time budget is spent (headless: to the end).
 void RadiosityLab::stepOnMainThread(bool headless) {
     if (!mainThreadRun_ || !model_) return;
-    rad::Solver& sol = *model_->solver;
+    const bool isPreview = previewPhase_ && model_->preview.solver;
+    rad::Solver& sol = isPreview ? *model_->preview.solver : *model_->solver;
+    const double tol = isPreview ? sol.config().tolerance : s.tolerance;
+    const int limit = isPreview ? sol.config().maxSteps : stepLimit();
     const auto t0 = std::chrono::steady_clock::now();
-    const int limit = stepLimit();
+    bool show = false; // a picture to show at once: the next frame skips its slice
     try {
         // 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at 512², the
         // old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to draw here;
         // 30 ms slices made convergence 3× slower in a window than headless (measured at 512²:
-        // 1.2-1.3 s against 0.7 s). Keys answer within a slice.
-        while (sol.residual() >= s.tolerance && sol.steps() < limit &&
+        // 1.2-1.3 s against 0.7 s). Keys answer within a slice. The slice ends early when the
+        // picture becomes usable or the full solve overtakes the preview.
+        while (sol.residual() >= tol && sol.steps() < limit &&
                (headless || secondsSince(t0) < 0.25)) {
             if (overBudget()) {
                 budgetHit_ = true;
                 break;
             }
             sol.step();
+            if (!headless && ((usableSeconds_ < 0 && sol.residual() < 0.05) ||
+                              (!isPreview && previewShown_ && sol.residual() < previewResidual_))) {
+                show = true;
+                break;
+            }
         }
     } catch (const std::exception& e) {
         message_ = e.what();
         mainThreadRun_ = false;
     }
-    if (sol.residual() < s.tolerance || sol.steps() >= limit || budgetHit_) mainThreadRun_ = false;
+    const bool ended = sol.residual() < tol || sol.steps() >= limit || budgetHit_;
+    if (isPreview) {
+        publish(sol, true);
+        if (ended && !budgetHit_) finishPreview(); // the full solve goes on in the next slice
+        if (budgetHit_) mainThreadRun_ = false;
+    } else {
+        if (ended) mainThreadRun_ = false;
+        publish(sol, false, !mainThreadRun_);
+    }
     stepSeconds_ = stepSeconds_ + secondsSince(t0);
-    publish();
+    skipSlice_ = show && mainThreadRun_;
     if (!mainThreadRun_) {
         runSeconds_ = secondsSince(runStart_);
         running_ = false;
@@ -690,21 +749,37 @@ void RadiosityLab::reportRun() const {
 #endif
 }
 
-// Copies what drawing needs out of the solver (called by the worker while it runs, or here).
-void RadiosityLab::publish() {
-    if (!model_ || !model_->solver) return;
-    const rad::Solver& sol = *model_->solver;
+// Copies what drawing needs out of a solver (called by the worker while it runs, or here):
+// the preview's, or the full solve's once it overtakes the preview (its unshot light below the
+// preview's) or at the end of its run (`last`).
+void RadiosityLab::publish(const rad::Solver& sol, bool preview, bool last) {
     RadiositySnapshot snap;
+    snap.residual = sol.residual();
+    snap.steps = sol.steps();
+    snap.preview = preview;
+    if (!preview && previewShown_) {
+        fullSteps_ = snap.steps;
+        if (!(snap.residual < previewResidual_) && !last) return; // the preview stays
+        previewShown_ = false;
+        frameWanted_ = true;
+#if !defined(WB_HEADLESS)
+        if (running())
+            std::printf("lab08: the full solve replaces the preview after %.2f s (unshot %.2e)\n",
+                        secondsSince(runStart_), snap.residual);
+        std::fflush(stdout);
+#endif
+    }
+    if (preview) previewShown_ = true;
     snap.B = sol.displayRadiosity();
     snap.history = sol.history();
-    snap.steps = sol.steps();
-    snap.residual = sol.residual();
     snap.lastShooter = sol.lastShooter();
     // "Usable": unshot power below 5% of the emitted (docs/bench/radiosity.md §4).
     if (running() && usableSeconds_ < 0 && snap.residual < 0.05) {
         usableSeconds_ = secondsSince(runStart_);
+        frameWanted_ = true;
 #if !defined(WB_HEADLESS)
-        std::printf("lab08: unshot power < 5%% after %.2f s\n", usableSeconds_.load());
+        std::printf("lab08: unshot power < 5%% after %.2f s%s\n", usableSeconds_.load(),
+                    preview ? " (the preview at coarse shooting patches)" : "");
         std::fflush(stdout);
 #endif
     }
@@ -727,6 +802,10 @@ std::string RadiosityLab::summary() const {
                   ff.seconds(), ff.rowsComputed(), double(ff.bytes()) / (1024.0 * 1024.0));
     std::string out = line;
     if (runSeconds_ > 0) out += wb::trf(", last run %.2f s", runSeconds_.load());
+    const PreviewError pe = previewError();
+    if (pe.ran && !previewShown_)
+        out += wb::trf("; the preview was off the answer by %.2f%% RMS, %+.2f%% on %s (worst surface)",
+                       100.0 * pe.rms, 100.0 * pe.worst, pe.surface.c_str());
     if (budgetHit_)
         out += wb::trf(
             "; stopped at the budget of %g s (--budget): the picture is the solution so far",
@@ -791,6 +870,12 @@ double radiosityResidual(const Lab& lab) {
 }
 std::vector<glm::dvec3> radiosityDisplayB(const Lab& lab) {
     return rl(lab).displayB();
+}
+std::vector<glm::dvec3> radiosityPreviewB(const Lab& lab) {
+    return rl(lab).previewB();
+}
+PreviewError radiosityPreviewError(const Lab& lab) {
+    return rl(lab).previewError();
 }
 int radiositySelected(const Lab& lab) {
     return rl(lab).selected();

@@ -69,6 +69,10 @@ constexpr int kMaxPatches = 40000;
 // only 0.10 m keeps every surface within 1% (0.97%; 0.12 m 1.50%, 0.14 m 1.13%, 0.14 m at 256²
 // 1.33%: the ceiling left of the light): docs/bench/radiosity.md, "Lab 08 defaults".
 constexpr double kShooterPatches = 4.25;
+// The preview phase of a run in a window (radiosity_preview.cpp): shooting groups this many
+// times the default's edge (0.30 m in the Cornell box), solved to this unshot fraction first.
+constexpr double kPreviewGroupScale = 3.0;
+constexpr double kPreviewTolerance = 1e-3;
 // Hemicube resolution a method uses when none is set (--hemicube or the slider).
 int hemicubeFor(const RadiosityState& s);
 
@@ -82,6 +86,17 @@ int radiosityStepCount(const Lab& lab);
 double radiosityResidual(const Lab& lab);
 // B per patch (display radiosity: with the ambient term when progressive and on).
 std::vector<glm::dvec3> radiosityDisplayB(const Lab& lab);
+// The preview's display B against the current one (the converged answer after a run), both
+// by luminance, the light left out: area-weighted relative RMS over the patches, and the
+// surface whose area mean is the most off (signed: +0.02 = the preview 2% brighter).
+struct PreviewError {
+    bool ran = false; // a preview ran (--preview on headless)
+    double rms = 0, worst = 0;
+    std::string surface;
+};
+PreviewError radiosityPreviewError(const Lab& lab);
+// The preview phase's display B when it ended (empty: no preview ran; --preview on headless).
+std::vector<glm::dvec3> radiosityPreviewB(const Lab& lab);
 // The selected patch (−1: none), its form-factor row and its item buffer (as the current
 // method made it: GL for key 3, CPU otherwise).
 int radiositySelected(const Lab& lab);

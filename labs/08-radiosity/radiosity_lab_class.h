@@ -43,6 +43,7 @@ struct RadiositySnapshot {
     int steps = 0;
     double residual = 1.0;
     int lastShooter = -1;
+    bool preview = false; // B is the preview's (coarse shooting patches), the full solve runs on
     uint64_t version = 0;
 };
 
@@ -66,6 +67,7 @@ class RadiosityLab : public Lab {
     }
     bool busy() const override { return running() || ex_.busy(); }
     bool worksInDraw() const override { return mainThreadRun_ && !ex_.on(); }
+    bool frameWanted() override { return frameWanted_.exchange(false); }
     int pollMs() const override { return ex_.pollMs(); }
     bool poll() override { return ex_.shellPoll(); }
     bool headlessFailed() const override { return failed_; }
@@ -78,6 +80,11 @@ class RadiosityLab : public Lab {
     int stepCount() const { return snapshot().steps; }
     double residual() const { return snapshot().residual; }
     std::vector<glm::dvec3> displayB() const { return snapshot().B; }
+    // The preview's display B when its phase ended (empty: no preview ran), and its residual.
+    const std::vector<glm::dvec3>& previewB() const { return previewB_; }
+    double previewResidual() const { return previewResidual_; }
+    bool previewOn() const { return previewOption_; }
+    PreviewError previewError() const; // radiosity_preview.cpp
     int selected() const { return selected_; }
     const std::vector<float>& selectedRow() const { return selectedRow_; }
     const rad::ItemBuffer& selectedItems() const { return selectedItems_; }
@@ -104,6 +111,15 @@ class RadiosityLab : public Lab {
         std::unique_ptr<rad::FormFactors> ff;
         std::unique_ptr<rad::Solver> solver;
         glm::dvec3 light{1.0}; // the emitters' area-weighted colour (for white balance)
+        // The first phase of a run (radiosity_preview.cpp): the same patches shooting from
+        // coarse groups, no near field; shown until the full solve (above) overtakes it.
+        // Declared after the full solve's members: destroyed first (its rays provider reads
+        // nothing of theirs, but the order keeps each solver before its form factors).
+        struct Preview {
+            rad::PatchMesh mesh; // `mesh` regrouped
+            std::unique_ptr<rad::FormFactors> ff;
+            std::unique_ptr<rad::Solver> solver;
+        } preview;
     };
 
     // radiosity_lab.cpp: model and solving.
@@ -124,7 +140,14 @@ class RadiosityLab : public Lab {
     bool running() const { return running_.load(); }
     bool overBudget() const;
     int stepLimit() const;
-    void publish();
+    void publish(const rad::Solver& sol, bool preview, bool last = false);
+    void publish() { // the full solve's state (a key, a rebuild, a single step)
+        if (model_ && model_->solver) publish(*model_->solver, false);
+    }
+    // radiosity_preview.cpp: the preview's mesh, form factors and solver for the current model.
+    void buildPreview(const rad::FormFactorConfig& full, const rad::SolverConfig& sc);
+    bool runPreview() const; // the next run starts with the preview phase
+    void finishPreview();    // the preview phase has ended: keep its B, let the full solve go on
     RadiositySnapshot snapshot() const {
         std::lock_guard<std::mutex> lock(snapMutex_);
         return snapshot_;
@@ -173,6 +196,21 @@ class RadiosityLab : public Lab {
     RadiositySnapshot snapshot_;
     std::string workerError_;     // a step's exception on the worker (guarded by snapMutex_)
     uint64_t printedVersion_ = 0; // headless summary printed for this snapshot
+    // The preview (radiosity_preview.cpp). In a window every run of a fresh solve starts with
+    // it; headless only with --preview on (a headless picture is the converged answer).
+#if defined(WB_HEADLESS)
+    bool previewOption_ = false;
+#else
+    bool previewOption_ = true;
+#endif
+    std::atomic<bool> previewPhase_{false}; // the run is in its preview phase
+    std::atomic<bool> previewShown_{false}; // the snapshot's B is the preview's
+    std::atomic<double> previewResidual_{1.0}; // the preview's residual when it ended
+    std::vector<glm::dvec3> previewB_;          // its display B then (tests, docs)
+    std::atomic<int> fullSteps_{0};             // the full solve's steps while the preview shows
+    std::atomic<bool> frameWanted_{false};      // a picture worth showing at once was published
+    bool skipSlice_ = false; // GL run: the next frame is drawn without a slice of steps
+    std::atomic<double> shownSeconds_{-1}; // a usable picture first drawn (window), s from start
 
     // Display.
     std::vector<glm::vec3> patchColour_;
@@ -183,6 +221,7 @@ class RadiosityLab : public Lab {
     int steps_ = 0;
     double residual_ = 1.0;
     int lastShooter_ = -1;
+    bool drawnPreview_ = false; // the colours are the preview's
 
     // Selection.
     bool pendingClick_ = false;

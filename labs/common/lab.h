@@ -82,6 +82,9 @@ class Lab {
     // GL thread): the window then draws the next frame at once, instead of pacing its progress
     // frames to leave the cores to worker threads.
     virtual bool worksInDraw() const { return false; }
+    // While busy() (not in draw()): asked every ~10 ms between the paced progress frames; true
+    // draws a frame now (lab 08: its preview picture is ready). Called on the GLUT thread.
+    virtual bool frameWanted() { return false; }
     // While > 0 (e.g. the exercise mode watching its file), the window calls poll() this often
     // when idle, and redraws only when poll() returns true; 0: never.
     virtual int pollMs() const { return 0; }

@@ -46,7 +46,8 @@ struct WindowState {
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
     bool timerPending = false;     // a glutTimerFunc redraw is on its way (busy lab)
-    bool pollPending = false;      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
+    bool pollPending = false;
+    bool wantedPending = false;    // a glutTimerFunc asking lab->frameWanted() is on its way      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;         // left button down outside the panel
     bool moved = false;            // the drag moved far enough to be a rotation, not a click
@@ -198,6 +199,20 @@ void busyTimer(int) {
 
 void scheduleNextFrame(bool busyBefore = false);
 
+// Between a busy lab's paced frames (up to 250 ms apart): a picture it wants shown at once
+// (Lab::frameWanted, e.g. lab 08's first usable picture) is drawn within ~10 ms.
+constexpr unsigned kWantedPollMs = 10;
+void wantedTimer(int) {
+    g->wantedPending = false;
+    if (!g->lab->busy() || g->lab->worksInDraw()) return; // drawn anyway
+    if (g->lab->frameWanted()) {
+        glutPostRedisplay();
+        return;
+    }
+    g->wantedPending = true;
+    glutTimerFunc(kWantedPollMs, wantedTimer, 0);
+}
+
 // Lab::pollMs(): the lab looks (e.g. at a file) without a redraw, and asks for one on change.
 void pollTimer(int) {
     g->pollPending = false;
@@ -223,10 +238,17 @@ void scheduleNextFrame(bool busyBefore) {
         glutPostRedisplay();
     } else if (g->lab->busy() && g->lab->worksInDraw()) {
         glutPostRedisplay(); // the work is in the next draw(): no idle wait before it
-    } else if (g->lab->busy() && !g->timerPending) {
-        g->timerPending = true;
-        const double wait = g->lastFrameMs * (1.0 - kBusyDrawShare) / kBusyDrawShare;
-        glutTimerFunc(unsigned(std::clamp(wait, kBusyRedrawMs, kBusyRedrawMaxMs)), busyTimer, 0);
+    } else if (g->lab->busy()) {
+        if (!g->wantedPending) {
+            g->wantedPending = true;
+            glutTimerFunc(kWantedPollMs, wantedTimer, 0);
+        }
+        if (!g->timerPending) {
+            g->timerPending = true;
+            const double wait = g->lastFrameMs * (1.0 - kBusyDrawShare) / kBusyDrawShare;
+            glutTimerFunc(unsigned(std::clamp(wait, kBusyRedrawMs, kBusyRedrawMaxMs)), busyTimer,
+                          0);
+        }
     } else if (pollMs > 0 && !g->lab->busy() && !g->pollPending) {
         g->pollPending = true;
         glutTimerFunc(unsigned(pollMs), pollTimer, 0);

@@ -206,7 +206,7 @@ std::vector<glm::dvec3> groupHull(const PatchMesh& mesh, int g) {
 }
 
 void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
-                    std::vector<float>& out, const GroupNearField* near) {
+                    std::vector<float>& out, const GroupNearField* near, bool exactPieces) {
     if (k < 1 || k > 4096)
         throw std::invalid_argument("group ray row: k = " + std::to_string(k) + " outside 1..4096");
     const ShooterGroup& sg = mesh.groups.at(static_cast<std::size_t>(g));
@@ -239,7 +239,9 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
     std::vector<std::vector<std::vector<glm::dvec3>>> memberPieces;
     for (std::size_t m = 0; m < members; ++m)
         membersArea += mesh.patches[static_cast<std::size_t>(sg.members[m])].area;
-    const bool ragged = membersArea < (1.0 - 1e-6) * hullArea;
+    const bool ragged = exactPieces && membersArea < (1.0 - 1e-6) * hullArea;
+    // Without pieces the hull stands for the group: its F scaled to the members' share of it.
+    const double hullScale = !exactPieces && membersArea < hullArea ? membersArea / hullArea : 1.0;
     if (ragged)
         for (std::size_t m = 0; m < members; ++m)
             memberPieces.push_back(exposedPieces(mesh, bvh, sg.members[m]));
@@ -341,7 +343,7 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
         }
         if (nearJ) return; // its rays counted for A_live; the solver shoots it member by member
         const double V = allW > 0.0 ? seenW / allW : 1.0;
-        out[j] = static_cast<float>(p.area * f * V); // / A_live below
+        out[j] = static_cast<float>(p.area * f * V * hullScale); // / A_live below
     });
     double live = 0.0;
     for (std::size_t m = 0; m < members; ++m)

@@ -23,8 +23,14 @@ struct GroupNearField;
 // by member: their entries are left 0 and only their visibility rays are cast (they count in
 // A_live as before), which skips their point-to-polygon terms (16 points each next to the
 // group's plane; all of an emitter's row).
+// `exactPieces`: a group whose members do not fill its hull (ragged: a floor group round a block's
+// foot) sums F over its members' exposed pieces (exact; the default). false: F to the hull
+// scaled by members' area / hull area, one contour per receiver instead of one per piece (lab
+// 08's preview at 0.30 m groups, whose floor groups hold ~100 pieces each: a first picture, not
+// the answer).
 void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
-                    std::vector<float>& out, const GroupNearField* near = nullptr);
+                    std::vector<float>& out, const GroupNearField* near = nullptr,
+                    bool exactPieces = true);
 
 // The near field of group g: the receivers within `radius` of the group's centroid, and for
 // each the gather form factor to every member m, w_jm = F(dA_j → P_m) · V(j, m) (exact point-
