@@ -3,7 +3,8 @@
 # "Lab 08 defaults"): for each round and method (rays, CPU hemicube, GL hemicube), alternated:
 # the headless run, then a window of each lab08-radiosity given (e.g. a build before and after
 # a change). A window run is timed by the lines the lab prints ("unshot power < 5% after",
-# "run X s (solving Y s)"), with the CPU seconds of the lab process up to convergence; with
+# "run X s (solving Y s)"; since l08fast also "usable picture drawn after": the frame that first
+# shows it, empty for a build without that line), with the CPU seconds of the lab process up to convergence; with
 # WB_FRAME_LOG=1 the shell adds where the run's frames spent their time. Needs an X display
 # (DISPLAY, e.g. Xvfb 1280x800). Not a CI test: timings on a shared machine.
 #   lab08_window.sh ROUNDS HEADLESS_EXE WINDOW_EXE [WINDOW_EXE...]
@@ -28,8 +29,9 @@ window() { # exe method
     sleep 0.5 # the frame after the run (and its frame log line)
     kill $pid 2>/dev/null
     wait $pid 2>/dev/null
-    printf "window %s %s: usable %s s, converged %s s, from launch %.2f s, CPU %s s | %s\n" \
+    printf "window %s %s: usable %s s (drawn %s s), converged %s s, from launch %.2f s, CPU %s s | %s\n" \
         "$2" "$1" "$(grep -o 'after [0-9.]* s' "$out" | head -1 | awk '{print $2}')" \
+        "$(grep -o 'drawn after [0-9.]* s' "$out" | head -1 | awk '{print $3}')" \
         "$(grep -o 'run [0-9.]* s' "$out" | head -1 | awk '{print $2}')" \
         "$(echo "$t1 - $t0" | bc)" "$c1" "$(grep '^frames' "$out" | head -1)"
 }

@@ -2,7 +2,7 @@
 # colour bleeding and smoothness properties of the picture, picking; the lab as a student and
 # a careless user meet it (radiosity_lab_ui_test.cpp).
 wb_test(radiosity_lab_test SOURCES radiosity_gl_hemicube_test.cpp radiosity_lab_render_test.cpp
-  radiosity_lab_ui_test.cpp LIBS lab08-radiosity_headless)
+  radiosity_lab_ui_test.cpp radiosity_preview_test.cpp LIBS lab08-radiosity_headless)
 # Issue 20 item 10: a meshing the lab refuses exits non-zero and writes no PNG (was: exit 0 and
 # a one-colour picture). Exit 1 exactly: a crash (signal) must not pass for a refusal.
 set(lab08Refused ${CMAKE_CURRENT_BINARY_DIR}/lab08-refused.png)
