@@ -535,7 +535,9 @@ void RadiosityLab::rebuildSolver() {
         }
         model_->solver = std::make_unique<rad::Solver>(model_->mesh, *model_->ff, sc);
         try {
+            const auto tp = std::chrono::steady_clock::now();
             buildPreview(fc, sc);
+            previewSetupSeconds_ = secondsSince(tp);
         } catch (const std::exception& e) {
             // Without a preview the run is the full solve alone, as before.
             model_->preview = Model::Preview{};

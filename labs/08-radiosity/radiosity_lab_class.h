@@ -209,6 +209,7 @@ class RadiosityLab : public Lab {
     std::vector<glm::dvec3> previewB_;          // its display B then (tests, docs)
     std::atomic<int> fullSteps_{0};             // the full solve's steps while the preview shows
     std::atomic<bool> frameWanted_{false};      // a picture worth showing at once was published
+    double previewSetupSeconds_ = 0; // buildPreview's time (before the run starts: logged)
     bool skipSlice_ = false; // GL run: the next frame is drawn without a slice of steps
     std::atomic<double> shownSeconds_{-1}; // a usable picture first drawn (window), s from start
 

@@ -160,10 +160,12 @@ void RadiosityLab::finishPreview() {
     previewB_ = pv.displayRadiosity();
     previewPhase_ = false;
 #if !defined(WB_HEADLESS)
-    std::printf("lab08: preview (%zu shooting patches of %.2f m) done after %.2f s, %d steps, "
-                "unshot %.2e; the full solve (%zu shooting patches) goes on\n",
+    std::printf("lab08: preview (%zu shooting patches of %.2f m, set up in %.3f s before the run) "
+                "done after %.2f s, %d steps, unshot %.2e; the full solve (%zu shooting patches) "
+                "goes on\n",
                 model_->preview.mesh.groups.size(), kPreviewGroupScale * s.shooterEdge,
-                secondsSince(runStart_), pv.steps(), pv.residual(), model_->mesh.groups.size());
+                previewSetupSeconds_, secondsSince(runStart_), pv.steps(), pv.residual(),
+                model_->mesh.groups.size());
     std::fflush(stdout);
 #endif
 }
