@@ -31,6 +31,16 @@ void RadiosityLab::gui() {
     const rad::FormFactors& ff = *model_->ff;
     ImGui::TextWrapped("%s", tr(model_->scene.name.c_str()));
     if (!message_.empty()) ImGui::TextWrapped(tr("note: %s"), message_.c_str());
+    if (drawnPreview_ && model_->preview.solver) // at the top: it says what the picture is
+        // The preview's error against the converged picture: docs/bench/radiosity.md, "l08fast".
+        ImGui::TextWrapped(
+            "%s", wb::trf("PREVIEW: %zu large shooting patches (%.2f m), F by rays (§1.15.1) "
+                          "whatever the method; walls, floor and ceiling within ~6%% of the "
+                          "answer, the blocks' faces up to ~40%%. The full solve (%zu shooting patches, "
+                          "%d steps so far) replaces it when less of its light is unshot.",
+                          model_->preview.mesh.groups.size(), kPreviewGroupScale * s.shooterEdge,
+                          model_->mesh.groups.size(), fullSteps_.load())
+                      .c_str());
     ImGui::Text(tr("patches %zu (edge <= %.3f m)"), model_->mesh.patches.size(), s.patchSize);
     float edge = float(s.patchSize);
     if (ImGui::SliderFloat(wb::tr("patch edge, m"), &edge, 0.005f, 0.5f, "%.3f",
@@ -119,22 +129,12 @@ void RadiosityLab::gui() {
         }
     }
     ImGui::Text(tr("iterations %d, residual %.2e"), steps_, residual_);
-    if (drawnPreview_ && model_->preview.solver)
-        // The preview's error against the converged picture: docs/bench/radiosity.md, "l08fast".
-        ImGui::TextWrapped(
-            "%s", wb::trf("PREVIEW: %zu large shooting patches (%.2f m), F by rays (§1.15.1) "
-                          "whatever the method; the walls within a few per cent of the answer, "
-                          "the blocks' faces up to ~40%%. The full solve (%zu shooting patches, "
-                          "%d steps so far) replaces it when less of its light is unshot.",
-                          model_->preview.mesh.groups.size(), kPreviewGroupScale * s.shooterEdge,
-                          model_->mesh.groups.size(), fullSteps_.load())
-                      .c_str());
     if (running())
         ImGui::Text(tr("running %.1f s (any key stops)"), secondsSince(runStart_));
     else if (runSeconds_ > 0)
         ImGui::Text(tr("last run %.2f s"), runSeconds_.load());
     if (usableSeconds_ >= 0)
-        ImGui::Text("%s", (model_->preview.solver
+        ImGui::TextWrapped("%s", (model_->preview.solver
                                ? wb::trf("unshot light < 5%% after %.2f s (the preview)",
                                          usableSeconds_.load())
                                : wb::trf("unshot light < 5%% after %.2f s", usableSeconds_.load()))
