@@ -8,8 +8,11 @@
 
 #include "radiosity_lab.h"
 
+#include <tbb/global_control.h>
+
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -22,10 +25,23 @@ struct Solved {
 
 // The Cornell box at 0.05 m patches (~930) shooting from the default 0.10 m groups (2×2
 // patches: 230 groups; the preview's 0.30 m groups: 37), hemicube 32²: a second or so a solve.
-Solved solve(const char* method, const char* preview, const char* threads) {
+Solved solve(const char* method, const char* preview, const char* threads, bool small = true) {
+#ifdef WB_TSAN_THREADS
+    // ThreadSanitizer (.ci/run): Debian's TBB is not instrumented and its threads give false
+    // reports; with TBB held to one thread what is checked is the lab's worker (both phases),
+    // the solvers' prefetch workers and the thread reading the snapshots.
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+#endif
     auto lab = wb::makeRadiosityLab();
     std::string err;
+#ifdef WB_SANITIZED
+    // Under the sanitizers (ThreadSanitizer: 200 s at 0.05 m) ~350 patches, 0.2 m groups.
+    REQUIRE(lab->setOption("patch-size", small ? "0.08" : "0.05", err));
+    if (small) REQUIRE(lab->setOption("shooting-patch", "0.2", err));
+#else
+    (void)small;
     REQUIRE(lab->setOption("patch-size", "0.05", err));
+#endif
     REQUIRE(lab->setOption("hemicube", "32", err));
     REQUIRE(lab->setOption("method", method, err));
     REQUIRE(lab->setOption("preview", preview, err));
@@ -45,7 +61,14 @@ bool same(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
 TEST_CASE("lab 08 preview: the converged answer is the same bit for bit with it on or off, and "
           "the preview is the same with 1 thread or all",
           "[gl][preview]") {
-    for (const char* method : {"rays", "cpu", "gl"}) {
+#ifdef WB_TSAN_THREADS
+    // ThreadSanitizer: the worker's two phases (rays and the CPU hemicube run the same code;
+    // GL steps on the calling thread).
+    const std::vector<const char*> methods{"rays"};
+#else
+    const std::vector<const char*> methods{"rays", "cpu", "gl"};
+#endif
+    for (const char* method : methods) {
         INFO(method);
         const Solved off = solve(method, "off", "0");
         CHECK(off.preview.empty());
@@ -68,7 +91,7 @@ TEST_CASE("lab 08 preview: the converged answer is the same bit for bit with it 
 // preview missing the indirect light or shooting twice would give (the unlit box: ~100%).
 TEST_CASE("lab 08 preview: its picture is within the stated error of the converged one",
           "[gl][preview]") {
-    const Solved on = solve("rays", "on", "0");
+    const Solved on = solve("rays", "on", "0", false);
     REQUIRE(on.error.ran);
     INFO("RMS " << on.error.rms << ", worst " << on.error.worst << " on " << on.error.surface);
     CHECK(on.error.rms < 0.08); // measured 5.26% (0.05 m patches, 2026-12-02)
