@@ -741,12 +741,15 @@ void RadiosityLab::stepOnMainThread(bool headless) {
 // table come from these lines).
 void RadiosityLab::reportRun() const {
 #if !defined(WB_HEADLESS)
-    const RadiositySnapshot snap = snapshot();
-    std::printf("lab08: %s run %.2f s (solving %.2f s), %d steps, residual %.2e\n",
+    // The full solve's own figures (the snapshot may still be the preview's when a key stopped
+    // the run); called on the thread that stepped it, after its last step.
+    const rad::Solver& sol = *model_->solver;
+    std::printf("lab08: %s run %.2f s (solving %.2f s), %d steps, residual %.2e%s\n",
                 s.method == FfMethod::Rays          ? "rays"
                 : s.method == FfMethod::CpuHemicube ? "CPU"
                                                     : "GL",
-                runSeconds_.load(), stepSeconds_.load(), snap.steps, snap.residual);
+                runSeconds_.load(), stepSeconds_.load(), sol.steps(), sol.residual(),
+                cancel_.load() ? " (stopped)" : "");
     std::fflush(stdout);
 #endif
 }
