@@ -13,6 +13,7 @@
 #include <emmintrin.h>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <tbb/task_arena.h>
@@ -702,15 +703,72 @@ struct Builder {
 // 40 instead of 21 ms); an own mapping measured 20-23 ms every time. Small arrays
 // and other systems: malloc.
 constexpr std::size_t kHuge = std::size_t(2) << 20;
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+// Issue 21: mappings a build has freed, kept for the next build. Fresh memory costs its
+// page faults and the kernel's zeroing at first touch: 7% of a one-thread balls 5 build
+// (perf: clear_page_erms 3.4%, the faults and munmap the rest) and 15% of a two-thread
+// one, where both threads fault on the same 2 MiB page at once and each zeroes a page of
+// its own (the kernel keeps one). malloc keeps freed memory for reuse the same way (its
+// mmap threshold grows to the largest chunk freed, up to 32 MiB), and so does Embree's
+// build through it; at most kKeptBytes (a few builds of a million primitives) are kept
+// for the process, in at most kKept mappings. The first build of a process still pays.
+struct KeptMappings {
+    static constexpr int kKept = 8;
+    static constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
+    std::mutex lock;
+    void* base[kKept] = {};
+    std::size_t length[kKept] = {};
+    std::size_t bytes = 0;
+    // A kept mapping of at least `need` bytes and at most twice that (so a small array
+    // does not hold a large mapping), the smallest one; null if none.
+    void* take(std::size_t need, std::size_t& got) {
+        std::lock_guard<std::mutex> g(lock);
+        int best = -1;
+        for (int k = 0; k < kKept; ++k)
+            if (base[k] && length[k] >= need && length[k] / 2 <= need &&
+                (best < 0 || length[k] < length[best]))
+                best = k;
+        if (best < 0) return nullptr;
+        void* p = base[best];
+        got = length[best];
+        bytes -= got;
+        base[best] = nullptr;
+        return p;
+    }
+    // Keeps the mapping; false (the caller unmaps it) when the cap would be passed.
+    bool keep(void* p, std::size_t len) {
+        std::lock_guard<std::mutex> g(lock);
+        if (bytes + len > kKeptBytes) return false;
+        for (int k = 0; k < kKept; ++k)
+            if (!base[k]) {
+                base[k] = p;
+                length[k] = len;
+                bytes += len;
+                return true;
+            }
+        return false;
+    }
+};
+// Never destroyed (a build may run while the process exits); the mappings are not
+// malloc's, so LeakSanitizer does not report them.
+KeptMappings& keptMappings() {
+    static KeptMappings* kept = new KeptMappings;
+    return *kept;
+}
+#endif
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
         // Room for the alignment and, just below the aligned start, the mapping's base
         // and length (the mapping starts at least a 4 KiB page below it).
-        const std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge;
-        void* base =
-            mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (base == MAP_FAILED) throw std::bad_alloc();
+        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0;
+        void* base = keptMappings().take(length, kept);
+        const bool fresh = base == nullptr;
+        if (!fresh) length = kept;
+        if (fresh) {
+            base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (base == MAP_FAILED) throw std::bad_alloc();
+        }
         const auto start =
             (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
         char* p = reinterpret_cast<char*>(start);
@@ -718,7 +776,7 @@ void* bigAlloc(std::size_t bytes) {
         // at its first touch, so a tail in one (balls 5's 2.1 MB reference buffers: two
         // pages, 4 MiB zeroed each) cost more clearing than its faults save; the tail
         // takes 4 KiB pages, zeroed as touched (issue 21: clear_page was 8% in perf).
-        madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        if (fresh) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
@@ -735,7 +793,7 @@ void bigFree(void* p, std::size_t bytes) noexcept {
         std::size_t length;
         std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
         std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
-        munmap(base, length);
+        if (!keptMappings().keep(base, length)) munmap(base, length);
         return;
     }
 #endif
