@@ -168,17 +168,36 @@ void binRange(const Ref* refs, std::size_t n, const BinSetup& s, Box4* box, std:
     const __m128 mask = lanes012();
     Box4 *bx = box, *by = box + nb, *bz = box + 2 * nb;
     std::uint32_t *cx = count, *cy = count + nb, *cz = count + 2 * nb;
-    for (std::size_t i = 0; i < n; ++i) {
-        const __m128 lo = loadLo(refs[i], mask), hi = loadHi(refs[i]);
-        const __m128i b = s.bins(centroid(lo, hi));
-        const int b0 = _mm_cvtsi128_si32(b), b1 = _mm_extract_epi16(b, 2),
-                  b2 = _mm_extract_epi16(b, 4); // bins < 256: the low half of lanes 1, 2
-        bx[b0].extend(lo, hi);
-        ++cx[b0];
-        by[b1].extend(lo, hi);
-        ++cy[b1];
-        bz[b2].extend(lo, hi);
-        ++cz[b2];
+    // Issue 21: the bins of a chunk of references first, then their boxes merged into
+    // the bins. In one loop a bin's load waited for the address of the previous
+    // reference's bin store (its own chain: the reference's load, centroid, scale,
+    // conversion), since consecutive references often share a bin and the CPU then
+    // orders the load behind the store; here the stores' addresses come from a
+    // precomputed array, known as soon as it is loaded.
+    constexpr std::size_t kChunk = 64;
+    alignas(16) std::uint8_t bins[kChunk][4];
+    for (std::size_t c = 0; c < n; c += kChunk) {
+        const std::size_t m = std::min(kChunk, n - c);
+        const Ref* r = refs + c;
+        for (std::size_t i = 0; i < m; ++i) {
+            const __m128 lo = loadLo(r[i], mask), hi = loadHi(r[i]);
+            const __m128i b = s.bins(centroid(lo, hi));
+            // bins < 256: the low byte of each lane, packed into one 32-bit word
+            const __m128i p16 = _mm_packs_epi32(b, b);
+            const __m128i p8 = _mm_packus_epi16(p16, p16);
+            const int word = _mm_cvtsi128_si32(p8);
+            std::memcpy(bins[i], &word, 4);
+        }
+        for (std::size_t i = 0; i < m; ++i) {
+            const __m128 lo = loadLo(r[i], mask), hi = loadHi(r[i]);
+            const int b0 = bins[i][0], b1 = bins[i][1], b2 = bins[i][2];
+            bx[b0].extend(lo, hi);
+            ++cx[b0];
+            by[b1].extend(lo, hi);
+            ++cy[b1];
+            bz[b2].extend(lo, hi);
+            ++cz[b2];
+        }
     }
 }
 
