@@ -726,11 +726,12 @@ constexpr std::size_t kHuge = std::size_t(2) << 20;
 // Issue 21: mappings a build has freed, kept for the next build. Fresh memory costs its
 // page faults and the kernel's zeroing at first touch: 7% of a one-thread balls 5 build
 // (perf: clear_page_erms 3.4%, the faults and munmap the rest) and 15% of a two-thread
-// one, where both threads fault on the same 2 MiB page at once and each zeroes a page of
-// its own (the kernel keeps one). malloc keeps freed memory for reuse the same way (its
-// mmap threshold grows to the largest chunk freed, up to 32 MiB), and so does Embree's
-// build through it; at most kKeptBytes (a few builds of a million primitives) are kept
-// for the process, in at most kKept mappings. The first build of a process still pays.
+// one, where both threads fault on the same 2 MiB page at once and each may zero a page
+// of its own (clear_page 9% there). malloc keeps freed memory for reuse the same way (its
+// mmap threshold grows to the largest chunk freed, up to 32 MiB), and Embree's reference
+// array is an _mm_malloc allocation; at most kKeptBytes (a few builds of a million
+// primitives) are kept for the process, in at most kKept mappings. The first build of a
+// process still pays.
 struct KeptMappings {
     static constexpr int kKept = 8;
     static constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
