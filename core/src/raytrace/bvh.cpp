@@ -13,6 +13,7 @@
 #include <emmintrin.h>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <tbb/task_arena.h>
@@ -167,17 +168,36 @@ void binRange(const Ref* refs, std::size_t n, const BinSetup& s, Box4* box, std:
     const __m128 mask = lanes012();
     Box4 *bx = box, *by = box + nb, *bz = box + 2 * nb;
     std::uint32_t *cx = count, *cy = count + nb, *cz = count + 2 * nb;
-    for (std::size_t i = 0; i < n; ++i) {
-        const __m128 lo = loadLo(refs[i], mask), hi = loadHi(refs[i]);
-        const __m128i b = s.bins(centroid(lo, hi));
-        const int b0 = _mm_cvtsi128_si32(b), b1 = _mm_extract_epi16(b, 2),
-                  b2 = _mm_extract_epi16(b, 4); // bins < 256: the low half of lanes 1, 2
-        bx[b0].extend(lo, hi);
-        ++cx[b0];
-        by[b1].extend(lo, hi);
-        ++cy[b1];
-        bz[b2].extend(lo, hi);
-        ++cz[b2];
+    // Issue 21: the bins of a chunk of references first, then their boxes merged into
+    // the bins. In one loop a bin's load waited for the address of the previous
+    // reference's bin store (its own chain: the reference's load, centroid, scale,
+    // conversion), since consecutive references often share a bin and the CPU then
+    // orders the load behind the store; here the stores' addresses come from a
+    // precomputed array, known as soon as it is loaded.
+    constexpr std::size_t kChunk = 64;
+    alignas(16) std::uint8_t bins[kChunk][4];
+    for (std::size_t c = 0; c < n; c += kChunk) {
+        const std::size_t m = std::min(kChunk, n - c);
+        const Ref* r = refs + c;
+        for (std::size_t i = 0; i < m; ++i) {
+            const __m128 lo = loadLo(r[i], mask), hi = loadHi(r[i]);
+            const __m128i b = s.bins(centroid(lo, hi));
+            // bins < 256: the low byte of each lane, packed into one 32-bit word
+            const __m128i p16 = _mm_packs_epi32(b, b);
+            const __m128i p8 = _mm_packus_epi16(p16, p16);
+            const int word = _mm_cvtsi128_si32(p8);
+            std::memcpy(bins[i], &word, 4);
+        }
+        for (std::size_t i = 0; i < m; ++i) {
+            const __m128 lo = loadLo(r[i], mask), hi = loadHi(r[i]);
+            const int b0 = bins[i][0], b1 = bins[i][1], b2 = bins[i][2];
+            bx[b0].extend(lo, hi);
+            ++cx[b0];
+            by[b1].extend(lo, hi);
+            ++cy[b1];
+            bz[b2].extend(lo, hi);
+            ++cz[b2];
+        }
     }
 }
 
@@ -702,15 +722,73 @@ struct Builder {
 // 40 instead of 21 ms); an own mapping measured 20-23 ms every time. Small arrays
 // and other systems: malloc.
 constexpr std::size_t kHuge = std::size_t(2) << 20;
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+// Issue 21: mappings a build has freed, kept for the next build. Fresh memory costs its
+// page faults and the kernel's zeroing at first touch: 7% of a one-thread balls 5 build
+// (perf: clear_page_erms 3.4%, the faults and munmap the rest) and 15% of a two-thread
+// one, where both threads fault on the same 2 MiB page at once and each may zero a page
+// of its own (clear_page 9% there). malloc keeps freed memory for reuse the same way (its
+// mmap threshold grows to the largest chunk freed, up to 32 MiB), and Embree's reference
+// array is an _mm_malloc allocation; at most kKeptBytes (a few builds of a million
+// primitives) are kept for the process, in at most kKept mappings. The first build of a
+// process still pays.
+struct KeptMappings {
+    static constexpr int kKept = 8;
+    static constexpr std::size_t kKeptBytes = std::size_t(256) << 20;
+    std::mutex lock;
+    void* base[kKept] = {};
+    std::size_t length[kKept] = {};
+    std::size_t bytes = 0;
+    // A kept mapping of at least `need` bytes and at most twice that (so a small array
+    // does not hold a large mapping), the smallest one; null if none.
+    void* take(std::size_t need, std::size_t& got) {
+        std::lock_guard<std::mutex> g(lock);
+        int best = -1;
+        for (int k = 0; k < kKept; ++k)
+            if (base[k] && length[k] >= need && length[k] / 2 <= need &&
+                (best < 0 || length[k] < length[best]))
+                best = k;
+        if (best < 0) return nullptr;
+        void* p = base[best];
+        got = length[best];
+        bytes -= got;
+        base[best] = nullptr;
+        return p;
+    }
+    // Keeps the mapping; false (the caller unmaps it) when the cap would be passed.
+    bool keep(void* p, std::size_t len) {
+        std::lock_guard<std::mutex> g(lock);
+        if (bytes + len > kKeptBytes) return false;
+        for (int k = 0; k < kKept; ++k)
+            if (!base[k]) {
+                base[k] = p;
+                length[k] = len;
+                bytes += len;
+                return true;
+            }
+        return false;
+    }
+};
+// Never destroyed (a build may run while the process exits); the mappings are not
+// malloc's, so LeakSanitizer does not report them.
+KeptMappings& keptMappings() {
+    static KeptMappings* kept = new KeptMappings;
+    return *kept;
+}
+#endif
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
         // Room for the alignment and, just below the aligned start, the mapping's base
         // and length (the mapping starts at least a 4 KiB page below it).
-        const std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge;
-        void* base =
-            mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-        if (base == MAP_FAILED) throw std::bad_alloc();
+        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0;
+        void* base = keptMappings().take(length, kept);
+        const bool fresh = base == nullptr;
+        if (!fresh) length = kept;
+        if (fresh) {
+            base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (base == MAP_FAILED) throw std::bad_alloc();
+        }
         const auto start =
             (reinterpret_cast<std::uintptr_t>(base) + 64 + kHuge - 1) / kHuge * kHuge;
         char* p = reinterpret_cast<char*>(start);
@@ -718,7 +796,7 @@ void* bigAlloc(std::size_t bytes) {
         // at its first touch, so a tail in one (balls 5's 2.1 MB reference buffers: two
         // pages, 4 MiB zeroed each) cost more clearing than its faults save; the tail
         // takes 4 KiB pages, zeroed as touched (issue 21: clear_page was 8% in perf).
-        madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        if (fresh) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
@@ -735,7 +813,7 @@ void bigFree(void* p, std::size_t bytes) noexcept {
         std::size_t length;
         std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
         std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
-        munmap(base, length);
+        if (!keptMappings().keep(base, length)) munmap(base, length);
         return;
     }
 #endif
