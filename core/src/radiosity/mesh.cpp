@@ -279,6 +279,19 @@ std::vector<std::vector<glm::dvec2>> contactTriangles(const Scene& scene, const 
     return out;
 }
 
+// A patch with T-vertices on its outline is drawn as a fan from a vertex at its centre
+// (displayTriangles): that vertex, at the patch's centroid, on its surface, at the mean of its
+// lattice corners. Given by build() (T-vertices of finer neighbours) and by stitch() (seam
+// vertices of another surface).
+void addCentreVertex(PatchMesh& mesh, Patch& p) {
+    glm::dvec2 l(0.0);
+    for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
+    p.centreVertex = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.push_back(p.centre);
+    mesh.vertexSurface.push_back(p.surface);
+    mesh.vertexLattice.push_back(l);
+}
+
 // Stitching where surfaces meet (issue 19 item 10): along an edge of one surface that lies on
 // another (a block's bottom edge on the floor, a wall's bottom edge on the floor's border, the
 // block's faces at its corners, the ceiling's pieces around the light), each side's vertices
@@ -419,13 +432,7 @@ void stitch(PatchMesh& mesh) {
     }
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
         Patch& p = mesh.patches[i];
-        if (!grown[i] || p.centreVertex >= 0) continue;
-        glm::dvec2 l(0.0);
-        for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
-        p.centreVertex = static_cast<int>(mesh.vertices.size());
-        mesh.vertices.push_back(p.centre);
-        mesh.vertexSurface.push_back(p.surface);
-        mesh.vertexLattice.push_back(l);
+        if (grown[i] && p.centreVertex < 0) addCentreVertex(mesh, p);
     }
 }
 
@@ -525,14 +532,7 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
             between(p, p.surface, a, b, 12);
         }
         p.centreVertex = -1;
-        if (p.outline.size() > static_cast<std::size_t>(p.cornerCount)) {
-            glm::dvec2 l(0.0);
-            for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
-            p.centreVertex = static_cast<int>(mesh.vertices.size());
-            mesh.vertices.push_back(p.centre);
-            mesh.vertexSurface.push_back(p.surface);
-            mesh.vertexLattice.push_back(l);
-        }
+        if (p.outline.size() > static_cast<std::size_t>(p.cornerCount)) addCentreVertex(mesh, p);
     }
     if (mesh.conforming) stitch(mesh);
     // Shooting groups: numbered densely (a triangle's grid leaves some coarse cells empty),
@@ -605,6 +605,63 @@ glm::dvec3 pointOn(const std::vector<glm::dvec3>& c, double u, double v) {
     return (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
 }
 
+// The exposed part of a patch whose 8×8 exposure samples all lie inside a body, found from
+// its corners: where a body's footprint edge cuts a corner (or a strip) off the patch narrower
+// than the samples' 1/16 inset, that sliver showed the background through a 1 px hole beside
+// the Cornell box's short block (the crack census) when the patch was dropped. A convex
+// footprint that covers every corner of a convex patch covers the whole patch, so a sliver
+// has an exposed corner. The exposed polygon is the exposed corners plus, on each edge between
+// an exposed and a covered corner, the point where the cover begins (bisection to 2^-40 of the
+// edge): exact for one straight footprint edge crossing the patch. Returns false when every
+// corner is covered (the patch is dropped, as before); else its exposed area and centroid.
+// "Covered" here is "under a body's top" (the normal ray met from behind), as mesh_test's
+// edge checks ask: these points lie within a hair of a footprint's border, where covered()'s
+// grazing rays can leave past the body's side at its foot (the conforming mesh's triangles
+// inside a footprint, their corners on its border, read as exposed by it).
+bool exposedSliver(const PatchBvh& bvh, const std::vector<glm::dvec3>& c, const glm::dvec3& n, double& area,
+                   glm::dvec3& centroid) {
+    glm::dvec3 mid(0.0);
+    for (const glm::dvec3& q : c) mid += q / static_cast<double>(c.size());
+    // A point of the patch just inside from x, 1e-3 of the way to the middle (~20 µm on the
+    // lab's patches): a corner on a footprint's border is decided by the side the patch lies on.
+    auto inset = [&](const glm::dvec3& x) { return x + 1e-3 * (mid - x); };
+    auto under = [&](const glm::dvec3& x) { return metFromBehind(bvh, x + 1e-7 * (1.0 + glm::length(x)) * n, n); };
+    std::vector<char> open(c.size());
+    bool any = false;
+    for (std::size_t k = 0; k < c.size(); ++k) any |= (open[k] = !under(inset(c[k]))) != 0;
+    if (!any) return false;
+    std::vector<glm::dvec3> poly;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        const std::size_t k1 = (k + 1) % c.size();
+        if (open[k]) poly.push_back(inset(c[k]));
+        if (open[k] == open[k1]) continue;
+        double lo = 0.0, hi = 1.0; // lo: on open[k]'s side, hi: on open[k1]'s side
+        for (int it = 0; it < 40; ++it) {
+            const double t = 0.5 * (lo + hi);
+            (!under(inset(c[k] + t * (c[k1] - c[k]))) == (open[k] != 0) ? lo : hi) = t;
+        }
+        poly.push_back(inset(c[k] + (open[k] ? lo : hi) * (c[k1] - c[k])));
+    }
+    area = poly.size() >= 3 ? polygonArea(poly) : 0.0;
+    if (!(area > 0.0)) return false;
+    glm::dvec3 sum(0.0);
+    double wsum = 0.0;
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+        const double a = 0.5 * glm::length(glm::cross(poly[k] - poly[0], poly[k + 1] - poly[0]));
+        sum += a * (poly[0] + poly[k] + poly[k + 1]) / 3.0;
+        wsum += a;
+    }
+    centroid = sum / wsum;
+    // The centroid of a non-convex exposed part may lie under the body: an exposed corner then.
+    if (under(centroid))
+        for (std::size_t k = 0; k < c.size(); ++k)
+            if (open[k]) {
+                centroid = inset(c[k]);
+                break;
+            }
+    return true;
+}
+
 // Builds the mesh, then fits it to where bodies stand on surfaces (issue 19 item 10: black
 // blotches on the floor at the base of the Cornell box's blocks). A patch wholly inside a body
 // is dropped: nobody sees it, and its hemicube saw only the body's inside (B = 0). A patch
@@ -642,7 +699,11 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
                     open.push_back(q);
                 }
             fraction[i] = static_cast<double>(hits) / (g * g);
-            if (hits == 0) continue;
+            if (hits == 0) {
+                double exposed = 0.0;
+                if (exposedSliver(bvh, c, p.normal, exposed, centre[i])) fraction[i] = exposed / p.area;
+                continue;
+            }
             centre[i] = sum / static_cast<double>(hits);
             if (covered(bvh, centre[i], p.normal)) { // a non-convex exposed part: its nearest sample
                 glm::dvec3 best = open.front();
