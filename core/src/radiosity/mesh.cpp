@@ -574,18 +574,21 @@ bool metFromBehind(const PatchBvh& bvh, const glm::dvec3& o, const glm::dvec3& d
 // A point of a surface is covered when it lies inside a body (the floor under a block, which
 // has no bottom face): the first surface along its normal is met from behind, and so it is
 // along grazing directions. The grazing rays tell a body standing on the surface (they meet
-// its sides from inside) from one hanging just off it: the classroom's ceiling lamps hang
-// 2 cm under the ceiling with no top face, and the ceiling above them, tested along the
-// normal only, was dropped and showed the background through the gap (the crack census:
-// 852 px). 88° from the normal leaves a 2 cm gap within 2/tan(2°) = 57 cm of a lamp's edge,
-// wider than the lamps; 60° covers bodies the grazing rays would pass under. Eight azimuths.
+// its sides from inside) from one hanging just off it: a panel hanging 2 cm under a ceiling
+// with no top face (the classroom's lamps until the fifth session), tested along the normal
+// only, had the ceiling above it dropped, which showed the background through the gap (the
+// crack census: 852 px). 88° from the normal leaves a 2 cm gap within 2/tan(2°) = 57 cm of a
+// panel's edge; 60° covers bodies the grazing rays would pass under. Eight azimuths.
+// A body whose top is another body's face turned towards it (a table's side panel, closed by
+// the table top's underside, which faces down into it) is met from the front along the
+// normal: there every ray at 88° meeting a back face marks it covered (a floor patch of the
+// classroom whose centre fell inside a panel, 2 cm thick, was drawn black in flat mode).
 bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
     const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
-    if (!metFromBehind(bvh, o, n)) return false;
     const glm::dvec3 a = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 t1 = glm::normalize(glm::cross(n, a)), t2 = glm::cross(n, t1);
     constexpr double kPi = 3.14159265358979323846;
-    for (const double elevation : {60.0, 88.0}) {
+    auto ring = [&](double elevation) {
         const double polar = elevation * kPi / 180.0;
         for (int k = 0; k < 8; ++k) {
             const double phi = k * kPi / 4.0;
@@ -593,8 +596,10 @@ bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
                                  std::sin(polar) * (std::cos(phi) * t1 + std::sin(phi) * t2);
             if (!metFromBehind(bvh, o, d)) return false;
         }
-    }
-    return true;
+        return true;
+    };
+    if (!metFromBehind(bvh, o, n)) return ring(88.0);
+    return ring(60.0) && ring(88.0);
 }
 
 glm::dvec3 pointOn(const std::vector<glm::dvec3>& c, double u, double v) {
@@ -676,6 +681,7 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
     const std::size_t n = mesh.patches.size();
     std::vector<double> fraction(n, 1.0);
     std::vector<glm::dvec3> centre(n);
+    for (std::size_t i = 0; i < n; ++i) centre[i] = mesh.patches[i].centre;
     {
         const PatchBvh bvh(mesh);
         for (std::size_t i = 0; i < n; ++i) {
@@ -705,6 +711,11 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
                 continue;
             }
             centre[i] = sum / static_cast<double>(hits);
+            // Every sample open but the centre itself inside a body (a floor patch whose centre
+            // falls inside a table's 2 cm side panel, between the samples): the centre moves
+            // to the nearest sample, the area stays whole. Else a wholly open patch keeps its
+            // centroid.
+            if (hits == g * g) centre[i] = p.centre;
             if (covered(bvh, centre[i], p.normal)) { // a non-convex exposed part: its nearest sample
                 glm::dvec3 best = open.front();
                 for (const glm::dvec3& q : open)
@@ -729,8 +740,8 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
     }
     bool any = false;
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
-        if (fit[i].first == 1.0) continue;
         Patch& p = mesh.patches[i];
+        if (fit[i].first == 1.0 && fit[i].second == p.centre) continue;
         p.area *= fit[i].first;
         p.centre = fit[i].second;
         any = true;
