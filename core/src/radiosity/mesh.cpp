@@ -299,7 +299,7 @@ void addCentreVertex(PatchMesh& mesh, Patch& p) {
 // get one position. Display triangles then meet vertex to vertex across surfaces: no
 // T-junction, so the rasteriser leaves no pixel open between them (a crack showing the
 // background or a body's inside). Vertices stay per surface (smoothing never mixes surfaces).
-void stitch(PatchMesh& mesh) {
+void stitch(PatchMesh& mesh, bool coplanarOnly) {
     mesh.seamVertices.clear();
     const std::size_t nv0 = mesh.vertices.size();
     std::vector<int> parent(nv0);
@@ -344,6 +344,7 @@ void stitch(PatchMesh& mesh) {
                 if (ss == st) continue;
                 const auto& d = mesh.surfaces[ss].vertices;
                 const glm::dvec3 n = polygonNormal(d);
+                if (coplanarOnly && glm::dot(n, polygonNormal(c)) < 1.0 - 1e-9) continue;
                 if (std::abs(glm::dot(a - d[0], n)) > tol || std::abs(glm::dot(b - d[0], n)) > tol) continue;
                 const glm::dvec3 mid = 0.5 * (a + b);
                 bool in = true;
@@ -534,7 +535,9 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
         p.centreVertex = -1;
         if (p.outline.size() > static_cast<std::size_t>(p.cornerCount)) addCentreVertex(mesh, p);
     }
-    if (mesh.conforming) stitch(mesh);
+    // The grid mesh stitches pieces of one plane (a ceiling around its lamps): their shared
+    // edges are cut differently on each side, and the T-junctions left 1 px cracks.
+    stitch(mesh, !mesh.conforming);
     // Shooting groups: numbered densely (a triangle's grid leaves some coarse cells empty),
     // then members, area, centroid; the frame comes from the surface.
     std::map<int, int> dense;
