@@ -603,6 +603,16 @@ int RadiosityLab::stepLimit() const {
 
 void RadiosityLab::startRun() {
     if (!model_ || running()) return;
+    // `r` on a solution already at the tolerance has nothing to run: it used to log "unshot
+    // power < 5% after 0.00 s" and put "last run 0.00 s" over the run that converged.
+    if (model_->solver->residual() < s.tolerance) {
+#if !defined(WB_HEADLESS)
+        std::printf("lab08: already converged (residual %.2e < %.0e after %d steps): nothing to run\n",
+                    model_->solver->residual(), s.tolerance, model_->solver->steps());
+        std::fflush(stdout);
+#endif
+        return;
+    }
     // A run that ended by itself leaves its thread joinable: assigning a new one to it would
     // call std::terminate (r after a finished run on a worker method crashed the lab).
     if (worker_.joinable()) worker_.join();
@@ -610,8 +620,11 @@ void RadiosityLab::startRun() {
     running_ = true;
     runStart_ = std::chrono::steady_clock::now();
     runSeconds_ = 0;
-    usableSeconds_ = -1;
-    shownSeconds_ = -1;
+    // Already below 5% (a run stopped by a key, then `r`): the times it got there stay.
+    if (model_->solver->residual() >= 0.05) {
+        usableSeconds_ = -1;
+        shownSeconds_ = -1;
+    }
     stepSeconds_ = 0;
     // A fresh solve starts with the preview (radiosity_preview.cpp); a run resumed after a key
     // stopped it goes on where it was.

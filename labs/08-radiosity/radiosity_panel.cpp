@@ -68,7 +68,7 @@ void RadiosityLab::gui() {
                                          hemicubeFor(s), hemicubeFor(s),
                                          s.method == FfMethod::GlHemicube
                                              ? wb::tr("drawn by OpenGL between frames")
-                                             : wb::tr("cast by rays on the CPU"))
+                                             : wb::tr("rasterised on the CPU face by face, the nearest patch in each pixel"))
                                      .c_str());
     const bool groups = !model_->mesh.groups.empty() && s.solver == 0;
     ImGui::TextWrapped("%s",

@@ -17,7 +17,8 @@ endif()
 # reference (scripts/bench/radiosity_reference.sh). A bench, not a test: blender is no CI dependency.
 add_executable(radiosity_reference radiosity_reference.cpp)
 target_compile_options(radiosity_reference PRIVATE ${WB_WARNINGS})
-target_link_libraries(radiosity_reference PRIVATE core)
+# core comes through the lab (its GL hemicube draws key 3's column: the lab's own code).
+target_link_libraries(radiosity_reference PRIVATE lab08-radiosity_headless)
 # A second, independent estimate for that comparison: brute-force Monte Carlo path tracing on
 # the scene's polygons (tests/bench/radiosity_mc.cpp). A bench, not a test.
 add_executable(radiosity_mc radiosity_mc.cpp)

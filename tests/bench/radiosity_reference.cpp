@@ -9,13 +9,19 @@
 //   ...] METHOD = hemicube (CPU hemicube, RES²) or rays (k rays, Auto kernel); SHOOTER_M > PATCH_M:
 //   progressive shoots from groups of about that edge (MeshConfig::shooterEdge); TOL: stop at
 //   that unshot power / emitted (default 1e-5), B shown with the ambient term as the lab does.
-// METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); PATCH_M
-// and SHOOTER_M "lab" = lab 08's default edges.
+// METHOD grouprays = lab 08's key 1 with groups (rays at the receivers, point_rays.h); gl = lab
+// 08's key 3: rows by the lab's GL hemicube (labs/08-radiosity/gl_hemicube.h, drawn through
+// OSMesa here, the lab's display triangles and near distance); PATCH_M and SHOOTER_M "lab" =
+// lab 08's default edges.
 // Default settings: `settings.empty()` below. --conforming (before the settings): mesh with
 // MeshConfig::conforming (issue 19 item 10's conforming mesh; "lab" edges then from its count).
 // Experiments (docs/bench/radiosity.md, "Why ours was off"): --black-except NAME sets every
 // other surface's R to 0 (NAME's direct light only); WB_RADREF_NEAR=r sets
 // FormFactorConfig::groupNearField; WB_RADREF_FLOORF=1 prints Σ F(light patch -> floor).
+#include "gl_hemicube.h"
+#include "patch_view.h"
+
+#include "common/headless_context.h"
 #include "core/radiosity/point_rays.h"
 #include "core/radiosity/ray_form_factors.h"
 #include "core/radiosity/scenes.h"
@@ -28,7 +34,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,7 +63,7 @@ struct Setting {
 
 // Lab 08's default patch edge (RadiosityLab::defaultPatchSize, copied: the lab's class is not
 // in core): e = √(A/3700), corrected twice by the count the mesher makes of it. The Cornell
-// box: 0.02359 m, 3,716 patches; its shooting groups are 4.25 e for every method
+// box: 0.02359 m, 3,658 patches (3,716 before the fifth session's sliver cells); its shooting groups are 4.25 e for every method
 // (kShooterPatches).
 double labPatch(const Scene& scene) {
     double area = 0;
@@ -89,7 +97,7 @@ Setting parse(const std::string& s) {
     out.method = parts[2];
     out.resOrK = std::stoi(parts[3]);
     if (out.method != "hemicube" && out.method != "rays" && out.method != "grouprays" &&
-        out.method != "p2p" && out.method != "grouppool")
+        out.method != "p2p" && out.method != "grouppool" && out.method != "gl")
         throw std::invalid_argument("method " + out.method);
     return out;
 }
@@ -215,17 +223,18 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (settings.empty())
-        settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,716 patches),
+        settings = {// Lab 08's defaults (radiosity_lab.h): the lab's patch edge (3,658 patches),
                     // shooting groups of 4.25 patches (0.10 m), stop at unshot 1e-4, rows by the
                     // keys' methods: rays k = 4
                     // gathered at the receivers (key 1, the default), CPU hemicube 128² (key 2),
-                    // GL hemicube 128² (key 3: core's CPU hemicube at 128² stands in, they
-                    // differ at edge pixels only).
+                    // GL hemicube 128² (key 3: the lab's GL hemicube, drawn through OSMesa;
+                    // until the fifth session core's CPU hemicube stood in for it and this
+                    // column repeated the CPU one).
                     parse("default, rays k=4:lab:grouprays:4:lab:1e-4"),
                     // 0.14 m groups for the hemicubes (lab08fast) put the ceiling left of the
                     // light 1.13% off once the plane fit came (docs/bench/radiosity.md).
                     parse("default, CPU hemicube 128:lab:hemicube:128:lab:1e-4"),
-                    parse("default, GL hemicube 128 (as CPU 128):lab:hemicube:128:lab:1e-4"),
+                    parse("default, GL hemicube 128:lab:gl:128:lab:1e-4"),
                     // Finer: patches and groups √2 smaller, k = 16, stop at 1e-4.
                     parse("fine, rays k=16:0.0167:grouprays:16:0.071:1e-4")};
     Scene scene = cornellBox();
@@ -258,12 +267,53 @@ int main(int argc, char** argv) {
             if (st.method != "rays" && st.method != "grouprays")
                 fc.rays.kernel = RayKernel::PointToPolygon;
         } else {
-            fc.method = FormFactorMethod::Hemicube;
+            fc.method = st.method == "gl" ? FormFactorMethod::External : FormFactorMethod::Hemicube;
             fc.hemicubeResolution = st.resOrK;
+        }
+        const FormFactors* ffp = nullptr;
+        // gl: as RadiosityLab::rebuildSolver and glRow do for key 3: the lab's display triangles
+        // (PatchView::hemicubeGeometry), near distance kNearFraction × the mesh's radius, the
+        // delta table's resolution; patch rows and group rows both drawn by GL, on this thread.
+        std::unique_ptr<wb::HeadlessContext> glContext;
+        std::unique_ptr<wb::GlHemicube> glHemicube;
+        ItemBuffer glItems;
+        double glNear = 0.0;
+        if (st.method == "gl") {
+            glContext = std::make_unique<wb::HeadlessContext>(64, 64); // the hemicube has its own FBO
+            if (!glContext->ok()) {
+                std::cerr << "radiosity_reference: no OSMesa context for the GL hemicube\n";
+                return 1;
+            }
+            wb::PatchView view;
+            view.setMesh(mesh);
+            std::vector<glm::vec3> verts;
+            std::vector<uint32_t> items;
+            view.hemicubeGeometry(verts, items);
+            glHemicube = std::make_unique<wb::GlHemicube>();
+            std::string err;
+            if (!glHemicube->setGeometry(verts, items, err)) {
+                std::cerr << "radiosity_reference: " << err << "\n";
+                return 1;
+            }
+            glm::dvec3 lo(1e300), hi(-1e300);
+            for (const glm::dvec3& v : mesh.vertices) {
+                lo = glm::min(lo, v);
+                hi = glm::max(hi, v);
+            }
+            glNear = wb::GlHemicube::kNearFraction * std::max(0.5 * glm::length(hi - lo), 1e-9);
+        }
+        auto glRow = [&](const HemicubeFrame& frame, int self, std::vector<float>& out) {
+            std::string err;
+            const int res = ffp->deltaTable().resolution;
+            if (!glHemicube->render(frame, res, glNear, glItems, err)) throw std::runtime_error(err);
+            accumulate(glItems, ffp->deltaTable(), static_cast<int>(mesh.patches.size()), self, out);
+        };
+        if (st.method == "gl") {
+            fc.rowProvider = [&](int i, std::vector<float>& out) { glRow(hemicubeFrame(mesh, i), i, out); };
+            fc.groupRowProvider = [&](int, const HemicubeFrame& fr, std::vector<float>& out) { glRow(fr, -1, out); };
         }
         // grouprays: lab 08's rays method (key 1) with shooting groups: each receiver gathers
         // from the group's outline (core/radiosity/point_rays.h), as the lab's provider does.
-        const FormFactors* ffp = nullptr;
         if (st.method == "grouprays")
             fc.groupRowProvider = [&mesh, &ffp, k = st.resOrK](int g, const HemicubeFrame&,
                                                                std::vector<float>& out) {

@@ -279,6 +279,19 @@ std::vector<std::vector<glm::dvec2>> contactTriangles(const Scene& scene, const 
     return out;
 }
 
+// A patch with T-vertices on its outline is drawn as a fan from a vertex at its centre
+// (displayTriangles): that vertex, at the patch's centroid, on its surface, at the mean of its
+// lattice corners. Given by build() (T-vertices of finer neighbours) and by stitch() (seam
+// vertices of another surface).
+void addCentreVertex(PatchMesh& mesh, Patch& p) {
+    glm::dvec2 l(0.0);
+    for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
+    p.centreVertex = static_cast<int>(mesh.vertices.size());
+    mesh.vertices.push_back(p.centre);
+    mesh.vertexSurface.push_back(p.surface);
+    mesh.vertexLattice.push_back(l);
+}
+
 // Stitching where surfaces meet (issue 19 item 10): along an edge of one surface that lies on
 // another (a block's bottom edge on the floor, a wall's bottom edge on the floor's border, the
 // block's faces at its corners, the ceiling's pieces around the light), each side's vertices
@@ -286,7 +299,7 @@ std::vector<std::vector<glm::dvec2>> contactTriangles(const Scene& scene, const 
 // get one position. Display triangles then meet vertex to vertex across surfaces: no
 // T-junction, so the rasteriser leaves no pixel open between them (a crack showing the
 // background or a body's inside). Vertices stay per surface (smoothing never mixes surfaces).
-void stitch(PatchMesh& mesh) {
+void stitch(PatchMesh& mesh, bool coplanarOnly) {
     mesh.seamVertices.clear();
     const std::size_t nv0 = mesh.vertices.size();
     std::vector<int> parent(nv0);
@@ -331,6 +344,7 @@ void stitch(PatchMesh& mesh) {
                 if (ss == st) continue;
                 const auto& d = mesh.surfaces[ss].vertices;
                 const glm::dvec3 n = polygonNormal(d);
+                if (coplanarOnly && glm::dot(n, polygonNormal(c)) < 1.0 - 1e-9) continue;
                 if (std::abs(glm::dot(a - d[0], n)) > tol || std::abs(glm::dot(b - d[0], n)) > tol) continue;
                 const glm::dvec3 mid = 0.5 * (a + b);
                 bool in = true;
@@ -419,13 +433,7 @@ void stitch(PatchMesh& mesh) {
     }
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
         Patch& p = mesh.patches[i];
-        if (!grown[i] || p.centreVertex >= 0) continue;
-        glm::dvec2 l(0.0);
-        for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
-        p.centreVertex = static_cast<int>(mesh.vertices.size());
-        mesh.vertices.push_back(p.centre);
-        mesh.vertexSurface.push_back(p.surface);
-        mesh.vertexLattice.push_back(l);
+        if (grown[i] && p.centreVertex < 0) addCentreVertex(mesh, p);
     }
 }
 
@@ -525,16 +533,11 @@ void build(PatchMesh& mesh, const std::vector<PatchDesc>& descs) {
             between(p, p.surface, a, b, 12);
         }
         p.centreVertex = -1;
-        if (p.outline.size() > static_cast<std::size_t>(p.cornerCount)) {
-            glm::dvec2 l(0.0);
-            for (int k = 0; k < p.cornerCount; ++k) l += p.lattice[static_cast<std::size_t>(k)] / double(p.cornerCount);
-            p.centreVertex = static_cast<int>(mesh.vertices.size());
-            mesh.vertices.push_back(p.centre);
-            mesh.vertexSurface.push_back(p.surface);
-            mesh.vertexLattice.push_back(l);
-        }
+        if (p.outline.size() > static_cast<std::size_t>(p.cornerCount)) addCentreVertex(mesh, p);
     }
-    if (mesh.conforming) stitch(mesh);
+    // The grid mesh stitches pieces of one plane (a ceiling around its lamps): their shared
+    // edges are cut differently on each side, and the T-junctions left 1 px cracks.
+    stitch(mesh, !mesh.conforming);
     // Shooting groups: numbered densely (a triangle's grid leaves some coarse cells empty),
     // then members, area, centroid; the frame comes from the surface.
     std::map<int, int> dense;
@@ -574,18 +577,21 @@ bool metFromBehind(const PatchBvh& bvh, const glm::dvec3& o, const glm::dvec3& d
 // A point of a surface is covered when it lies inside a body (the floor under a block, which
 // has no bottom face): the first surface along its normal is met from behind, and so it is
 // along grazing directions. The grazing rays tell a body standing on the surface (they meet
-// its sides from inside) from one hanging just off it: the classroom's ceiling lamps hang
-// 2 cm under the ceiling with no top face, and the ceiling above them, tested along the
-// normal only, was dropped and showed the background through the gap (the crack census:
-// 852 px). 88° from the normal leaves a 2 cm gap within 2/tan(2°) = 57 cm of a lamp's edge,
-// wider than the lamps; 60° covers bodies the grazing rays would pass under. Eight azimuths.
+// its sides from inside) from one hanging just off it: a panel hanging 2 cm under a ceiling
+// with no top face (the classroom's lamps until the fifth session), tested along the normal
+// only, had the ceiling above it dropped, which showed the background through the gap (the
+// crack census: 852 px). 88° from the normal leaves a 2 cm gap within 2/tan(2°) = 57 cm of a
+// panel's edge; 60° covers bodies the grazing rays would pass under. Eight azimuths.
+// A body whose top is another body's face turned towards it (a table's side panel, closed by
+// the table top's underside, which faces down into it) is met from the front along the
+// normal: there every ray at 88° meeting a back face marks it covered (a floor patch of the
+// classroom whose centre fell inside a panel, 2 cm thick, was drawn black in flat mode).
 bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
     const glm::dvec3 o = p + 1e-7 * (1.0 + glm::length(p)) * n;
-    if (!metFromBehind(bvh, o, n)) return false;
     const glm::dvec3 a = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
     const glm::dvec3 t1 = glm::normalize(glm::cross(n, a)), t2 = glm::cross(n, t1);
     constexpr double kPi = 3.14159265358979323846;
-    for (const double elevation : {60.0, 88.0}) {
+    auto ring = [&](double elevation) {
         const double polar = elevation * kPi / 180.0;
         for (int k = 0; k < 8; ++k) {
             const double phi = k * kPi / 4.0;
@@ -593,8 +599,10 @@ bool covered(const PatchBvh& bvh, const glm::dvec3& p, const glm::dvec3& n) {
                                  std::sin(polar) * (std::cos(phi) * t1 + std::sin(phi) * t2);
             if (!metFromBehind(bvh, o, d)) return false;
         }
-    }
-    return true;
+        return true;
+    };
+    if (!metFromBehind(bvh, o, n)) return ring(88.0);
+    return ring(60.0) && ring(88.0);
 }
 
 glm::dvec3 pointOn(const std::vector<glm::dvec3>& c, double u, double v) {
@@ -603,6 +611,63 @@ glm::dvec3 pointOn(const std::vector<glm::dvec3>& c, double u, double v) {
         return c[0] + su * (1 - v) * (c[1] - c[0]) + su * v * (c[2] - c[0]);
     }
     return (1 - u) * (1 - v) * c[0] + u * (1 - v) * c[1] + u * v * c[2] + (1 - u) * v * c[3];
+}
+
+// The exposed part of a patch whose 8×8 exposure samples all lie inside a body, found from
+// its corners: where a body's footprint edge cuts a corner (or a strip) off the patch narrower
+// than the samples' 1/16 inset, that sliver showed the background through a 1 px hole beside
+// the Cornell box's short block (the crack census) when the patch was dropped. A convex
+// footprint that covers every corner of a convex patch covers the whole patch, so a sliver
+// has an exposed corner. The exposed polygon is the exposed corners plus, on each edge between
+// an exposed and a covered corner, the point where the cover begins (bisection to 2^-40 of the
+// edge): exact for one straight footprint edge crossing the patch. Returns false when every
+// corner is covered (the patch is dropped, as before); else its exposed area and centroid.
+// "Covered" here is "under a body's top" (the normal ray met from behind), as mesh_test's
+// edge checks ask: these points lie within a hair of a footprint's border, where covered()'s
+// grazing rays can leave past the body's side at its foot (the conforming mesh's triangles
+// inside a footprint, their corners on its border, read as exposed by it).
+bool exposedSliver(const PatchBvh& bvh, const std::vector<glm::dvec3>& c, const glm::dvec3& n, double& area,
+                   glm::dvec3& centroid) {
+    glm::dvec3 mid(0.0);
+    for (const glm::dvec3& q : c) mid += q / static_cast<double>(c.size());
+    // A point of the patch just inside from x, 1e-3 of the way to the middle (~20 µm on the
+    // lab's patches): a corner on a footprint's border is decided by the side the patch lies on.
+    auto inset = [&](const glm::dvec3& x) { return x + 1e-3 * (mid - x); };
+    auto under = [&](const glm::dvec3& x) { return metFromBehind(bvh, x + 1e-7 * (1.0 + glm::length(x)) * n, n); };
+    std::vector<char> open(c.size());
+    bool any = false;
+    for (std::size_t k = 0; k < c.size(); ++k) any |= (open[k] = !under(inset(c[k]))) != 0;
+    if (!any) return false;
+    std::vector<glm::dvec3> poly;
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        const std::size_t k1 = (k + 1) % c.size();
+        if (open[k]) poly.push_back(inset(c[k]));
+        if (open[k] == open[k1]) continue;
+        double lo = 0.0, hi = 1.0; // lo: on open[k]'s side, hi: on open[k1]'s side
+        for (int it = 0; it < 40; ++it) {
+            const double t = 0.5 * (lo + hi);
+            (!under(inset(c[k] + t * (c[k1] - c[k]))) == (open[k] != 0) ? lo : hi) = t;
+        }
+        poly.push_back(inset(c[k] + (open[k] ? lo : hi) * (c[k1] - c[k])));
+    }
+    area = poly.size() >= 3 ? polygonArea(poly) : 0.0;
+    if (!(area > 0.0)) return false;
+    glm::dvec3 sum(0.0);
+    double wsum = 0.0;
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+        const double a = 0.5 * glm::length(glm::cross(poly[k] - poly[0], poly[k + 1] - poly[0]));
+        sum += a * (poly[0] + poly[k] + poly[k + 1]) / 3.0;
+        wsum += a;
+    }
+    centroid = sum / wsum;
+    // The centroid of a non-convex exposed part may lie under the body: an exposed corner then.
+    if (under(centroid))
+        for (std::size_t k = 0; k < c.size(); ++k)
+            if (open[k]) {
+                centroid = inset(c[k]);
+                break;
+            }
+    return true;
 }
 
 // Builds the mesh, then fits it to where bodies stand on surfaces (issue 19 item 10: black
@@ -619,6 +684,7 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
     const std::size_t n = mesh.patches.size();
     std::vector<double> fraction(n, 1.0);
     std::vector<glm::dvec3> centre(n);
+    for (std::size_t i = 0; i < n; ++i) centre[i] = mesh.patches[i].centre;
     {
         const PatchBvh bvh(mesh);
         for (std::size_t i = 0; i < n; ++i) {
@@ -642,8 +708,17 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
                     open.push_back(q);
                 }
             fraction[i] = static_cast<double>(hits) / (g * g);
-            if (hits == 0) continue;
+            if (hits == 0) {
+                double exposed = 0.0;
+                if (exposedSliver(bvh, c, p.normal, exposed, centre[i])) fraction[i] = exposed / p.area;
+                continue;
+            }
             centre[i] = sum / static_cast<double>(hits);
+            // Every sample open but the centre itself inside a body (a floor patch whose centre
+            // falls inside a table's 2 cm side panel, between the samples): the centre moves
+            // to the nearest sample, the area stays whole. Else a wholly open patch keeps its
+            // centroid.
+            if (hits == g * g) centre[i] = p.centre;
             if (covered(bvh, centre[i], p.normal)) { // a non-convex exposed part: its nearest sample
                 glm::dvec3 best = open.front();
                 for (const glm::dvec3& q : open)
@@ -668,8 +743,8 @@ void buildFitted(PatchMesh& mesh, std::vector<PatchDesc>& descs, std::vector<int
     }
     bool any = false;
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
-        if (fit[i].first == 1.0) continue;
         Patch& p = mesh.patches[i];
+        if (fit[i].first == 1.0 && fit[i].second == p.centre) continue;
         p.area *= fit[i].first;
         p.centre = fit[i].second;
         any = true;

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace wb::rad {
 
@@ -44,14 +46,36 @@ void addBox(Scene& s, const V& lo, const V& hi, const V& refl, const std::string
 }
 
 // The inside of an axis-aligned room [lo, hi]: 6 faces, normals inwards. `ceilingHoles`
-// lists rectangles (x0, z0, x1, z1) cut out of the ceiling (for lamps set into it).
+// lists rectangles (x0, z0, x1, z1) cut out of the ceiling, for lamps set into it: the ceiling
+// is then several rectangles, cut in bands along z at the holes' edges, each band's pieces
+// between the holes along x (the 6 classroom lamps: 11 pieces).
 void addRoom(Scene& s, const V& lo, const V& hi, const V& wall, const V& floorR, const V& ceil,
-             const V& whiteWall) {
+             const V& whiteWall, const std::vector<std::array<double, 4>>& ceilingHoles = {}) {
     const V c = 0.5 * (lo + hi);
     s.surfaces.push_back(face({{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, lo.y, hi.z}, {lo.x, lo.y, hi.z}},
                               floorR, V(0.0), "floor", c));
-    s.surfaces.push_back(face({{lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}},
-                              ceil, V(0.0), "ceiling", c));
+    std::vector<double> zs{lo.z, hi.z};
+    for (const auto& h : ceilingHoles) {
+        zs.push_back(h[1]);
+        zs.push_back(h[3]);
+    }
+    std::sort(zs.begin(), zs.end());
+    zs.erase(std::unique(zs.begin(), zs.end()), zs.end());
+    for (std::size_t b = 0; b + 1 < zs.size(); ++b) {
+        const double z0 = zs[b], z1 = zs[b + 1];
+        std::vector<std::pair<double, double>> cut; // holes spanning this band, along x
+        for (const auto& h : ceilingHoles)
+            if (h[1] <= z0 && h[3] >= z1) cut.emplace_back(h[0], h[2]);
+        std::sort(cut.begin(), cut.end());
+        double x = lo.x;
+        cut.emplace_back(hi.x, hi.x);
+        for (const auto& [x0, x1] : cut) {
+            if (x0 > x)
+                s.surfaces.push_back(face({{x, hi.y, z0}, {x0, hi.y, z0}, {x0, hi.y, z1}, {x, hi.y, z1}}, ceil,
+                                          V(0.0), "ceiling", c));
+            x = std::max(x, x1);
+        }
+    }
     s.surfaces.push_back(face({{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z}},
                               wall, V(0.0), "front wall", c));
     s.surfaces.push_back(face({{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}},
@@ -201,17 +225,25 @@ Scene classroom() {
     const V wall(0.70, 0.66, 0.52), floorR(0.35, 0.33, 0.30), ceil(0.80, 0.80, 0.78),
         white(0.80, 0.80, 0.80), wood(0.55, 0.38, 0.22), red(0.75, 0.08, 0.06);
     const V lo(0, 0, 0), hi(8, 3, 6);
-    addRoom(s, lo, hi, wall, floorR, ceil, white);
-    // Ceiling lamps: 2 × 3 fluorescent panels 1.2 × 0.3 m, 2 cm below the ceiling, facing down
-    // (their backs block the ceiling just above them, as a fitting does).
+    // Ceiling lamps: 2 × 3 fluorescent panels 1.2 × 0.3 m set into the ceiling, facing down.
+    // Seed 002 §1.13: "потолок получает очень мало света от закреплённых на нём ламп" — in the
+    // ceiling's plane they give it none directly, as a recessed fitting. (They hung 2 cm below
+    // it before: the ceiling over a lamp saw the lamp's dark back, and in flat mode the coarse
+    // ceiling patch straddling a lamp's edge showed as a dark strip beside every lamp.)
+    std::vector<std::array<double, 4>> holes;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 2; ++j) {
-            const double x = 1.5 + 2.5 * i, z = 1.8 + 2.4 * j, y = 2.98;
-            s.surfaces.push_back(face({{x - 0.6, y, z - 0.15}, {x + 0.6, y, z - 0.15},
-                                       {x + 0.6, y, z + 0.15}, {x - 0.6, y, z + 0.15}},
-                                      V(0.5), V(12.0, 12.0, 11.0),
-                                      "lamp " + std::to_string(i * 2 + j), V(x, 0, z)));
+            const double x = 1.5 + 2.5 * i, z = 1.8 + 2.4 * j;
+            holes.push_back({x - 0.6, z - 0.15, x + 0.6, z + 0.15});
         }
+    addRoom(s, lo, hi, wall, floorR, ceil, white, holes);
+    for (std::size_t k = 0; k < holes.size(); ++k) {
+        const auto& h = holes[k];
+        const double y = hi.y;
+        s.surfaces.push_back(face({{h[0], y, h[1]}, {h[2], y, h[1]}, {h[2], y, h[3]}, {h[0], y, h[3]}}, V(0.5),
+                                  V(12.0, 12.0, 11.0), "lamp " + std::to_string(k),
+                                  V(0.5 * (h[0] + h[2]), 0, 0.5 * (h[1] + h[3]))));
+    }
     // Two rows of three tables.
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 2; ++j)

@@ -31,9 +31,9 @@ MeshConfig conforming(double maxEdge) {
 namespace {
 // The test's own "inside a body": the first surface is met from behind along the normal and
 // along 64 seeded directions uniform over the hemisphere (mesh.cpp looks along two fixed rings
-// instead). A panel hanging just off a surface is no body: from the classroom's ceiling above
-// a lamp, 2 cm over it, directions more than ~82° from the normal (14% of the hemisphere)
-// leave through the gap.
+// instead). A panel hanging just off a surface is no body: from a ceiling above a panel 2 cm
+// under it (the classroom's lamps until the fifth session; now the test below), directions
+// more than ~82° from the normal (14% of the hemisphere) leave through the gap.
 bool metFromBehind(const PatchBvh& bvh, const glm::dvec3& o, const glm::dvec3& d) {
     return bvh.nearestPatch(o, d, 0.0, 1e4) < 0 && !bvh.visible(o, o + 1e4 * d);
 }
@@ -78,9 +78,10 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
         // Patches tile their surface: areas add up (rounding of ~1e4 additions: 1e-12), except
         // where a body covers the surface (buildFitted counts only the exposed part, sampled
         // 8×8 per patch): the Cornell floor under the blocks, the sliver of its back wall behind
-        // the red wall, the classroom's floor under the red box (not its ceiling over the lamps, which hang 2 cm
-        // below it: no body, the ceiling there is seen through the gap),
-        // the floor lamp's floor under its pole (a table panel is open at the top: not a body).
+        // the red wall, the classroom's floor under the red box (its ceiling is whole: the lamps are
+        // set into it, in holes),
+        // the floor lamp's floor under its pole, the classroom's floor under the table panels
+        // and the tops' undersides over them (a panel is closed by the top's underside).
         for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
             const double full = polygonArea(s.surfaces[k].vertices);
             const std::string& name = s.surfaces[k].name;
@@ -95,9 +96,19 @@ TEST_CASE("meshing: edge lengths, areas, normals") {
             } else if (s.name == "Cornell box" && name == "back wall") {
                 CHECK(area[k] == Approx(full).epsilon(3e-3)); // the sliver is 8.8e-4 m² of 0.303
             } else if (s.name == "classroom" && name == "floor") {
-                CHECK(area[k] == Approx(full - 0.36).epsilon(1e-12)); // the 0.6 × 0.6 m box
+                // The 0.6 × 0.6 m box, and at most the 12 table panels' 2 × 50 cm footprints
+                // (bodies closed by the top's underside: mesh.cpp covered(); sampled 8×8, so
+                // partly: measured 2.4e-4 m² of 0.12 at 0.4 m).
+                CHECK(area[k] <= full - 0.36 + 1e-9);
+                CHECK(area[k] >= full - 0.36 - 12 * 0.02 * 0.5);
+            } else if (name.find("top bottom") != std::string::npos) {
+                // The underside over its two panels' 2 × 50 cm tops (measured 4e-5 m²).
+                CHECK(area[k] <= full * (1 + 1e-12));
+                CHECK(area[k] >= full - 2 * 0.02 * 0.5);
             } else if (s.name == "floor lamp" && name == "floor") {
-                CHECK(area[k] == Approx(full - 0.04 * 0.04).epsilon(1e-12)); // the lamp's 4 cm pole
+                // The lamp's 4 cm pole, and at most its table's two panel footprints.
+                CHECK(area[k] <= full - 0.04 * 0.04 + 1e-9);
+                CHECK(area[k] >= full - 0.04 * 0.04 - 2 * 0.02 * 0.5);
             } else {
                 CHECK(area[k] == Approx(full).epsilon(1e-12));
             }
@@ -119,6 +130,80 @@ TEST_CASE("meshing: no patch is seen from inside a body (no black blotches at th
             CHECK(inside == 0);
         }
     }
+}
+
+TEST_CASE("meshing: no patch centre inside a table's side panel (the classroom's grid mesh)") {
+    // A table's side panel is a 2 cm slab closed at the top by the table top's underside, which
+    // faces down into it: from inside, the normal ray meets a front face, so 'inside a body'
+    // along the normal (and the test's own coveredPoint) says no. At the lab's edge (0.2877 m,
+    // 3,814 patches, the fifth session's classroom) four floor patches had their centre 7 mm
+    // inside a panel, between their 8×8 exposure samples: their hemicube / rays looked at the
+    // panel's inside and flat mode drew them black beside two tables. Checked geometrically
+    // here for the floor's patches: the slab between each panel's (-x) and (+x) faces.
+    const Scene s = classroom();
+    struct Slab {
+        glm::dvec3 lo, hi;
+    };
+    std::vector<Slab> slabs;
+    for (std::size_t k = 0; k < s.surfaces.size(); ++k) {
+        const std::string& name = s.surfaces[k].name;
+        if (name.size() < 4 || name.compare(name.size() - 4, 4, "(-x)") != 0 || name.find("panel") == std::string::npos)
+            continue;
+        glm::dvec3 lo(1e300), hi(-1e300);
+        for (const std::string& side : {std::string("(-x)"), std::string("(+x)")})
+            for (const Surface& f : s.surfaces)
+                if (f.name == name.substr(0, name.size() - 4) + side)
+                    for (const glm::dvec3& v : f.vertices) {
+                        lo = glm::min(lo, v);
+                        hi = glm::max(hi, v);
+                    }
+        slabs.push_back({lo, hi});
+    }
+    REQUIRE(slabs.size() == 12); // 6 tables × 2 panels
+    for (double edge : {0.2, 0.28765, 0.4}) {
+        const PatchMesh m = meshScene(s, {edge, 4.25 * edge});
+        int inside = 0;
+        for (const Patch& p : m.patches)
+            for (const Slab& b : slabs)
+                if (m.surfaces[static_cast<std::size_t>(p.surface)].name == "floor" && p.centre.x > b.lo.x && p.centre.x < b.hi.x && p.centre.z > b.lo.z && p.centre.z < b.hi.z &&
+                    p.centre.y < b.hi.y) {
+                    ++inside;
+                    UNSCOPED_INFO(m.surfaces[static_cast<std::size_t>(p.surface)].name << " patch at " << p.centre.x << ", " << p.centre.y << ", " << p.centre.z);
+                }
+        INFO("classroom, grid mesh, edge " << edge << ": " << m.patches.size() << " patches");
+        CHECK(inside == 0);
+    }
+}
+
+TEST_CASE("meshing: a ceiling over a panel hanging 2 cm below it keeps its area") {
+    // The rule in mesh.cpp covered() for a panel hanging just off a surface (no body: the
+    // ceiling over it is seen through the gap), kept since the classroom's lamps were set into
+    // its ceiling (fifth session): a 2 m room with a 0.6 × 0.3 m emitting panel 2 cm under the
+    // ceiling, facing down. Tested along the normal only, the ceiling over the panel was
+    // dropped (the classroom's 852 px crack).
+    Scene s;
+    s.name = "hanging panel";
+    s.closed = true;
+    const glm::dvec3 c(1.0);
+    auto quad = [&](glm::dvec3 a, glm::dvec3 b, glm::dvec3 cc, glm::dvec3 d, const std::string& name, glm::dvec3 e,
+                    glm::dvec3 toward) {
+        std::vector<glm::dvec3> v{a, b, cc, d};
+        if (glm::dot(polygonNormal(v), toward - 0.25 * (a + b + cc + d)) < 0) std::reverse(v.begin(), v.end());
+        s.surfaces.push_back({v, glm::dvec3(0.5), e, name});
+    };
+    quad({0, 0, 0}, {2, 0, 0}, {2, 0, 2}, {0, 0, 2}, "floor", glm::dvec3(0), c);
+    quad({0, 2, 0}, {2, 2, 0}, {2, 2, 2}, {0, 2, 2}, "ceiling", glm::dvec3(0), c);
+    quad({0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, "wall z0", glm::dvec3(0), c);
+    quad({0, 0, 2}, {2, 0, 2}, {2, 2, 2}, {0, 2, 2}, "wall z2", glm::dvec3(0), c);
+    quad({0, 0, 0}, {0, 2, 0}, {0, 2, 2}, {0, 0, 2}, "wall x0", glm::dvec3(0), c);
+    quad({2, 0, 0}, {2, 2, 0}, {2, 2, 2}, {2, 0, 2}, "wall x2", glm::dvec3(0), c);
+    quad({0.7, 1.98, 0.85}, {1.3, 1.98, 0.85}, {1.3, 1.98, 1.15}, {0.7, 1.98, 1.15}, "panel", glm::dvec3(10),
+         glm::dvec3(1, 0, 1));
+    const PatchMesh m = meshScene(s, {0.1, 0.0});
+    double ceiling = 0.0;
+    for (const Patch& p : m.patches)
+        if (m.surfaces[static_cast<std::size_t>(p.surface)].name == "ceiling") ceiling += p.area;
+    CHECK(ceiling == Approx(4.0).epsilon(1e-12));
 }
 
 TEST_CASE("meshing: a ray census finds no crack between patches that share an edge") {
