@@ -685,8 +685,12 @@ void RadiosityLab::startRun() {
 void RadiosityLab::stopRun() {
     cancel_ = true;
     if (worker_.joinable()) worker_.join();
-    if (mainThreadRun_) runSeconds_ = secondsSince(runStart_);
+    // A worker's run reports its own end; a GL run stopped between slices has no one else to
+    // say so (a key stopping it printed nothing).
+    const bool stoppedGlRun = mainThreadRun_;
+    if (stoppedGlRun) runSeconds_ = secondsSince(runStart_);
     mainThreadRun_ = false;
+    if (stoppedGlRun && model_) reportRun();
     previewPhase_ = false;
     skipSlice_ = false;
     running_ = false;
