@@ -263,9 +263,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         constexpr int kz = decltype(kzC)::value;
                         constexpr int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
                         for (int j = 0; j < 3; ++j) {
-                            const __m128 X = _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kx][i]), r.to[0]);
-                            const __m128 Y = _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + ky][i]), r.to[1]);
-                            const __m128 Z = _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kz][i]), r.to[2]);
+                            const __m128 X =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kx][i]), r.to[0]);
+                            const __m128 Y =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + ky][i]), r.to[1]);
+                            const __m128 Z =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kz][i]), r.to[2]);
                             px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
                             py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
                         }

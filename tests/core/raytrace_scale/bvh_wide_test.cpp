@@ -998,7 +998,8 @@ TEST_CASE("rt_bvh_wide: rays meeting primitives on the root box's faces, edges a
     for (int i = 0; i < 600; ++i) {
         // A point on the box's surface: a corner, a point on an edge or on a face.
         glm::dvec3 q;
-        for (int a = 0; a < 3; ++a) q[a] = (g() & 1) ? hi[a] : lo[a];
+        for (int a = 0; a < 3; ++a)
+            q[a] = (g() & 1) ? hi[a] : lo[a];
         const int kind = i % 3, a0 = int(g() % 3);
         if (kind >= 1) q[a0] = lo[a0] + u(g) * (hi[a0] - lo[a0]);
         if (kind == 2) {
