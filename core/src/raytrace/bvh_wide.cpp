@@ -406,9 +406,22 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         stats_.wideNodes = 0;
         return;
     }
+    // The root node's float child boxes, united (empty slots are inverted infinite boxes
+    // and add nothing): the walk's first test of a ray (initRay).
+    auto rootBox = [this](const auto& root, int w) {
+        for (int a = 0; a < 3; ++a) {
+            rootF_[0][a] = root.lo[a][0];
+            rootF_[1][a] = root.hi[a][0];
+            for (int c = 1; c < w; ++c) {
+                rootF_[0][a] = std::min(rootF_[0][a], root.lo[a][c]);
+                rootF_[1][a] = std::max(rootF_[1][a], root.hi[a][c]);
+            }
+        }
+    };
     if (pc.width == 8) {
         wnodes8_.reserve(std::min<std::size_t>(count / 7 + 1, 4096)); // the top; tasks append
         collapseInto<8>(buildNodes, wnodes8_, arrays, fill);
+        rootBox(wnodes8_[0], 8); // before quantiseNodes empties wnodes8_
         stats_.wideNodes = int(wnodes8_.size());
         stats_.nodeBytes = wnodes8_.size() * sizeof(WideNode8);
         // The collapse's output stage: the node layout (BvhNodes). Auto keeps float nodes
@@ -423,6 +436,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     } else {
         wnodes_.reserve(std::min<std::size_t>(count / 3 + 1, 4096));
         collapseInto<4>(buildNodes, wnodes_, arrays, fill);
+        rootBox(wnodes_[0], 4);
         stats_.wideNodes = int(wnodes_.size());
         stats_.nodeBytes = wnodes_.size() * sizeof(WideNode);
     }

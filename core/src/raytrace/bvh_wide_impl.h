@@ -95,7 +95,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
         bool triReady = false;
         TriangleShear sh; // in double: the exact tests of plain triangles reuse it
-        int k[3];         // sh's axes
+        int k[3];         // the filter's axes: sh.kz last, the other two in cyclic order
         __m128 to[3], shx, shy, tom;
 
         void sphereSetup() {
@@ -112,15 +112,25 @@ template <class L, bool Q> struct Bvh::WideWalk {
             // The watertight test's axes and shear (inline: compiled into this walk), the
             // same bits as Triangle::intersect's, which the exact tests reuse.
             sh = triangleShear(d);
-            k[0] = sh.kx;
-            k[1] = sh.ky;
+            // The float filter's axes: kz and the next two in cyclic order, whatever the
+            // sign of d[kz] (the exact test swaps kx and ky when it is negative, to keep the
+            // winding). The filter's verdict is the same either way: the swap exchanges px
+            // and py (the same operations on the same values), so u, v, w change sign
+            // exactly (a − b = −(b − a) in IEEE) and "one surely negative, another surely
+            // positive" is unchanged, as are q and e. One order per kz lets the leaf test
+            // index the vertex arrays by constants (visitLeaf: 3 kinds of triangle test).
             k[2] = sh.kz;
+            k[0] = sh.kz == 2 ? 0 : sh.kz + 1;
+            k[1] = k[0] == 2 ? 0 : k[0] + 1;
+            const bool swapped = sh.kx != k[0];
             const double* op = &o.x; // glm's operator[] would switch on the index
-            to[0] = _mm_set1_ps(float(op[sh.kx]));
-            to[1] = _mm_set1_ps(float(op[sh.ky]));
-            to[2] = _mm_set1_ps(float(op[sh.kz]));
-            shx = _mm_set1_ps(float(sh.sx));
-            shy = _mm_set1_ps(float(sh.sy));
+            to[0] = _mm_set1_ps(float(op[k[0]]));
+            to[1] = _mm_set1_ps(float(op[k[1]]));
+            to[2] = _mm_set1_ps(float(op[k[2]]));
+            // sh.sx = d[sh.kx]/d[kz], sh.sy = d[sh.ky]/d[kz]: the shear of axis k[0] is sh.sx
+            // unless swapped.
+            shx = _mm_set1_ps(float(swapped ? sh.sy : sh.sx));
+            shy = _mm_set1_ps(float(swapped ? sh.sx : sh.sy));
             tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
                               bvh_detail::kTriMargin);
             triReady = true;
@@ -244,18 +254,31 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // only when one is surely negative and another surely positive: e bounds
                     // their float error (inputs off by δ after rounding vertices and origin,
                     // the shear and the differences; products and their difference rounded).
+                    // The vertex arrays are picked by constants, one instance per kz (issue
+                    // 21: indexing them by the ray's axes took ~30 of a run's ~120
+                    // instructions in address arithmetic).
                     __m128 px[3], py[3];
                     const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-                    for (int j = 0; j < 3; ++j) {
-                        const __m128 X =
-                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[0]][i]), r.to[0]);
-                        const __m128 Y =
-                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[1]][i]), r.to[1]);
-                        const __m128 Z =
-                            _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + r.k[2]][i]), r.to[2]);
-                        px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
-                        py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
-                    }
+                    auto edges = [&](auto kzC) __attribute__((always_inline)) {
+                        constexpr int kz = decltype(kzC)::value;
+                        constexpr int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+                        for (int j = 0; j < 3; ++j) {
+                            const __m128 X =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kx][i]), r.to[0]);
+                            const __m128 Y =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + ky][i]), r.to[1]);
+                            const __m128 Z =
+                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kz][i]), r.to[2]);
+                            px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
+                            py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
+                        }
+                    };
+                    if (r.k[2] == 0)
+                        edges(std::integral_constant<int, 0>{});
+                    else if (r.k[2] == 1)
+                        edges(std::integral_constant<int, 1>{});
+                    else
+                        edges(std::integral_constant<int, 2>{});
                     const __m128 u = _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
                     const __m128 v = _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
                     const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
@@ -311,10 +334,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
     __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
                                                         float* invFar, float* on, float* of) {
-        const __m128 fd = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.direction[2])));
-        const __m128 fo = _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
-                                        _mm_cvtpd_ps(_mm_load_sd(&ray.origin[2])));
+        const __m128d zero = _mm_setzero_pd();
+        const __m128 fd =
+            _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
+                          _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&ray.direction[1]), zero)));
+        const __m128 fo =
+            _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.origin[0])),
+                          _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&ray.origin[1]), zero)));
         const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
         const __m128 sgnEps =
             _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
@@ -333,37 +359,78 @@ template <class L, bool Q> struct Bvh::WideWalk {
             _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
     }
 
+    // A ray's RayData fields that initRay and the packets' joinPacket both set: the plane
+    // offsets and axis signs of `signs` (bit a: d[a] < 0), the float-walk flag, the ray in
+    // double (copied from the Ray: with initRay's register copies passed instead, GCC 12
+    // moved a register with the vmovq valgrind 3.19 cannot decode, see floatRay).
+    __attribute__((always_inline)) static void setRayData(RayData& r, int signs, bool useFloat,
+                                                          const Ray& ray) {
+        r.off = kOffsets.v[signs];
+        for (int a = 0; a < 3; ++a)
+            r.neg[a] = (signs >> a) & 1;
+        r.useFloat = useFloat;
+        r.o = ray.origin;
+        r.d = ray.direction;
+    }
+
     // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set); its
     // float values come from floatRay (the packets' lanes: joinPacket, the same operations).
-    __attribute__((always_inline)) static void initRay(RayData& r, const Ray& ray, double tMin) {
-        const glm::dvec3 o = ray.origin, d = ray.direction;
+    // False: a float ray that surely misses the root node's boxes (b.rootF_, their union) on
+    // (tMin, limit], before its lanes are set up (issue 21: on the mesh bench, 55% of the eye
+    // rays miss the whole mesh's box, and their set-up and one node test were most of their
+    // cost). The test is the node test's, on the union box: its near planes are at or
+    // before every child's and its far planes at or after, and rounding is monotonic, so
+    // its entry is at most every child's entry and its exit at least every child's exit;
+    // a ray the node test would let into a child is never turned away here. Only for
+    // nearest hits (kRoot): any-hit rays (shadow feelers) start on a surface inside the
+    // box, where the test is ~20 instructions of waste (callgrind, mesh shadow rays: +2%).
+    template <bool kRoot>
+    __attribute__((always_inline)) static bool initRay(RayData& r, const Bvh& b, const Ray& ray,
+                                                       double tMin, float limit) {
+        const glm::dvec3 o = ray.origin;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
         const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
-        r.off = kOffsets.v[signs];
-        for (int a = 0; a < 3; ++a)
-            r.neg[a] = (signs >> a) & 1;
-        r.useFloat = ok;
-        r.o = o;
-        r.d = d;
+        setRayData(r, signs, ok, ray);
         if (ok) {
             alignas(16) float inv[4], invFar[4], on[4], of[4];
             floatRay(ray, om, inv, invFar, on, of);
+            const float ftMin = float(tMin);
+            const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
+            if constexpr (kRoot) {
+                // The root box in lanes x, y, z: near planes lo where d >= 0 (the sign bit of
+                // 1/d is d's: r.neg), far planes the other; then the node test's max/min
+                // chains (NaN, 0·inf, gives the accumulated operand: no limit).
+                const __m128 vinv = _mm_load_ps(inv);
+                const __m128 neg = _mm_castsi128_ps(_mm_srai_epi32(_mm_castps_si128(vinv), 31));
+                const __m128 lo = _mm_load_ps(b.rootF_[0]), hi = _mm_load_ps(b.rootF_[1]);
+                const __m128 nearP = _mm_or_ps(_mm_and_ps(neg, hi), _mm_andnot_ps(neg, lo));
+                const __m128 farP = _mm_or_ps(_mm_and_ps(neg, lo), _mm_andnot_ps(neg, hi));
+                const __m128 tn = _mm_mul_ps(_mm_sub_ps(nearP, _mm_load_ps(on)), vinv);
+                const __m128 tf =
+                    _mm_mul_ps(_mm_sub_ps(farP, _mm_load_ps(of)), _mm_load_ps(invFar));
+                __m128 t0 = _mm_max_ss(tn, _mm_set_ss(lowered));
+                __m128 t1 = _mm_min_ss(tf, _mm_set_ss(limit));
+                t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 1), t0);
+                t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 1), t1);
+                t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 2), t0);
+                t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 2), t1);
+                if (!_mm_comile_ss(t0, t1)) return false;
+            }
             for (int a = 0; a < 3; ++a) {
                 r.on[a] = L::set1(on[a]);
                 r.of[a] = L::set1(of[a]);
                 r.inv[a] = L::set1(inv[a]);
                 r.invFar[a] = L::set1(invFar[a]);
             }
-            const float ftMin = float(tMin);
-            const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
             r.tMin = L::set1(lowered);
         } else {
-            r.invd = 1.0 / d;
+            r.invd = 1.0 / ray.direction;
         }
+        return true;
     }
 
     // The walk's limit in float for a nearest hit so far at tMax (widened).
@@ -401,15 +468,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return;
         }
         const std::vector<Node>& nodes = nodesOf(b);
-        RayData r;
-        initRay(r, ray, tMin);
-        const glm::dvec3 o = ray.origin;
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
             const double lim = tMax * kFarScale;
             return lim > 3e38 ? std::numeric_limits<float>::infinity()
                               : float(lim) * (1 + 0x1p-20f);
         };
+        float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
+        RayData r;
+        if (!initRay<!kAnyHit>(r, b, ray, tMin, flim)) return;
+        const glm::dvec3 o = ray.origin;
         struct Entry {
             std::uint32_t child;
             std::uint32_t count;
@@ -417,7 +485,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         };
         Entry stack[kStack];
         int sp = 0;
-        float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         std::uint32_t cur = 0;
         while (true) {
             const Node& nd = nodes[cur];
@@ -690,13 +757,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) continue;
             signs = sg;
             joined |= 1u << j;
-            RayData& r = p.r[j];
-            r.off = kOffsets.v[sg];
-            for (int a = 0; a < 3; ++a)
-                r.neg[a] = (sg >> a) & 1;
-            r.useFloat = true;
-            r.o = o;
-            r.d = d;
+            setRayData(p.r[j], sg, true, ray);
             const double* op = &o.x;
             const double* dp = &d.x;
             for (int a = 0; a < 3; ++a) {

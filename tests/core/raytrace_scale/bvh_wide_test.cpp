@@ -956,3 +956,131 @@ TEST_CASE("rt_bvh_wide: the leaves' float filters keep their margins (hits close
     CHECK(grazes > 60);
     CHECK(edgeHits > 100);
 }
+
+TEST_CASE("rt_bvh_wide: the triangle filter's verdict for every dominant axis and either sign "
+          "of it",
+          "[raytrace][bvh]") {
+    // Issue 21 (branch rtmesh): the leaves' float triangle filter orders its axes as kz and
+    // the next two cyclically for either sign of d[kz], where the exact watertight test swaps
+    // kx and ky when d[kz] < 0 (the swap negates every edge function exactly, so the
+    // verdict is the same). Rays through triangle vertices and edge points ~1000 from the
+    // origin (float rounding moves a coordinate by ~6e-5, far more than the rays' distance
+    // to the edge) arrive along +x, −x, +y, −y, +z and −z: a filter with the shear of the
+    // wrong axis for one of the six (e.g. the swapped shears not exchanged) rejects hits the
+    // plain loop finds.
+    std::mt19937_64 g(2113);
+    Scene s;
+    const glm::dvec3 far{1000.0, -700.0, 600.0};
+    for (int i = 0; i < 120; ++i) {
+        const glm::dvec3 c = far + rnd3(g, -40, 40);
+        s.add(Triangle(c, c + rnd3(g, -2, 2), c + rnd3(g, -2, 2)), 0);
+    }
+    const Refs r(s.primitives);
+    int hits[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    std::uniform_real_distribution<double> u(0, 1);
+    for (const auto& p : s.primitives) {
+        const auto* tp = dynamic_cast<const Triangle*>(p.get());
+        REQUIRE(tp);
+        const glm::dvec3 pts[4] = {tp->v1, 0.5 * (tp->v0 + tp->v1),
+                                   tp->v1 + u(g) * (tp->v2 - tp->v1),
+                                   tp->v2 + u(g) * (tp->v0 - tp->v2)};
+        for (int axis = 0; axis < 3; ++axis)
+            for (int sign = 0; sign < 2; ++sign)
+                for (const glm::dvec3& q : pts) {
+                    glm::dvec3 d = rnd3(g, -0.4, 0.4);
+                    d[axis] = sign ? -1.0 : 1.0; // the dominant axis and its sign
+                    Ray ray;
+                    ray.direction = glm::normalize(d);
+                    ray.origin = q - 1500.0 * ray.direction;
+                    hits[axis][sign] += compareRay(r, ray);
+                }
+    }
+    // Edge rays hit their triangle about half the time; each of the six cases has 480.
+    for (int axis = 0; axis < 3; ++axis)
+        for (int sign = 0; sign < 2; ++sign) {
+            INFO("axis " << axis << " sign " << sign);
+            CHECK(hits[axis][sign] > 100);
+        }
+}
+
+TEST_CASE("rt_bvh_wide: rays meeting primitives on the root box's faces, edges and corners",
+          "[raytrace][bvh]") {
+    // Issue 21 (branch rtmesh): a nearest-hit ray first meets the union of the root node's
+    // float child boxes (Bvh::rootF_) in four lanes and stops there if it misses. Here the
+    // scene's box is attained by primitives: triangles lying in its faces, with vertices
+    // on its edges and at its corners, and spheres touching its faces. Rays from outside
+    // aim at those vertices and edge points, some along the faces' planes (a zero
+    // direction component: 0·inf in the slab test), with tMin and tMax cut at the hit.
+    // A root test without the node test's margins (the origin not widened, or the exit
+    // distances not stretched) loses some of these hits.
+    std::mt19937_64 g(2114);
+    Scene s;
+    const glm::dvec3 lo{-3.25, -1.5, 0.75}, hi{2.5, 4.0, 3.125};
+    const glm::dvec3 mid = 0.5 * (lo + hi);
+    // Two triangles per face, in the face's plane, sharing the face's corners.
+    for (int a = 0; a < 3; ++a)
+        for (int side = 0; side < 2; ++side) {
+            const int b = (a + 1) % 3, c = (a + 2) % 3;
+            glm::dvec3 k[4];
+            for (int m = 0; m < 4; ++m) {
+                k[m][a] = side ? hi[a] : lo[a];
+                k[m][b] = (m & 1) ? hi[b] : lo[b];
+                k[m][c] = (m & 2) ? hi[c] : lo[c];
+            }
+            s.add(Triangle(k[0], k[1], k[3]), 0);
+            s.add(Triangle(k[0], k[3], k[2]), 0);
+            // And a sphere inside touching this face at its centre.
+            glm::dvec3 sc = mid;
+            sc[a] = (side ? hi[a] : lo[a]) + (side ? -0.5 : 0.5);
+            s.add(Sphere(sc, 0.5), 0);
+        }
+    const Refs r(s.primitives);
+    int hits = 0, rays = 0;
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 600; ++i) {
+        // A point on the box's surface: a corner, a point on an edge or on a face.
+        glm::dvec3 q;
+        for (int a = 0; a < 3; ++a)
+            q[a] = (g() & 1) ? hi[a] : lo[a];
+        const int kind = i % 3, a0 = int(g() % 3);
+        if (kind >= 1) q[a0] = lo[a0] + u(g) * (hi[a0] - lo[a0]);
+        if (kind == 2) {
+            const int a1 = (a0 + 1) % 3;
+            q[a1] = lo[a1] + u(g) * (hi[a1] - lo[a1]);
+        }
+        // From outside towards q; every fourth ray in the plane of a face through q.
+        glm::dvec3 d = glm::normalize(mid - q + rnd3(g, -2, 2));
+        if (i % 4 == 0) {
+            for (int a = 0; a < 3; ++a)
+                if (q[a] == lo[a] || q[a] == hi[a]) {
+                    d[a] = 0;
+                    break;
+                }
+            if (glm::length(d) == 0) continue;
+            d = glm::normalize(d);
+        }
+        Ray ray;
+        ray.direction = d;
+        ray.origin = q - (5.0 + 10.0 * u(g)) * d;
+        ++rays;
+        hits += compareRay(r, ray);
+        Hit h;
+        if (r.brute.intersect(ray, 0, kInf, h)) {
+            // The limit at the hit (and tMin before it): every wide path against the plain
+            // loop. (Not compareRay: the binary double tree, the tests' other reference,
+            // loses some of these hits at t == tMax on the flat faces; noticed here,
+            // docs/raytrace-scale.md, not mended on this branch.)
+            for (const double tMin : {0.0, 0.5 * h.t})
+                for (const auto& w : r.paths.trees) {
+                    INFO("ray " << i << ", width " << w->stats().width << ", tMin " << tMin);
+                    Hit hw;
+                    REQUIRE(w->intersect(ray, tMin, h.t, hw));
+                    REQUIRE(hw.primitive == h.primitive);
+                    REQUIRE(hw.t == h.t);
+                    REQUIRE(w->occluded(ray, tMin, h.t));
+                }
+        }
+    }
+    CHECK(rays > 500);
+    CHECK(hits > 300);
+}

@@ -224,6 +224,9 @@ class Bvh : public Aggregate {
     std::vector<FloatNode> fnodes_; // parallel to nodes_ when options_.floatBoxes
     double rootLo_[3] = {0, 0, 0}, rootHi_[3] = {0, 0, 0}; // box of the whole tree
     std::uint32_t rootLeafCount_ = 0;         // > 0: the whole tree is one leaf (no nodes_)
+    // Wide trees: the union of the root node's float child boxes (lo x, y, z, hi x, y, z),
+    // tested by the walk before a ray's lanes are set up (bvh_wide_impl.h, initRay).
+    alignas(16) float rootF_[2][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}};
     std::vector<const Primitive*> order_;     // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     // Wide trees only:
