@@ -46,8 +46,8 @@ struct WindowState {
     int settleFrames =
         0; // frames still to draw after an event (ImGui shows hover/press a frame late)
     bool timerPending = false;     // a glutTimerFunc redraw is on its way (busy lab)
-    bool pollPending = false;
-    bool wantedPending = false;    // a glutTimerFunc asking lab->frameWanted() is on its way      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
+    bool pollPending = false;      // a glutTimerFunc lab->poll() is on its way (Lab::pollMs)
+    bool wantedPending = false;    // a glutTimerFunc asking lab->frameWanted() is on its way
     bool screenshotFailed = false; // --screenshot could not be written: exit 1
     bool dragging = false;         // left button down outside the panel
     bool moved = false;            // the drag moved far enough to be a rotation, not a click
