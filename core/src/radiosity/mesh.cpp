@@ -422,14 +422,7 @@ void stitch(PatchMesh& mesh, bool coplanarOnly) {
         if (!grown[i] && !moved(p)) continue;
         const auto poly = mesh.cornersOf(static_cast<int>(i));
         p.area = polygonArea(poly);
-        glm::dvec3 c(0.0);
-        double wsum = 0.0;
-        for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
-            const double a = 0.5 * glm::length(glm::cross(poly[k] - poly[0], poly[k + 1] - poly[0]));
-            c += a * (poly[0] + poly[k] + poly[k + 1]) / 3.0;
-            wsum += a;
-        }
-        if (wsum > 0.0) p.centre = c / wsum;
+        polygonCentroid(poly, p.centre);
     }
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
         Patch& p = mesh.patches[i];
@@ -652,14 +645,7 @@ bool exposedSliver(const PatchBvh& bvh, const std::vector<glm::dvec3>& c, const 
     }
     area = poly.size() >= 3 ? polygonArea(poly) : 0.0;
     if (!(area > 0.0)) return false;
-    glm::dvec3 sum(0.0);
-    double wsum = 0.0;
-    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
-        const double a = 0.5 * glm::length(glm::cross(poly[k] - poly[0], poly[k + 1] - poly[0]));
-        sum += a * (poly[0] + poly[k] + poly[k + 1]) / 3.0;
-        wsum += a;
-    }
-    centroid = sum / wsum;
+    if (!polygonCentroid(poly, centroid)) return false;
     // The centroid of a non-convex exposed part may lie under the body: an exposed corner then.
     if (under(centroid))
         for (std::size_t k = 0; k < c.size(); ++k)

@@ -41,6 +41,19 @@ double polygonArea(const std::vector<glm::dvec3>& poly) {
     return std::isfinite(a) ? a : 0.0;
 }
 
+bool polygonCentroid(const std::vector<glm::dvec3>& poly, glm::dvec3& centroid) {
+    glm::dvec3 sum(0.0);
+    double wsum = 0.0;
+    for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+        const double a = 0.5 * glm::length(glm::cross(poly[k] - poly[0], poly[k + 1] - poly[0]));
+        sum += a * (poly[0] + poly[k] + poly[k + 1]) / 3.0;
+        wsum += a;
+    }
+    if (!(wsum > 0.0)) return false;
+    centroid = sum / wsum;
+    return true;
+}
+
 glm::dvec3 polygonNormal(const std::vector<glm::dvec3>& poly) {
     if (poly.size() < 3) return glm::dvec3(0.0);
     const glm::dvec3 n = newell(poly);

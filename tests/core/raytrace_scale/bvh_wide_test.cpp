@@ -898,6 +898,20 @@ TEST_CASE("rt_bvh_wide: quantised nodes hold the float boxes and lose no hit",
     }
 }
 
+// Primitives in a box of ±40 around kFarCentre (~1000 from the origin, where float rounds a
+// coordinate by ~6e-5): small random triangles, and with withSpheres every even one a sphere.
+static const glm::dvec3 kFarCentre{1000.0, -700.0, 600.0};
+
+static void addFarPrimitives(Scene& s, std::mt19937_64& g, int count, bool withSpheres) {
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec3 c = kFarCentre + rnd3(g, -40, 40);
+        if (!withSpheres || i % 2)
+            s.add(Triangle(c, c + rnd3(g, -2, 2), c + rnd3(g, -2, 2)), 0);
+        else
+            s.add(Sphere(c, 0.3 + 0.01 * double(i % 13)), 0);
+    }
+}
+
 TEST_CASE("rt_bvh_wide: the leaves' float filters keep their margins (hits closer to an edge "
           "than float's error)",
           "[raytrace][bvh]") {
@@ -910,15 +924,9 @@ TEST_CASE("rt_bvh_wide: the leaves' float filters keep their margins (hits close
     // margin cut (e.g. kTriMargin 2^-19 → 2^-26, kSphereMargin 2^-16 → 2^-24) rejects some of
     // the hits the plain loop finds, and compareRay fails on every path.
     std::mt19937_64 g(2112);
+    const glm::dvec3 far = kFarCentre;
     Scene s;
-    const glm::dvec3 far{1000.0, -700.0, 600.0};
-    for (int i = 0; i < 160; ++i) {
-        const glm::dvec3 c = far + rnd3(g, -40, 40);
-        if (i % 2)
-            s.add(Triangle(c, c + rnd3(g, -2, 2), c + rnd3(g, -2, 2)), 0);
-        else
-            s.add(Sphere(c, 0.3 + 0.01 * double(i % 13)), 0);
-    }
+    addFarPrimitives(s, g, 160, true);
     const Refs r(s.primitives);
     int edgeHits = 0, grazes = 0;
     for (const auto& p : s.primitives) {
@@ -970,11 +978,7 @@ TEST_CASE("rt_bvh_wide: the triangle filter's verdict for every dominant axis an
     // plain loop finds.
     std::mt19937_64 g(2113);
     Scene s;
-    const glm::dvec3 far{1000.0, -700.0, 600.0};
-    for (int i = 0; i < 120; ++i) {
-        const glm::dvec3 c = far + rnd3(g, -40, 40);
-        s.add(Triangle(c, c + rnd3(g, -2, 2), c + rnd3(g, -2, 2)), 0);
-    }
+    addFarPrimitives(s, g, 120, false);
     const Refs r(s.primitives);
     int hits[3][2] = {{0, 0}, {0, 0}, {0, 0}};
     std::uniform_real_distribution<double> u(0, 1);

@@ -36,5 +36,9 @@ void validate(const Scene& scene);
 // area 0 and normal 0 when degenerate.
 double polygonArea(const std::vector<glm::dvec3>& poly);
 glm::dvec3 polygonNormal(const std::vector<glm::dvec3>& poly);
+// Area-weighted centroid of a planar polygon by its fan of triangles from poly[0] (the
+// polygon is assumed star-shaped from poly[0], as the mesh's convex cells and exposed slivers
+// are); false, centroid untouched, when the fan has no area.
+bool polygonCentroid(const std::vector<glm::dvec3>& poly, glm::dvec3& centroid);
 
 } // namespace wb::rad
