@@ -224,18 +224,21 @@ WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenW
     WindowFit f;
     const int maxW = std::max(320, screenWidth - kScreenMarginX);
     const int maxH = std::max(240, screenHeight - kScreenMarginY);
-    // By default the window is as tall as the screen allows: the panel gets its lines and the
-    // scene its height at any scale. An explicit --size asks for that scene (or launcher) size.
-    f.height = std::min(maxH, opts.sizeGiven ? opts.height : maxH);
-    // The scene (or the launcher's cards) 4:3 at the window's height, never narrower than the
-    // headless image's width.
-    const int wide = std::max(opts.width, int(float(f.height) * kMinSceneAspect + 0.5f));
-    if (panelFillsWindow) { // the launcher: its cards want room as the text grows
-        const int cards = std::max(wide, int(float(opts.width) * std::max(1.0f, uiScale) + 0.5f));
-        f.width = std::min(maxW, opts.sizeGiven ? opts.width : cards);
+    const float grow = std::max(1.0f, uiScale);
+    if (panelFillsWindow) { // the launcher: its cards want room as the text grows, and no more
+        // (they keep their size: a taller window would show an empty lower half)
+        f.height =
+            std::min(maxH, opts.sizeGiven ? opts.height : int(float(opts.height) * grow + 0.5f));
+        f.width =
+            std::min(maxW, opts.sizeGiven ? opts.width : int(float(opts.width) * grow + 0.5f));
         f.uiScale = uiScale;
         return f;
     }
+    // By default a lab's window is as tall as the screen allows: the panel gets its lines and
+    // the scene its height at any scale. An explicit --size asks for that scene size.
+    f.height = std::min(maxH, opts.sizeGiven ? opts.height : maxH);
+    // The scene 4:3 at the window's height, never narrower than the headless image's width.
+    const int wide = std::max(opts.width, int(float(f.height) * kMinSceneAspect + 0.5f));
     const int scene = opts.sizeGiven ? opts.width : wide;
     const int panel = int(float(kPanelWidth) * uiScale + 0.5f);
     f.width = std::min(maxW, scene + panel);
@@ -259,9 +262,7 @@ std::string usageText(const std::string& program, const Lab& lab) {
     flag("--headless", tr("render with OSMesa (no window) and exit; needs --out"));
     flag("--out FILE.png", tr("where the headless render goes"));
     if (fills)
-        flag("--size WxH", trf("window size in pixels (default: the screen's height less\n"
-                               "%d px, 4:3 wide, within the screen)",
-                               kScreenMarginY));
+        flag("--size WxH", trf("window size in pixels (default %s)", image.c_str()));
     else
         flag("--size WxH", trf("headless: image size (default %s); windowed: the scene's\nsize, "
                                "the panel (%d px at --ui-scale 1) is added beside it;\nwithout "

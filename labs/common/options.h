@@ -63,7 +63,7 @@ struct WindowFit {
 // most lines it can, the scene its largest 4:3) and as wide as the scene at 4:3 plus the panel,
 // capped by the screen's width less kScreenMarginX; scene and panel share that width. An
 // explicit --size asks for that scene size (capped the same way). The launcher (its panel
-// fills the window) gets the same height and 4:3, or 800 px x the UI scale if wider.
+// fills the window) opens at 800x600 x the UI scale, capped the same way: its cards do not grow.
 WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenWidth,
                     int screenHeight, float uiScale);
 

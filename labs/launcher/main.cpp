@@ -55,8 +55,8 @@ int main(int argc, char** argv) {
                                  .c_str());
             std::printf(wb::tr("usage: %s [--headless] [--out-dir DIR] [--size WxH] [--ui-scale X] "
                                "[--lang ru|en]\n"
-                               "  with a display: opens the launcher window as tall as the screen, "
-                               "unless --size says otherwise\n"
+                               "  with a display: opens the launcher window, 800x600 unless --size "
+                               "says otherwise\n"
                                "  (also takes the lab shell's flags, e.g. --ui-scale 2 for a "
                                "projector);\n"
                                "  the labs it starts open in its language\n"

@@ -108,15 +108,16 @@ TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]"
                 const int maxW = screen.width - kScreenMarginX;
                 CHECK(f.width <= maxW);
                 CHECK(f.uiScale <= scale);
-                // The height uses the screen: all of it but the margin, at every scale.
-                CHECK(f.height == screen.height - kScreenMarginY);
-                // As wide as a 4:3 scene (or launcher) at that height plus the panel, unless
-                // the screen's width stops it.
-                const int scene4x3 = int(float(f.height) * 4.0f / 3.0f + 0.5f);
-                if (fills) {
-                    CHECK(f.width == std::min(maxW, std::max(scene4x3, int(800 * scale))));
+                if (fills) { // the launcher: 800x600 x the scale, capped by the screen
+                    CHECK(f.width == std::min(maxW, int(800 * scale)));
+                    CHECK(f.height == std::min(screen.height - kScreenMarginY, int(600 * scale)));
                     continue;
                 }
+                // A lab's height uses the screen: all of it but the margin, at every scale.
+                CHECK(f.height == screen.height - kScreenMarginY);
+                // As wide as a 4:3 scene at that height plus the panel, unless the screen's
+                // width stops it.
+                const int scene4x3 = int(float(f.height) * 4.0f / 3.0f + 0.5f);
                 CHECK(f.width == std::min(maxW, scene4x3 + int(float(kPanelWidth) * scale + 0.5f)));
                 // The panel's layout needs kPanelWidth x scale; the scene keeps its share.
                 CHECK(f.panelWidth == int(float(kPanelWidth) * f.uiScale + 0.5f));
@@ -148,9 +149,9 @@ TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]"
     // 1024x768 cannot hold an 840-px panel beside a scene: the largest scale that fits.
     f = fitWindow(o, false, 1024, 768, 2.0f);
     CHECK(f.uiScale == Approx(1.31f));
-    // The launcher at scale 1 on 1920x1080: 4:3 at the screen's height.
+    // The launcher at scale 1 on 1920x1080 keeps 800x600 (its cards do not grow).
     f = fitWindow(o, true, 1920, 1080, 1.0f);
-    CHECK((f.width == 1333 && f.height == 1000));
+    CHECK((f.width == 800 && f.height == 600));
     // --size keeps its meaning: the scene's size, the panel beside it, capped by the screen.
     o.uiScale = 1.0f;
     o.sizeGiven = true;
