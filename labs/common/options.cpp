@@ -210,10 +210,6 @@ bool parseKeys(const std::string& keys, std::vector<int>& codes, std::string& er
     return true;
 }
 
-int windowWidth(const ShellOptions& opts, bool panelFillsWindow) {
-    return opts.width + (panelFillsWindow ? 0 : int(float(kPanelWidth) * opts.uiScale + 0.5f));
-}
-
 float maxUiScaleFor(int width) {
     return std::floor(float(width) * kMaxPanelShare / float(kPanelWidth) * 100.0f) / 100.0f;
 }
@@ -229,16 +225,21 @@ WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenW
     const int maxW = std::max(320, screenWidth - kScreenMarginX);
     const int maxH = std::max(240, screenHeight - kScreenMarginY);
     const float grow = std::max(1.0f, uiScale);
-    f.height = std::min(maxH, opts.sizeGiven ? opts.height : int(float(opts.height) * grow + 0.5f));
-    if (panelFillsWindow) { // the launcher: its cards want room as the text grows
+    if (panelFillsWindow) { // the launcher: its cards want room as the text grows, and no more
+        // (they keep their size: a taller window would show an empty lower half)
+        f.height =
+            std::min(maxH, opts.sizeGiven ? opts.height : int(float(opts.height) * grow + 0.5f));
         f.width =
             std::min(maxW, opts.sizeGiven ? opts.width : int(float(opts.width) * grow + 0.5f));
         f.uiScale = uiScale;
         return f;
     }
-    // The scene as asked, or as wide as 4:3 at the window's height.
-    const int scene =
-        opts.sizeGiven ? opts.width : std::max(opts.width, int(float(f.height) * kMinSceneAspect));
+    // By default a lab's window is as tall as the screen allows: the panel gets its lines and
+    // the scene its height at any scale. An explicit --size asks for that scene size.
+    f.height = std::min(maxH, opts.sizeGiven ? opts.height : maxH);
+    // The scene 4:3 at the window's height, never narrower than the headless image's width.
+    const int wide = std::max(opts.width, int(float(f.height) * kMinSceneAspect + 0.5f));
+    const int scene = opts.sizeGiven ? opts.width : wide;
     const int panel = int(float(kPanelWidth) * uiScale + 0.5f);
     f.width = std::min(maxW, scene + panel);
     f.uiScale = std::max(kMinUiScale, std::min(uiScale, maxUiScaleFor(f.width)));
@@ -248,10 +249,7 @@ WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenW
 
 std::string usageText(const std::string& program, const Lab& lab) {
     const bool fills = lab.panelFillsWindow();
-    ShellOptions defaults;
     const std::string image = std::to_string(kDefaultWidth) + "x" + std::to_string(kDefaultHeight);
-    const std::string window =
-        std::to_string(windowWidth(defaults, fills)) + "x" + std::to_string(kDefaultHeight);
     std::ostringstream s;
     s << lab.title() << "\n\n" << trf("usage: %s [options]", program.c_str()) << "\n\n";
     // One flag and its help, the help starting in column 24 (continuation lines too).
@@ -264,13 +262,13 @@ std::string usageText(const std::string& program, const Lab& lab) {
     flag("--headless", tr("render with OSMesa (no window) and exit; needs --out"));
     flag("--out FILE.png", tr("where the headless render goes"));
     if (fills)
-        flag("--size WxH", trf("window size in pixels (default %s)", window.c_str()));
+        flag("--size WxH", trf("window size in pixels (default %s)", image.c_str()));
     else
         flag("--size WxH", trf("headless: image size (default %s); windowed: the scene's\nsize, "
-                               "the panel (%d px at --ui-scale 1) is added beside it:\nthe window "
-                               "opens at %s by default,\nless where the screen is smaller (it "
-                               "always fits)",
-                               image.c_str(), kPanelWidth, window.c_str()));
+                               "the panel (%d px at --ui-scale 1) is added beside it;\nwithout "
+                               "--size the window takes the screen's height less\n%d px, the "
+                               "scene 4:3 beside the panel, within the screen",
+                               image.c_str(), kPanelWidth, kScreenMarginY));
     flag("--ui-scale X", tr("panel text and widgets X times larger, 0.5..4 (projector: 2);\nin the "
                             "window also Ctrl+= / Ctrl+- or the panel's View slider"));
     flag("--lang ru|en", tr("the language of the window and messages (else LANGUAGE, LC_ALL,\n"

@@ -8,7 +8,7 @@
 
 namespace wb {
 
-// Default --size: the headless image, or in a window the scene beside the panel.
+// Default --size of the headless image (a window without --size fits the screen: fitWindow).
 constexpr int kDefaultWidth = 800;
 constexpr int kDefaultHeight = 600;
 // The panel's default width at --ui-scale 1, window pixels; it scales with the UI and can be
@@ -37,9 +37,6 @@ struct ShellOptions {
     std::vector<std::pair<std::string, std::string>> labOptions; // the lab's own --name value pairs
 };
 
-// The window's size with the panel beside a scene of opts.width x opts.height (what --help states).
-int windowWidth(const ShellOptions& opts, bool panelFillsWindow);
-
 // The screens the panel check lays the panel out for (a classroom's projectors and laptops).
 struct ScreenSize {
     int width, height;
@@ -62,9 +59,11 @@ struct WindowFit {
     int panelWidth = 0;        // 0 for a lab whose panel fills the window
     float uiScale = 1.0f;
 };
-// Scene and panel share the width; the height is the scene's 600 px x the UI scale (so the
-// panel shows as many lines at any scale), both capped by the screen less its margins.
-// An explicit --size asks for that scene size (capped the same way).
+// Without --size the window is the screen's height less kScreenMarginY (the panel shows the
+// most lines it can, the scene its largest 4:3) and as wide as the scene at 4:3 plus the panel,
+// capped by the screen's width less kScreenMarginX; scene and panel share that width. An
+// explicit --size asks for that scene size (capped the same way). The launcher (its panel
+// fills the window) opens at 800x600 x the UI scale, capped the same way: its cards do not grow.
 WindowFit fitWindow(const ShellOptions& opts, bool panelFillsWindow, int screenWidth,
                     int screenHeight, float uiScale);
 

@@ -23,6 +23,8 @@ constexpr const char* kMonoPath = "/usr/share/fonts/truetype/dejavu/DejaVuSansMo
 constexpr float kFontPixels = 15.0f;
 
 ImFont* g_mono = nullptr;
+// The scale setupImGuiFonts() last built for (the font is that times 15 px, rounded).
+float g_builtScale = 1.0f;
 
 bool isFile(const char* path) {
     struct stat st {};
@@ -85,6 +87,7 @@ std::string setupImGuiFonts(float scale) {
     ImGuiIO& io = ImGui::GetIO();
     io.Fonts->Clear();
     g_mono = nullptr;
+    g_builtScale = scale;
     std::string message;
     ImFontConfig config;
     config.OversampleH = 2; // sharper glyph edges at fractional positions
@@ -115,6 +118,10 @@ std::string setupImGuiFonts(float scale) {
     style.ScaleAllSizes(scale);
     ImGui::GetStyle() = style;
     return message;
+}
+
+float builtUiScale() {
+    return g_builtScale;
 }
 
 ImFont* panelMonoFont() {

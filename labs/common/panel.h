@@ -33,6 +33,9 @@ struct PanelState {
 // and returns a message saying so (empty when all is well). Call outside a frame; the
 // window path re-creates the font texture afterwards.
 std::string setupImGuiFonts(float scale);
+// The scale setupImGuiFonts() last built for, exactly: ImGui::GetFontSize() / 15 is the
+// rounded pixel size's (1.5 builds a 23-px font: 1.53).
+float builtUiScale();
 
 // DejaVu Sans Mono when loaded (for aligned numbers: ImGui::PushFont(panelMonoFont())), else the
 // default font.

@@ -523,8 +523,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutInit(&argc, argv);
     glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
-    // --size is the scene's size; the panel is added beside it (usageText states the same
-    // sum), and the window is fitted to the screen it opens on.
+    // The window is fitted to the screen it opens on (fitWindow: its height, a 4:3 scene beside
+    // the panel); --size is the scene's size, the panel added beside it (as usageText says).
     state.screenWidth = glutGet(GLUT_SCREEN_WIDTH);
     state.screenHeight = glutGet(GLUT_SCREEN_HEIGHT);
     const WindowFit fit = fitWindow(state.opts, state.lab->panelFillsWindow(), state.screenWidth,

@@ -138,8 +138,9 @@ class Launcher : public Lab {
         pollRenderers(false);
         ImGui::TextWrapped(tr(
             "Choose a lab (click its picture or press its number); it opens in its own window."));
-        const float scale =
-            ImGui::GetFontSize() / 15.0f; // the UI scale, from the font the shell built
+        // The UI scale the shell built the fonts for: the labs start with it (not the font's
+        // rounded 15 px x scale, which made --ui-scale 1.5 reach the labs as 1.53).
+        const float scale = builtUiScale();
         char scaleText[16];
         std::snprintf(scaleText, sizeof scaleText, "%.2f", double(scale));
         scaleNow_ = scaleText;

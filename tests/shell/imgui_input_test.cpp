@@ -14,7 +14,7 @@
 
 namespace {
 
-// An ImGui context with the shell's fonts and a 1220x600 window (the default), the test
+// An ImGui context with the shell's fonts and a 1220x600 window (--size 800x600), the test
 // lab's panel at its right edge.
 struct PanelFixture {
     wb::test::TestLabState state;

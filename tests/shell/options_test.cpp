@@ -4,6 +4,7 @@
 #include "common/shell.h"
 #include "launcher/launcher.h"
 
+#include <algorithm>
 #include <limits>
 
 #include <catch2/catch.hpp>
@@ -96,14 +97,6 @@ TEST_CASE("the UI scale flag takes 0.5 to 4", "[options]") {
     }
 }
 
-TEST_CASE("the window --help names is the window that opens", "[options]") {
-    ShellOptions o;
-    CHECK(windowWidth(o, false) == kDefaultWidth + kPanelWidth);
-    CHECK(windowWidth(o, true) == kDefaultWidth);
-    o.uiScale = 2.0f;
-    CHECK(windowWidth(o, false) == kDefaultWidth + 2 * kPanelWidth);
-}
-
 TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]") {
     for (const ScreenSize screen : kCheckedScreens)
         for (float scale : {1.0f, 1.5f, 2.0f}) {
@@ -112,34 +105,64 @@ TEST_CASE("a window fits the screen it opens on, at every UI scale", "[options]"
                 ShellOptions o;
                 o.uiScale = scale;
                 const WindowFit f = fitWindow(o, fills, screen.width, screen.height, scale);
-                CHECK(f.width <= screen.width - kScreenMarginX);
-                CHECK(f.height <= screen.height - kScreenMarginY);
+                const int maxW = screen.width - kScreenMarginX;
+                CHECK(f.width <= maxW);
                 CHECK(f.uiScale <= scale);
-                if (fills) continue;
+                if (fills) { // the launcher: 800x600 x the scale, capped by the screen
+                    CHECK(f.width == std::min(maxW, int(800 * scale)));
+                    CHECK(f.height == std::min(screen.height - kScreenMarginY, int(600 * scale)));
+                    continue;
+                }
+                // A lab's height uses the screen: all of it but the margin, at every scale.
+                CHECK(f.height == screen.height - kScreenMarginY);
+                // As wide as a 4:3 scene at that height plus the panel, unless the screen's
+                // width stops it.
+                const int scene4x3 = int(float(f.height) * 4.0f / 3.0f + 0.5f);
+                CHECK(f.width == std::min(maxW, scene4x3 + int(float(kPanelWidth) * scale + 0.5f)));
                 // The panel's layout needs kPanelWidth x scale; the scene keeps its share.
                 CHECK(f.panelWidth == int(float(kPanelWidth) * f.uiScale + 0.5f));
                 CHECK(float(f.width - f.panelWidth) >=
                       (1.0f - kMaxPanelShare) * float(f.width) - 1.0f);
-                // The panel shows at least 70% of the lines the 600-px window shows at scale 1
-                // (a 1280x800 laptop at scale 2 -> 1.65 has 720 px: 436 / 600 = 73%).
+                // The panel shows at least 70% of the lines the old 600-px window showed at
+                // scale 1 (a 1280x800 laptop at scale 2 -> 1.65 has 720 px: 436 / 600 = 73%).
                 CHECK(float(f.height) / f.uiScale >= 600.0f * 0.7f);
+                // At scale 1 the scene is drawn 4:3 in its part of the window, never smaller than
+                // the old default's 584 x 438 on a 1024x768 screen.
+                if (scale == 1.0f) CHECK(sceneViewHeight(f.width - f.panelWidth, f.height) >= 438);
             }
         }
     ShellOptions o;
+    // Scale 1: the screen's height, the scene 4:3 beside the 420-px panel. 1024x768 used to
+    // open 1004x600 and leave 88 px of the screen unused; 1920x1080 1220x600.
+    WindowFit f = fitWindow(o, false, 1024, 768, 1.0f);
+    CHECK((f.width == 1004 && f.height == 688 && f.panelWidth == 420));
+    f = fitWindow(o, false, 1280, 800, 1.0f); // scene 840x720, drawn 840x630
+    CHECK((f.width == 1260 && f.height == 720));
+    f = fitWindow(o, false, 1920, 1080, 1.0f); // scene 1333x1000 exactly 4:3
+    CHECK((f.width == 1333 + 420 && f.height == 1000));
     // A projector's 1600x1000 keeps scale 2 (the 1640-px window no longer overflows).
     o.uiScale = 2.0f;
-    WindowFit f = fitWindow(o, false, 1600, 1000, 2.0f);
+    f = fitWindow(o, false, 1600, 1000, 2.0f);
     CHECK(f.uiScale == 2.0f);
     CHECK(f.width == 1580);
     CHECK(f.height == 920);
     // 1024x768 cannot hold an 840-px panel beside a scene: the largest scale that fits.
     f = fitWindow(o, false, 1024, 768, 2.0f);
     CHECK(f.uiScale == Approx(1.31f));
-    // A large screen at scale 1 keeps the window --help states.
+    // The launcher at scale 1 on 1920x1080 keeps 800x600 (its cards do not grow).
+    f = fitWindow(o, true, 1920, 1080, 1.0f);
+    CHECK((f.width == 800 && f.height == 600));
+    // --size keeps its meaning: the scene's size, the panel beside it, capped by the screen.
     o.uiScale = 1.0f;
+    o.sizeGiven = true;
     f = fitWindow(o, false, 1920, 1080, 1.0f);
-    CHECK(f.width == windowWidth(o, false));
-    CHECK(f.height == kDefaultHeight);
+    CHECK((f.width == kDefaultWidth + kPanelWidth && f.height == kDefaultHeight));
+    f = fitWindow(o, true, 1920, 1080, 1.0f);
+    CHECK((f.width == kDefaultWidth && f.height == kDefaultHeight));
+    o.width = 3000;
+    o.height = 2000;
+    f = fitWindow(o, false, 1280, 800, 1.0f);
+    CHECK((f.width == 1260 && f.height == 720));
     // The scene is never drawn narrower than 4:3; a wide one keeps its height.
     CHECK(sceneViewHeight(600, 900) == 450);
     CHECK(sceneViewHeight(1000, 600) == 600);
