@@ -1447,6 +1447,28 @@ unsigned Bvh::occludedPacket(const Ray* rays, const double* tMin, const double* 
     return blocked;
 }
 
+unsigned Bvh::candidatesPacket(const Ray* rays, const double* tMin, const double* tMax,
+                               unsigned lanes,
+                               const std::function<bool(int, const Primitive&)>& visit) const {
+    lanes &= (1u << kMaxPacket) - 1;
+    const int w = packetWidth();
+    if (w == 1) return 0;
+    unsigned walked = 0;
+    for (int k = 0; k < kMaxPacket; k += w)
+        if (const unsigned part = (lanes >> k) & ((1u << w) - 1)) {
+            if (k == 0) {
+                walked |= path_->candidatesPacket(*this, rays, tMin, tMax, part, visit);
+                continue;
+            }
+            walked |= path_->candidatesPacket(*this, rays + k, tMin + k, tMax + k, part,
+                                              [&](int j, const Primitive& q) {
+                                                  return visit(j + k, q);
+                                              })
+                      << k;
+        }
+    return walked;
+}
+
 std::unique_ptr<Bvh> makeAggregate(const Scene& scene, std::size_t crossover, BvhOptions options) {
     if (scene.primitives.size() < crossover) return nullptr;
     return std::make_unique<Bvh>(scene.primitives, options);

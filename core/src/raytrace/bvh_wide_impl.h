@@ -1192,6 +1192,26 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return blocked;
     }
 
+    // Every candidate of each packet ray (issue 21: feelers traced from the light): visit(j, q)
+    // for the primitives q whose float tests let ray j's segment near them, until visit says
+    // lane j is done (true). Returns the lanes walked as one packet (the caller asks the rest).
+    static unsigned candidatesPacket(const Bvh& b, const Ray* rays, const double* tMin,
+                                     const double* tMax, unsigned lanes,
+                                     const std::function<bool(int, const Primitive&)>& visit) {
+        if (b.stats_.primitives == 0 || b.rootLeafCount_ > 0) return 0;
+        Packet p;
+        const unsigned packet = joinPacket(p, rays, tMin, lanes);
+        unsigned live = packet;
+        for (const Primitive* q : b.unbounded_)
+            for (unsigned m = live; m; m &= m - 1)
+                if (visit(__builtin_ctz(m), *q)) live &= ~(m & -m);
+        if (live)
+            walkPacket<true>(b, p, live, tMax, [&](int j, std::uint32_t i, const RayData*) {
+                return !visit(j, *b.order_[i]);
+            });
+        return packet;
+    }
+
     // The exact decisions, called directly for the kinds the leaves know (the same
     // functions the virtual calls would reach: kSphere and kTriangle are exact types).
     // A plain triangle takes the shear the leaf test computed, if it did (the same bits as
@@ -1288,7 +1308,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
 
     static const WidePath* path(bool avx2) {
         static const WidePath p{W,           avx2,           &intersect,     &occluded,
-                                &forEachHit, &forEachBlocker, &intersectPacket, &occludedPacket};
+                                &forEachHit, &forEachBlocker, &intersectPacket, &occludedPacket,
+                                &candidatesPacket};
         return &p;
     }
 };

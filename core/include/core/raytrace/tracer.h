@@ -112,6 +112,23 @@ class Tracer {
     // scene: a transparent one or the hit's own flat primitive is not taken as a blocker).
     Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
                     const Primitive** lastBlockers) const;
+    // The feelers of up to kMaxPacket eye hits to each point light, traced as packets FROM
+    // the light (issue 21, renderParallel's packet path): all of a light's rays share one
+    // origin, so the packet's interval test stays tight where the hits' own origins scatter.
+    // The walk is only a filter: each candidate it lets through is asked by its exact test
+    // on the feeler's own segment (what the forward walk asks), so known[j·lights + i] is
+    // the transmittance the forward feeler gives — 0 (an opaque blocker confirmed), 1 (no
+    // candidate confirmed: the reverse walk's float filters, whose margins are ~2^-20 of
+    // the coordinates, pass every primitive within far more than the ~2^-50 by which the
+    // two lines differ, so none the exact test would confirm is missed) — or −1 (not
+    // decided: no feeler needed, a directional light, a lane outside the packet, or a
+    // transparent blocker, whose Π kt the forward walk gives in its order). hits[j] with a
+    // null primitive: a miss. Asks and updates the shadow cache (lastBlockers' first level)
+    // as traceFrom does.
+    void eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers, double* known) const;
+    // traceFrom with eyeFeelers' answers for this hit (known: one per light, or null).
+    Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
+                    const Primitive** lastBlockers, const double* known) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -134,7 +151,8 @@ class Tracer {
     // lastBlockers: traceFrom's shadow cache, or null.
     void sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                           std::vector<LightSample>& out, RayCounts& counts,
-                          const Primitive** lastBlockers = nullptr) const;
+                          const Primitive** lastBlockers = nullptr,
+                          const double* known = nullptr) const;
     // transmittance without counting the feeler (the caller counts it); *blocker (if not
     // null) gets the opaque blocker that ended the walk, or null.
     double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
@@ -150,7 +168,8 @@ class Tracer {
     template <bool kObserve>
     Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
                    RayCounts& counts, const Hit* known = nullptr,
-                   const Primitive** lastBlockers = nullptr) const;
+                   const Primitive** lastBlockers = nullptr,
+                   const double* knownLight = nullptr) const;
 
     const Scene& scene_;
     const ShadingModel& model_;
