@@ -135,7 +135,7 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                         : 0);
         // eyeFeelers' transmittances of a packet's hits, one per light.
         const std::size_t nLights = scene.lights.size();
-        std::vector<double> knownLight(opt.packets ? std::size_t(kMaxPacket) * nLights : 0);
+        std::vector<FeelerSample> knownLight(opt.packets ? std::size_t(kMaxPacket) * nLights : 0);
         auto rayOf = [&](int x, int y) {
             return opt.cornerRays ? lookAt->rayAt(x, y, width, height)
                                   : camera.primaryRay(x, y, width, height);
@@ -177,7 +177,7 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
                 for (int j = 0; j < n; ++j)
                     if (!((found >> j) & 1)) hits[j].primitive = nullptr;
-                const double* known = nullptr;
+                const FeelerSample* known = nullptr;
                 if (opt.lightFeelers) {
                     tracer.eyeFeelers(hits, n, lastBlockers.data(), knownLight.data());
                     known = knownLight.data();

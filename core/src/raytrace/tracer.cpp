@@ -85,78 +85,68 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
     shadowRays += counts.shadow;
 }
 
-namespace {
 // One light's feeler from a hit (sampleLightsFrom and eyeFeelers: the same operations, so
-// the same bits). need: false when the surface faces away from the light (transmittance 0)
-// or the light is closer than the offset (1).
-struct Feeler {
-    glm::dvec3 toLight;
-    double distance = 0, t0 = 0;
-    bool need = false;
-    double otherwise = 0; // the transmittance when no feeler is needed
-};
-inline Feeler feelerOf(const Hit& hit, double eps, const Light& l) {
-    Feeler f;
+// the same bits): the sample without its transmittance, where the feeler starts (t0) and
+// whether one is needed (else the transmittance is already set: 0 when the surface faces
+// away from the light, 1 when the light is closer than the offset).
+FeelerSample Tracer::feelerOf(const Hit& hit, double eps, const Light& l) {
+    FeelerSample f;
+    f.sample.light = &l;
     if (l.kind == Light::Kind::Point) {
         const glm::dvec3 v = l.position - hit.point;
         const double dist = glm::length(v);
-        f.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
-        f.distance = dist;
+        f.sample.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
+        f.sample.distance = dist;
     } else {
         const double len = glm::length(l.direction);
-        f.toLight = len > 0 ? -l.direction / len : hit.normal;
-        f.distance = std::numeric_limits<double>::infinity();
+        f.sample.toLight = len > 0 ? -l.direction / len : hit.normal;
+        f.sample.distance = std::numeric_limits<double>::infinity();
     }
-    if (glm::dot(f.toLight, hit.normal) > 0) {
+    if (glm::dot(f.sample.toLight, hit.normal) > 0) {
         // The feeler is the exact segment point–light, started where it is as far off
         // the surface as the normal offset of reflected rays: a feeler that grazes a
         // blocker's border (seed 000's does, exactly) is judged on the true line.
-        f.t0 = feelerStartAt(eps, hit.normal, f.toLight);
-        f.need = f.t0 < f.distance;
-        f.otherwise = 1.0; // the light is closer than the offset
+        f.t0 = feelerStartAt(eps, hit.normal, f.sample.toLight);
+        f.need = f.t0 < f.sample.distance;
+        // Not decided yet (the feeler's), or 1: the light is closer than the offset.
+        f.sample.transmittance = f.need ? -1.0 : 1.0;
     } else {
-        f.otherwise = 0.0; // the surface faces away from the light
+        f.sample.transmittance = 0.0; // the surface faces away from the light
     }
     return f;
 }
-} // namespace
 
 void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                               std::vector<LightSample>& out, RayCounts& counts,
-                              const Primitive** lastBlockers, const double* known) const {
+                              const Primitive** lastBlockers, const FeelerSample* known) const {
     out.clear();
     out.reserve(scene_.lights.size());
     // Per hit, not per light: the feelers' start distance at normal incidence and the
     // primitive they must not count (a virtual call).
-    const double eps = glm::length(offsetOrigin - hit.point);
+    const double eps = known ? 0.0 : glm::length(offsetOrigin - hit.point);
     const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
     for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-        const Light& l = scene_.lights[li];
-        LightSample s;
-        s.light = &l;
-        const Feeler f = feelerOf(hit, eps, l);
-        s.toLight = f.toLight;
-        s.distance = f.distance;
-        if (!f.need) {
-            s.transmittance = f.otherwise;
-        } else {
+        // eyeFeelers' sample (its transmittance decided from the light, or −1), or our own.
+        const FeelerSample f = known ? known[li] : feelerOf(hit, eps, scene_.lights[li]);
+        LightSample s = f.sample;
+        if (f.need) {
             ++counts.shadow;
-            const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
-            Ray feeler;
-            feeler.origin = hit.point;
-            feeler.direction = s.toLight;
-            if (known && known[li] >= 0) {
-                s.transmittance = known[li]; // decided by eyeFeelers from the light
-            // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked
-            // by its exact test on this feeler's segment, as the walk would ask it (never
-            // `self`; only an opaque material makes the transmittance 0).
-            } else if (cached && cached != self &&
-                       scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
-                       cached->occluded(feeler, f.t0, s.distance)) {
-                s.transmittance = 0.0;
-            } else {
-                s.transmittance = feelerTransmittance(hit.point, s.toLight, f.t0, s.distance, self,
-                                                      lastBlockers ? &lastBlockers[li] : nullptr);
+            if (!(s.transmittance >= 0)) {
+                const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
+                Ray feeler;
+                feeler.origin = hit.point;
+                feeler.direction = s.toLight;
+                // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked
+                // by its exact test on this feeler's segment, as the walk would ask it (never
+                // `self`; only an opaque material makes the transmittance 0).
+                if (cached && cached != self &&
+                    scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
+                    cached->occluded(feeler, f.t0, s.distance))
+                    s.transmittance = 0.0;
+                else
+                    s.transmittance =
+                        feelerTransmittance(hit.point, s.toLight, f.t0, s.distance, self,
+                                            lastBlockers ? &lastBlockers[li] : nullptr);
             }
         }
         out.push_back(s);
@@ -164,71 +154,86 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
 }
 
 void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
-                        double* known) const {
+                        FeelerSample* known) const {
     const std::size_t nl = scene_.lights.size();
-    std::fill(known, known + std::size_t(n) * nl, -1.0);
     const Aggregate& agg = scene_.aggregate();
-    double eps[kMaxPacket];
     const Primitive* self[kMaxPacket];
     for (int j = 0; j < n; ++j) {
         if (!hits[j].primitive) continue;
-        eps[j] = glm::length(offsetRayOrigin(hits[j].point, hits[j].normal) - hits[j].point);
+        // As traceRay and sampleLightsFrom compute them (the same bits).
+        const double eps =
+            glm::length(offsetRayOrigin(hits[j].point, hits[j].normal) - hits[j].point);
         self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
+        for (std::size_t li = 0; li < nl; ++li) {
+            FeelerSample& f = known[std::size_t(j) * nl + li];
+            f = feelerOf(hits[j], eps, scene_.lights[li]);
+        }
     }
+    // What the walk's visitor needs, by one reference (std::function keeps it in place).
+    struct Lanes {
+        const Tracer& tracer;
+        Ray fwd[kMaxPacket];
+        double t0[kMaxPacket], dist[kMaxPacket];
+        const Primitive* const* self;
+        unsigned blocked = 0, seeThrough = 0;
+        const Primitive* blocker[kMaxPacket] = {};
+    } ln{*this, {}, {}, {}, self};
     for (std::size_t li = 0; li < nl; ++li) {
         const Light& l = scene_.lights[li];
         if (l.kind != Light::Kind::Point) continue; // no common origin
-        Ray fwd[kMaxPacket], rev[kMaxPacket];
-        double t0[kMaxPacket], dist[kMaxPacket], rMin[kMaxPacket], rMax[kMaxPacket];
+        Ray rev[kMaxPacket];
+        double rMin[kMaxPacket], rMax[kMaxPacket];
         unsigned lanes = 0;
         for (int j = 0; j < n; ++j) {
             if (!hits[j].primitive) continue;
-            const Feeler f = feelerOf(hits[j], eps[j], l);
+            FeelerSample& f = known[std::size_t(j) * nl + li];
             if (!f.need) continue;
-            fwd[j].origin = hits[j].point;
-            fwd[j].direction = f.toLight;
-            t0[j] = f.t0;
-            dist[j] = f.distance;
+            ln.fwd[j].origin = hits[j].point;
+            ln.fwd[j].direction = f.sample.toLight;
+            ln.t0[j] = f.t0;
+            ln.dist[j] = f.sample.distance;
             // The shadow cache first, as sampleLightsFrom asks it.
             const Primitive* cached = lastBlockers[li];
             if (cached && cached != self[j] &&
                 scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
-                cached->occluded(fwd[j], f.t0, f.distance)) {
-                known[std::size_t(j) * nl + li] = 0.0;
+                cached->occluded(ln.fwd[j], f.t0, f.sample.distance)) {
+                f.sample.transmittance = 0.0;
                 continue;
             }
             // The same line from the light (the negated direction is exact), its segment
-            // (0, distance − t0) widened at both ends: only a filter (see eyeFeelers).
+            // (0, distance − t0) widened at both ends: only a filter (tracer.h).
             rev[j].origin = l.position;
-            rev[j].direction = -f.toLight;
-            const double slack = f.distance * 0x1p-30;
+            rev[j].direction = -f.sample.toLight;
+            const double slack = f.sample.distance * 0x1p-30;
             rMin[j] = -slack;
-            rMax[j] = (f.distance - f.t0) + slack;
+            rMax[j] = (f.sample.distance - f.t0) + slack;
             lanes |= 1u << j;
         }
         if (!lanes) continue;
-        unsigned blocked = 0, seeThrough = 0;
-        const Primitive* blocker[kMaxPacket] = {};
+        ln.blocked = ln.seeThrough = 0;
         const unsigned walked =
-            agg.candidatesPacket(rev, rMin, rMax, lanes, [&](int j, const Primitive& q) {
+            agg.candidatesPacket(rev, rMin, rMax, lanes, [&ln](int j, const Primitive& q) {
                 // Each candidate by its exact test on the feeler's own segment, as the
                 // forward walk asks it (never the hit's own flat primitive).
-                if (&q == self[j] || !q.occluded(fwd[j], t0[j], dist[j])) return false;
-                if (scene_.materials[size_t(q.material)].kt < settings_.opaqueKt) {
-                    blocked |= 1u << j;
-                    blocker[j] = &q;
+                if (&q == ln.self[j] || !q.occluded(ln.fwd[j], ln.t0[j], ln.dist[j]))
+                    return false;
+                if (ln.tracer.scene_.materials[size_t(q.material)].kt <
+                    ln.tracer.settings_.opaqueKt) {
+                    ln.blocked |= 1u << j;
+                    ln.blocker[j] = &q;
                     return true; // 0, whatever else blocks
                 }
-                seeThrough |= 1u << j; // Π kt in the walk's order: the forward feeler's
+                ln.seeThrough |= 1u << j; // Π kt in the walk's order: the forward feeler's
                 return false;
             });
         for (unsigned m = walked; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            if ((blocked >> j) & 1) {
-                known[std::size_t(j) * nl + li] = 0.0;
-                lastBlockers[li] = blocker[j];
-            } else if (!((seeThrough >> j) & 1)) {
-                known[std::size_t(j) * nl + li] = 1.0;
+            FeelerSample& f = known[std::size_t(j) * nl + li];
+            if ((ln.blocked >> j) & 1) {
+                f.sample.transmittance = 0.0;
+                lastBlockers[li] = ln.blocker[j];
+            } else if (!((ln.seeThrough >> j) & 1)) {
+                f.sample.transmittance = 1.0;
             }
         }
     }
@@ -237,7 +242,7 @@ void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
                        RayCounts& counts, const Hit* known, const Primitive** lastBlockers,
-                       const double* knownLight) const {
+                       const FeelerSample* knownLight) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
@@ -389,7 +394,7 @@ Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
 }
 
 Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
-                        const Primitive** lastBlockers, const double* knownLight) const {
+                        const Primitive** lastBlockers, const FeelerSample* knownLight) const {
     long budget = settings_.maxRaysPerSample;
     return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit,
                            ray.depth == 0 ? lastBlockers : nullptr,
