@@ -85,71 +85,90 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
     shadowRays += counts.shadow;
 }
 
-// One light's feeler from a hit (sampleLightsFrom and eyeFeelers: the same operations, so
-// the same bits): the sample without its transmittance, where the feeler starts (t0) and
-// whether one is needed (else the transmittance is already set: 0 when the surface faces
-// away from the light, 1 when the light is closer than the offset).
-FeelerSample Tracer::feelerOf(const Hit& hit, double eps, const Light& l) {
-    FeelerSample f;
-    f.sample.light = &l;
+namespace {
+// One light's sample at a hit (sampleLightsFrom and eyeFeelers: the same operations, so the
+// same bits): s.toLight and s.distance; true when a feeler is needed, started at t0, else
+// s.transmittance is set (0: the surface faces away from the light; 1: the light is closer
+// than the offset). Fills s in place: the single path's sampleLightsFrom measured 18% more
+// instructions when it copied a returned sample.
+inline bool feelerOf(const Hit& hit, double eps, const Light& l, LightSample& s, double& t0) {
     if (l.kind == Light::Kind::Point) {
         const glm::dvec3 v = l.position - hit.point;
         const double dist = glm::length(v);
-        f.sample.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
-        f.sample.distance = dist;
+        s.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
+        s.distance = dist;
     } else {
         const double len = glm::length(l.direction);
-        f.sample.toLight = len > 0 ? -l.direction / len : hit.normal;
-        f.sample.distance = std::numeric_limits<double>::infinity();
+        s.toLight = len > 0 ? -l.direction / len : hit.normal;
+        s.distance = std::numeric_limits<double>::infinity();
     }
-    if (glm::dot(f.sample.toLight, hit.normal) > 0) {
+    if (glm::dot(s.toLight, hit.normal) > 0) {
         // The feeler is the exact segment point–light, started where it is as far off
         // the surface as the normal offset of reflected rays: a feeler that grazes a
         // blocker's border (seed 000's does, exactly) is judged on the true line.
-        f.t0 = feelerStartAt(eps, hit.normal, f.sample.toLight);
-        f.need = f.t0 < f.sample.distance;
-        // Not decided yet (the feeler's), or 1: the light is closer than the offset.
-        f.sample.transmittance = f.need ? -1.0 : 1.0;
+        t0 = feelerStartAt(eps, hit.normal, s.toLight);
+        if (t0 < s.distance) return true;
+        s.transmittance = 1.0; // the light is closer than the offset
     } else {
-        f.sample.transmittance = 0.0; // the surface faces away from the light
+        s.transmittance = 0.0; // the surface faces away from the light
     }
-    return f;
+    return false;
+}
+} // namespace
+
+inline double Tracer::feeler(const Hit& hit, const LightSample& s, double t0, std::size_t li,
+                      const Primitive* self, const Primitive** lastBlockers) const {
+    const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
+    if (cached) {
+        Ray feeler;
+        feeler.origin = hit.point;
+        feeler.direction = s.toLight;
+        // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked by its
+        // exact test on this feeler's segment, as the walk would ask it (never `self`; only
+        // an opaque material makes the transmittance 0).
+        if (cached != self && scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
+            cached->occluded(feeler, t0, s.distance))
+            return 0.0;
+    }
+    return feelerTransmittance(hit.point, s.toLight, t0, s.distance, self,
+                               lastBlockers ? &lastBlockers[li] : nullptr);
 }
 
 void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                               std::vector<LightSample>& out, RayCounts& counts,
-                              const Primitive** lastBlockers, const FeelerSample* known) const {
+                              const Primitive** lastBlockers) const {
     out.clear();
     out.reserve(scene_.lights.size());
     // Per hit, not per light: the feelers' start distance at normal incidence and the
     // primitive they must not count (a virtual call).
-    const double eps = known ? 0.0 : glm::length(offsetOrigin - hit.point);
+    const double eps = glm::length(offsetOrigin - hit.point);
     const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
     for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-        // eyeFeelers' sample (its transmittance decided from the light, or −1), or our own.
-        const FeelerSample f = known ? known[li] : feelerOf(hit, eps, scene_.lights[li]);
-        LightSample s = f.sample;
-        if (f.need) {
+        LightSample s;
+        s.light = &scene_.lights[li];
+        double t0 = 0;
+        if (feelerOf(hit, eps, *s.light, s, t0)) {
             ++counts.shadow;
-            if (!(s.transmittance >= 0)) {
-                const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
-                Ray feeler;
-                feeler.origin = hit.point;
-                feeler.direction = s.toLight;
-                // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked
-                // by its exact test on this feeler's segment, as the walk would ask it (never
-                // `self`; only an opaque material makes the transmittance 0).
-                if (cached && cached != self &&
-                    scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
-                    cached->occluded(feeler, f.t0, s.distance))
-                    s.transmittance = 0.0;
-                else
-                    s.transmittance =
-                        feelerTransmittance(hit.point, s.toLight, f.t0, s.distance, self,
-                                            lastBlockers ? &lastBlockers[li] : nullptr);
-            }
+            s.transmittance = feeler(hit, s, t0, li, self, lastBlockers);
         }
         out.push_back(s);
+    }
+}
+
+void Tracer::knownSamples(const Hit& hit, const FeelerSample* known,
+                          std::vector<LightSample>& out, RayCounts& counts,
+                          const Primitive** lastBlockers) const {
+    out.clear();
+    out.reserve(scene_.lights.size());
+    const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
+    for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+        const FeelerSample& f = known[li];
+        out.push_back(f.sample);
+        if (f.need) {
+            ++counts.shadow;
+            if (!(f.sample.transmittance >= 0))
+                out.back().transmittance = feeler(hit, f.sample, f.t0, li, self, lastBlockers);
+        }
     }
 }
 
@@ -166,7 +185,10 @@ void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
         self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
         for (std::size_t li = 0; li < nl; ++li) {
             FeelerSample& f = known[std::size_t(j) * nl + li];
-            f = feelerOf(hits[j], eps, scene_.lights[li]);
+            f.sample = LightSample{};
+            f.sample.light = &scene_.lights[li];
+            f.need = feelerOf(hits[j], eps, scene_.lights[li], f.sample, f.t0);
+            if (f.need) f.sample.transmittance = -1.0; // not decided yet
         }
     }
     // What the walk's visitor needs, by one reference (std::function keeps it in place).
@@ -276,7 +298,10 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         // used up by direct() before the recursion below, so nested rays can refill it.
         // (A shading model must not call trace() from direct().)
         thread_local std::vector<LightSample> samples;
-        sampleLightsFrom(hit, offsetOrigin, samples, counts, lastBlockers, knownLight);
+        if (knownLight)
+            knownSamples(hit, knownLight, samples, counts, lastBlockers);
+        else
+            sampleLightsFrom(hit, offsetOrigin, samples, counts, lastBlockers);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
     }
 

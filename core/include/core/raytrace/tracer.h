@@ -161,9 +161,15 @@ class Tracer {
     // lastBlockers: traceFrom's shadow cache, or null.
     void sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                           std::vector<LightSample>& out, RayCounts& counts,
-                          const Primitive** lastBlockers = nullptr,
-                          const FeelerSample* known = nullptr) const;
-    static FeelerSample feelerOf(const Hit& hit, double eps, const Light& l);
+                          const Primitive** lastBlockers = nullptr) const;
+    // The same samples from eyeFeelers' (known: one per light; those not decided get their
+    // feeler here).
+    void knownSamples(const Hit& hit, const FeelerSample* known, std::vector<LightSample>& out,
+                      RayCounts& counts, const Primitive** lastBlockers) const;
+    // The transmittance of light li's feeler from hit (sample s, start t0): the shadow cache's
+    // blocker first (lastBlockers, may be null), else the walk (it leaves its blocker there).
+    double feeler(const Hit& hit, const LightSample& s, double t0, std::size_t li,
+                  const Primitive* self, const Primitive** lastBlockers) const;
     // transmittance without counting the feeler (the caller counts it); *blocker (if not
     // null) gets the opaque blocker that ended the walk, or null.
     double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
