@@ -545,3 +545,120 @@ TEST_CASE("packets: any shadow cache content gives the uncached colour", "[bvh][
     REQUIRE(changed > 0); // the feelers wrote their blockers back
     sc.setAggregate(nullptr);
 }
+
+// Feelers traced as packets from the light (Tracer::eyeFeelers, ParallelRenderOptions::
+// lightFeelers): the reverse walk is only a filter, each candidate confirmed by its exact
+// test on the feeler's own segment. Every sample it decides must be the forward feeler's
+// transmittance bit for bit: on the shadow cache's scene (transparent blockers: left to the
+// forward feeler) and on the same scene made opaque (every lane decided), with lights
+// placed so that shadow borders of spheres and triangle edges cross the packets' rows.
+namespace {
+void opaqueFeelerScene(Scene& sc) {
+    shadowCacheScene(sc);
+    for (Material& m : sc.materials)
+        m.kt = 0; // every blocker opaque: eyeFeelers decides every lane it walks
+    // A triangle in a plane through the first light (1, 1, 3.5), so seen edge-on from it
+    // (its third vertex is the light + (light − first vertex)/2), and a flat one whose long
+    // edge's shadow runs along the rows: feelers graze their edges.
+    sc.add(Triangle({-3, 2, 2}, {3, 2, 2}, {3, 0.5, 4.25}), 1);
+    sc.add(Triangle({-6, -1, 1.5}, {6, -1, 1.5}, {0, -1.5, 1.5}), 1);
+}
+} // namespace
+
+TEST_CASE("packets: feelers from the light give the forward feeler's transmittance",
+          "[bvh][packet][shadow]") {
+    for (int variant = 0; variant < 2; ++variant) {
+        Scene sc;
+        if (variant == 0)
+            shadowCacheScene(sc);
+        else
+            opaqueFeelerScene(sc);
+        const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+        PhongModel model;
+        TraceSettings settings;
+        settings.maxDepth = 4;
+        Trees trees(sc);
+        for (const auto& bvh : trees.bvhs) {
+            INFO("variant " << variant << " width " << bvh->stats().width << " avx512 "
+                            << bvh->stats().avx512 << " packets " << bvh->packetWidth());
+            sc.setAggregate(bvh.get());
+            const Tracer tracer(sc, model, settings);
+            const std::size_t nl = sc.lights.size();
+            long decided = 0, lit = 0, shadowed = 0;
+            for (int y = 0; y < 60; ++y)
+                for (int x = 0; x < 80; x += kMaxPacket) {
+                    Ray rays[kMaxPacket];
+                    Hit hits[kMaxPacket];
+                    for (int j = 0; j < kMaxPacket; ++j) {
+                        rays[j] = cam.primaryRay(x + j, y, 80, 60);
+                        if (!sc.intersect(rays[j], 0.0, kInf, hits[j])) hits[j].primitive = nullptr;
+                    }
+                    std::vector<const Primitive*> cache(nl, nullptr);
+                    std::vector<FeelerSample> known(kMaxPacket * nl);
+                    tracer.eyeFeelers(hits, kMaxPacket, cache.data(), known.data());
+                    for (int j = 0; j < kMaxPacket; ++j) {
+                        if (!hits[j].primitive) continue;
+                        const std::vector<LightSample> want = tracer.sampleLights(hits[j]);
+                        for (std::size_t li = 0; li < nl; ++li) {
+                            const FeelerSample& f = known[std::size_t(j) * nl + li];
+                            INFO("pixel " << x + j << " " << y << " light " << li);
+                            REQUIRE(sameBits(f.sample.toLight, want[li].toLight));
+                            REQUIRE(f.sample.distance == want[li].distance);
+                            if (!f.need) {
+                                REQUIRE(f.sample.transmittance == want[li].transmittance);
+                                continue;
+                            }
+                            if (!(f.sample.transmittance >= 0)) continue; // not decided
+                            ++decided;
+                            REQUIRE(f.sample.transmittance == want[li].transmittance);
+                            (f.sample.transmittance == 0 ? shadowed : lit) += 1;
+                        }
+                    }
+                }
+            if (bvh->packetWidth() > 1) {
+                // Both answers occur, on most feelers (the opaque variant: every walked lane).
+                REQUIRE(lit > 500);
+                REQUIRE(shadowed > 500);
+            } else {
+                REQUIRE(decided == 0); // the binary tree walks no packets
+            }
+        }
+        sc.setAggregate(nullptr);
+    }
+}
+
+TEST_CASE("packets: frames with feelers from the light keep the single path's picture",
+          "[bvh][packet][shadow]") {
+    for (int variant = 0; variant < 2; ++variant) {
+        Scene sc;
+        if (variant == 0)
+            shadowCacheScene(sc);
+        else
+            opaqueFeelerScene(sc);
+        const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+        PhongModel model;
+        Trees trees(sc);
+        for (const auto& bvh : trees.bvhs) {
+            INFO("variant " << variant << " width " << bvh->stats().width << " avx512 "
+                            << bvh->stats().avx512 << " packets " << bvh->packetWidth());
+            sc.setAggregate(bvh.get());
+            ParallelRenderOptions opt;
+            opt.trace.maxDepth = 4;
+            opt.cornerRays = true;
+            opt.threads = 1;
+            opt.packets = false;
+            ParallelRenderStats sst;
+            const wb::Image single = renderParallel(sc, cam, model, 96, 72, opt, &sst);
+            for (int threads : {1, 2, 3}) {
+                opt.threads = threads;
+                opt.packets = true;
+                opt.lightFeelers = true;
+                ParallelRenderStats st;
+                REQUIRE(renderParallel(sc, cam, model, 96, 72, opt, &st).data == single.data);
+                REQUIRE(st.shadowRays == sst.shadowRays);
+                REQUIRE(st.secondaryRays == sst.secondaryRays);
+            }
+        }
+        sc.setAggregate(nullptr);
+    }
+}

@@ -34,8 +34,9 @@ struct ParallelRenderOptions {
     // (Aggregate::intersectPacket; issue 21); the same picture as one by one (false).
     bool packets = true;
     // With packets: the eye hits' feelers to each point light traced as packets from the
-    // light (Tracer::eyeFeelers; issue 21); false: one by one from the hits (the same picture).
-    bool lightFeelers = true;
+    // light (Tracer::eyeFeelers; issue 21), the same picture. Off by default: on the balls 4
+    // frame it ran 3.6% more instructions and no faster (docs/raytrace-scale.md, rtframe2).
+    bool lightFeelers = false;
     // Called after each finished tile, from a worker thread, serialised by a mutex.
     // With cornerRays the tiles are tiles of the corner grid and the image is complete
     // only at the end: a tile averages the pixels whose corners are all its own, the
