@@ -1450,23 +1450,10 @@ unsigned Bvh::occludedPacket(const Ray* rays, const double* tMin, const double* 
 unsigned Bvh::candidatesPacket(const Ray* rays, const double* tMin, const double* tMax,
                                unsigned lanes,
                                const std::function<bool(int, const Primitive&)>& visit) const {
-    lanes &= (1u << kMaxPacket) - 1;
-    const int w = packetWidth();
-    if (w == 1) return 0;
-    unsigned walked = 0;
-    for (int k = 0; k < kMaxPacket; k += w)
-        if (const unsigned part = (lanes >> k) & ((1u << w) - 1)) {
-            if (k == 0) {
-                walked |= path_->candidatesPacket(*this, rays, tMin, tMax, part, visit);
-                continue;
-            }
-            walked |= path_->candidatesPacket(*this, rays + k, tMin + k, tMax + k, part,
-                                              [&](int j, const Primitive& q) {
-                                                  return visit(j + k, q);
-                                              })
-                      << k;
-        }
-    return walked;
+    // The shaft walk takes all kMaxPacket lanes whatever the node width (its leaf tests run
+    // in lanes of their own); the binary tree has none.
+    if (packetWidth() == 1) return 0;
+    return path_->candidatesPacket(*this, rays, tMin, tMax, lanes, visit);
 }
 
 std::unique_ptr<Bvh> makeAggregate(const Scene& scene, std::size_t crossover, BvhOptions options) {

@@ -1192,24 +1192,235 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return blocked;
     }
 
-    // Every candidate of each packet ray (issue 21: feelers traced from the light): visit(j, q)
-    // for the primitives q whose float tests let ray j's segment near them, until visit says
-    // lane j is done (true). Returns the lanes walked as one packet (the caller asks the rest).
+    // Every candidate of up to kMaxPacket segments (issue 21: the shadow feelers of a
+    // packet's eye hits to one point light): visit(j, q) for a superset of the primitives q
+    // whose exact test finds a point of ray j's segment (tMin[j], tMax[j]], until visit says
+    // lane j is done (true). Returns the lanes walked (all of `lanes`).
+    //
+    // One walk for the packet, by a shaft: every segment lies in the convex hull of two
+    // boxes, A (the segments' start points) and B (their end points), both widened by m
+    // below. That hull is {(1 − t)·a + t·b : a ∈ A, b ∈ B, t ∈ [0, 1]}; its slice at t is
+    // the box [Alo + t·(Blo − Alo), Ahi + t·(Bhi − Ahi)], linear in t on every axis, so a
+    // node box [lo, hi] meets the hull iff the t ∈ [0, 1] with Alo + t·da <= hi and
+    // Ahi + t·db >= lo on all three axes (da = Blo − Alo, db = Bhi − Ahi) form a non-empty
+    // interval: two slab-like bounds per axis, (hi − Alo)/da and (lo − Ahi)/db, each an
+    // upper or a lower bound of t by the sign of da or db. So one node test serves the
+    // whole packet, at about twice a single ray's cost. Rounding: m = 2^-18·(the largest
+    // |coordinate| of the end points + the longest segment's |·|∞) covers the exact tests'
+    // confirmations just off a primitive's box (a grazing sphere's ~2^-26 relative, the
+    // single walk's node margin is 2^-21), the double end points' rounding (~2^-52), the
+    // float conversion (rounded outward) and the float da, db (2^-24 relative); the bounds
+    // of t are each off by at most 3 roundings (2^-22 relative; only those within [−2, 2]
+    // decide), covered by accepting t0 <= t1 + 2^-18. |da|, |db| below m are replaced by
+    // ∓m, ±m, which widens the hull (never a division by zero). The leaves: each sphere is
+    // tested against the lanes still walking by the single walk's float sphere filter,
+    // lane by lane (the same operations and margins, in the lanes: visitLeaf's argument),
+    // every other kind goes to visit for every lane.
     static unsigned candidatesPacket(const Bvh& b, const Ray* rays, const double* tMin,
                                      const double* tMax, unsigned lanes,
                                      const std::function<bool(int, const Primitive&)>& visit) {
-        if (b.stats_.primitives == 0 || b.rootLeafCount_ > 0) return 0;
-        Packet p;
-        const unsigned packet = joinPacket(p, rays, tMin, lanes);
-        unsigned live = packet;
+        using namespace bvh_detail;
+        lanes &= (1u << kMaxPacket) - 1;
+        if (b.stats_.primitives == 0 || b.rootLeafCount_ > 0 || lanes == 0) return 0;
+        unsigned live = lanes;
         for (const Primitive* q : b.unbounded_)
             for (unsigned m = live; m; m &= m - 1)
                 if (visit(__builtin_ctz(m), *q)) live &= ~(m & -m);
-        if (live)
-            walkPacket<true>(b, p, live, tMax, [&](int j, std::uint32_t i, const RayData*) {
-                return !visit(j, *b.order_[i]);
-            });
-        return packet;
+        if (!live) return lanes;
+        // The end points' boxes in double, and the lanes' sphere filter data (SoA, 2 × 4).
+        glm::dvec3 aLo(std::numeric_limits<double>::infinity()), aHi(-aLo.x), bLo(aLo), bHi(aHi);
+        double big = 0, len = 0;
+        alignas(16) float fo[3][kMaxPacket] = {}, fd[3][kMaxPacket] = {}, om[kMaxPacket] = {};
+        unsigned filterable = 0; // lanes with a unit direction (the float sphere test applies)
+        for (unsigned m = live; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            const Ray& ray = rays[j];
+            const glm::dvec3 p = ray.origin + tMin[j] * ray.direction;
+            const glm::dvec3 q = ray.origin + tMax[j] * ray.direction;
+            aLo = glm::min(aLo, p);
+            aHi = glm::max(aHi, p);
+            bLo = glm::min(bLo, q);
+            bHi = glm::max(bHi, q);
+            for (int a = 0; a < 3; ++a) {
+                big = std::max(big, std::max(std::abs(p[a]), std::abs(q[a])));
+                len = std::max(len, std::abs(q[a] - p[a]));
+            }
+            const glm::dvec3& o = ray.origin;
+            const glm::dvec3& d = ray.direction;
+            if (std::abs(glm::dot(d, d) - 1) < 1e-6) { // RayData::sphereSetup's operations
+                filterable |= 1u << j;
+                for (int a = 0; a < 3; ++a) {
+                    fo[a][j] = float(o[a]);
+                    fd[a][j] = float(d[a]);
+                }
+                om[j] = float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) * kSphereMargin;
+            }
+        }
+        if (!(big + len < 1e30)) { // infinite or NaN segments: no shaft
+            for (unsigned m = live; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                for (std::size_t i = 0; i < b.order_.size(); ++i)
+                    if (visit(j, *b.order_[i])) break;
+            }
+            return lanes;
+        }
+        const double mg = (big + len) * 0x1p-18;
+        V lo1[3], hi1[3], inv1[3], inv2[3], nlo1[3], nhi1[3], nlo2[3], nhi2[3];
+        const float inf = std::numeric_limits<float>::infinity();
+        for (int a = 0; a < 3; ++a) {
+            const float al = floatDown(aLo[a] - mg), ah = floatUp(aHi[a] + mg);
+            const float bl = floatDown(bLo[a] - mg), bh = floatUp(bHi[a] + mg);
+            float da = bl - al, db = bh - ah;
+            const float fm = float(mg);
+            if (std::abs(da) < fm) da = -fm; // lo(t) = al − t·m: a wider hull
+            if (std::abs(db) < fm) db = fm;  // hi(t) = ah + t·m
+            lo1[a] = L::set1(al);
+            hi1[a] = L::set1(ah);
+            inv1[a] = L::set1(1.0f / da);
+            inv2[a] = L::set1(1.0f / db);
+            // X1 = (hi − al)/da: t <= X1 for da > 0, t >= X1 for da < 0; X2 = (lo − ah)/db:
+            // t >= X2 for db > 0, t <= X2 for db < 0. Lower bounds enter t0 as min(X, n),
+            // upper bounds t1 as max(X, n): n = −inf keeps X in t1, +inf keeps it in t0.
+            nlo1[a] = L::set1(da > 0 ? -inf : inf); // min(X1, ·) into t0
+            nhi1[a] = L::set1(da > 0 ? -inf : inf); // max(X1, ·) into t1
+            nlo2[a] = L::set1(db > 0 ? inf : -inf);
+            nhi2[a] = L::set1(db > 0 ? inf : -inf);
+        }
+        // Each lane's own hull (its start and end point, each widened by m): the leaves'
+        // per-lane test.
+        alignas(16) float jLo[3][kMaxPacket] = {}, jHi[3][kMaxPacket] = {},
+                          jInv1[3][kMaxPacket] = {}, jInv2[3][kMaxPacket] = {},
+                          jN1[3][kMaxPacket] = {}, jM1[3][kMaxPacket] = {}, jN2[3][kMaxPacket] = {},
+                          jM2[3][kMaxPacket] = {};
+        for (unsigned m = live; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            const Ray& ray = rays[j];
+            const glm::dvec3 p = ray.origin + tMin[j] * ray.direction;
+            const glm::dvec3 q = ray.origin + tMax[j] * ray.direction;
+            for (int a = 0; a < 3; ++a) {
+                const float pl = floatDown(p[a] - mg), ph = floatUp(p[a] + mg);
+                const float ql = floatDown(q[a] - mg), qh = floatUp(q[a] + mg);
+                float da = ql - pl, db = qh - ph;
+                const float fm = float(mg);
+                if (std::abs(da) < fm) da = -fm;
+                if (std::abs(db) < fm) db = fm;
+                jLo[a][j] = pl;
+                jHi[a][j] = ph;
+                jInv1[a][j] = 1.0f / da;
+                jInv2[a][j] = 1.0f / db;
+                jN1[a][j] = da > 0 ? -inf : inf;
+                jM1[a][j] = da > 0 ? -inf : inf;
+                jN2[a][j] = db > 0 ? inf : -inf;
+                jM2[a][j] = db > 0 ? inf : -inf;
+            }
+        }
+        const V zero = L::set1(0.0f), one = L::set1(1.0f), slack = L::set1(0x1p-18f);
+        const std::vector<Node>& nodes = nodesOf(b);
+        std::uint32_t stack[kStack];
+        int sp = 0;
+        std::uint32_t cur = 0;
+        // Sphere i against the lanes still walking: visitLeaf's float sphere filter with the
+        // lanes holding rays, not spheres; then visit for those it passes.
+        auto sphereLanes = [&](std::uint32_t i, unsigned in) {
+            unsigned cand = in & ~filterable;
+            if (in & filterable) {
+                const __m128 sx = _mm_set1_ps(b.sx_[i]), sy = _mm_set1_ps(b.sy_[i]),
+                             sz = _mm_set1_ps(b.sz_[i]);
+                const __m128 rm0 = _mm_set1_ps(b.sr_[i]), sm = _mm_set1_ps(b.sm_[i]);
+                for (int h = 0; h < kMaxPacket; h += 4) {
+                    if (!((in & filterable) >> h & 0xF)) continue;
+                    const __m128 fdx = _mm_load_ps(&fd[0][h]), fdy = _mm_load_ps(&fd[1][h]),
+                                 fdz = _mm_load_ps(&fd[2][h]);
+                    const __m128 fx = _mm_sub_ps(_mm_load_ps(&fo[0][h]), sx);
+                    const __m128 fy = _mm_sub_ps(_mm_load_ps(&fo[1][h]), sy);
+                    const __m128 fz = _mm_sub_ps(_mm_load_ps(&fo[2][h]), sz);
+                    const __m128 hh = _mm_add_ps(
+                        _mm_add_ps(_mm_mul_ps(fx, fdx), _mm_mul_ps(fy, fdy)), _mm_mul_ps(fz, fdz));
+                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(hh, fdx));
+                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(hh, fdy));
+                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(hh, fdz));
+                    const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
+                                                 _mm_mul_ps(lz, lz));
+                    const __m128 rm = _mm_add_ps(rm0, _mm_add_ps(_mm_load_ps(&om[h]), sm));
+                    cand |=
+                        (unsigned(_mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)))) << h) &
+                        in & filterable;
+                }
+            }
+            for (unsigned m = cand & live; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                if (visit(j, *b.order_[i])) live &= ~(1u << j);
+            }
+        };
+        // A leaf's box against each lane's own segment: the same hull test with the lane's
+        // own two end-point boxes (widened by the same m), four lanes at a time.
+        auto laneBoxes = [&](const Node& nd, int c) {
+            unsigned in = 0;
+            for (int h = 0; h < kMaxPacket; h += 4) {
+                if (!(live >> h & 0xF)) continue;
+                __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(1.0f);
+                for (int a = 0; a < 3; ++a) {
+                    const __m128 loP = _mm_set1_ps(boxLo(nd, a, c));
+                    const __m128 hiP = _mm_set1_ps(boxHi(nd, a, c));
+                    const __m128 x1 = _mm_mul_ps(_mm_sub_ps(hiP, _mm_load_ps(&jLo[a][h])),
+                                                 _mm_load_ps(&jInv1[a][h]));
+                    const __m128 x2 = _mm_mul_ps(_mm_sub_ps(loP, _mm_load_ps(&jHi[a][h])),
+                                                 _mm_load_ps(&jInv2[a][h]));
+                    t0 = _mm_max_ps(t0, _mm_max_ps(_mm_min_ps(x1, _mm_load_ps(&jN1[a][h])),
+                                                   _mm_min_ps(x2, _mm_load_ps(&jN2[a][h]))));
+                    t1 = _mm_min_ps(t1, _mm_min_ps(_mm_max_ps(x1, _mm_load_ps(&jM1[a][h])),
+                                                   _mm_max_ps(x2, _mm_load_ps(&jM2[a][h]))));
+                }
+                in |= unsigned(
+                          _mm_movemask_ps(_mm_cmple_ps(t0, _mm_add_ps(t1, _mm_set1_ps(0x1p-18f)))))
+                      << h;
+            }
+            return in & live;
+        };
+        auto leafVisit = [&](const Node& nd, int c) {
+            const unsigned in = laneBoxes(nd, c);
+            if (!in) return;
+            const std::uint32_t first = nd.child[c], end = first + nd.count[c];
+            for (std::uint32_t i = first; i < end && (in & live); ++i) {
+                if (b.kind_[i] == kSphere) {
+                    sphereLanes(i, in & live);
+                    continue;
+                }
+                for (unsigned m = in & live; m; m &= m - 1) {
+                    const int j = __builtin_ctz(m);
+                    if (visit(j, *b.order_[i])) live &= ~(1u << j);
+                }
+            }
+        };
+        while (true) {
+            const Node& nd = nodes[cur];
+            V t0 = zero, t1 = one;
+            for (int a = 0; a < 3; ++a) {
+                const V loP = planes(nd, kOffsets.v[0][a], a);
+                const V hiP = planes(nd, kOffsets.v[0][3 + a], a);
+                const V x1 = L::mul(L::sub(hiP, lo1[a]), inv1[a]);
+                const V x2 = L::mul(L::sub(loP, hi1[a]), inv2[a]);
+                t0 = L::max(t0, L::max(L::min(x1, nlo1[a]), L::min(x2, nlo2[a])));
+                t1 = L::min(t1, L::min(L::max(x1, nhi1[a]), L::max(x2, nhi2[a])));
+            }
+            int mask = L::le(t0, L::add(t1, slack)) & validMask(nd);
+            bool haveNext = false;
+            while (mask) {
+                const int c = __builtin_ctz(unsigned(mask));
+                mask &= mask - 1;
+                if (nd.count[c] > 0) {
+                    leafVisit(nd, c);
+                    if (!live) return lanes;
+                } else {
+                    if (haveNext) stack[sp++] = cur;
+                    cur = nd.child[c];
+                    haveNext = true;
+                }
+            }
+            if (haveNext) continue;
+            if (sp == 0) return lanes;
+            cur = stack[--sp];
+        }
     }
 
     // The exact decisions, called directly for the kinds the leaves know (the same

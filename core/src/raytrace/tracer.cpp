@@ -203,7 +203,6 @@ void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
     for (std::size_t li = 0; li < nl; ++li) {
         const Light& l = scene_.lights[li];
         if (l.kind != Light::Kind::Point) continue; // no common origin
-        Ray rev[kMaxPacket];
         double rMin[kMaxPacket], rMax[kMaxPacket];
         unsigned lanes = 0;
         for (int j = 0; j < n; ++j) {
@@ -222,23 +221,18 @@ void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
                 f.sample.transmittance = 0.0;
                 continue;
             }
-            // The same line from the light (the negated direction is exact), its segment
-            // (0, distance − t0) widened at both ends: only a filter (tracer.h).
-            rev[j].origin = l.position;
-            rev[j].direction = -f.sample.toLight;
-            const double slack = f.sample.distance * 0x1p-30;
-            rMin[j] = -slack;
-            rMax[j] = (f.sample.distance - f.t0) + slack;
+            // The feeler's own segment: the shaft walk bounds it with its end points.
+            rMin[j] = f.t0;
+            rMax[j] = f.sample.distance;
             lanes |= 1u << j;
         }
         if (!lanes) continue;
         ln.blocked = ln.seeThrough = 0;
         const unsigned walked =
-            agg.candidatesPacket(rev, rMin, rMax, lanes, [&ln](int j, const Primitive& q) {
+            agg.candidatesPacket(ln.fwd, rMin, rMax, lanes, [&ln](int j, const Primitive& q) {
                 // Each candidate by its exact test on the feeler's own segment, as the
                 // forward walk asks it (never the hit's own flat primitive).
-                if (&q == ln.self[j] || !q.occluded(ln.fwd[j], ln.t0[j], ln.dist[j]))
-                    return false;
+                if (&q == ln.self[j] || !q.occluded(ln.fwd[j], ln.t0[j], ln.dist[j])) return false;
                 if (ln.tracer.scene_.materials[size_t(q.material)].kt <
                     ln.tracer.settings_.opaqueKt) {
                     ln.blocked |= 1u << j;

@@ -662,3 +662,109 @@ TEST_CASE("packets: frames with feelers from the light keep the single path's pi
         sc.setAggregate(nullptr);
     }
 }
+
+// The shaft walk of a packet's segments (Aggregate::candidatesPacket, issue 21: a packet's
+// shadow feelers to one point light in one walk): for each lane, every primitive whose
+// exact test finds a point of its segment is visited, until the visitor ends the lane, and
+// nothing is visited for a lane after it ended. Packets: feelers from a row of points to one
+// light (also with the points and the light in one axis plane, so that the shaft's da or db
+// is zero), points on primitives' surfaces and node box corners (segments grazing), segments
+// scattered anywhere, one segment in every lane, lanes masked, lanes ended at random; every
+// SIMD path, the quantised trees; scenes at scale 1, 1e-30 and 1e25.
+TEST_CASE("packets: the shaft walk visits every blocker of every lane", "[bvh][packet][shadow]") {
+    for (double s : {1.0, 1e-30, 1e25}) {
+        INFO("scale " << s);
+        std::mt19937_64 g(21);
+        Scene sc;
+        mixedScene(sc, 1500, g, s);
+        const Trees t(sc);
+        std::uniform_real_distribution<double> u(0, 1);
+        const std::vector<Bvh::WideNode>& corners = t.bvhs.front()->wideNodes();
+        long blockers = 0, ended = 0, packets = 0;
+        for (int i = 0; i < 400; ++i) {
+            Ray rays[kMaxPacket];
+            double tMin[kMaxPacket], tMax[kMaxPacket];
+            glm::dvec3 light = rnd3(g, -14 * s, 14 * s);
+            const glm::dvec3 row = rnd3(g, -10 * s, 10 * s), step = rnd3(g, -0.05 * s, 0.05 * s);
+            const int kind = i % 6;
+            if (kind == 3) { // the light at a node box's corner
+                const Bvh::WideNode& nd = corners[g() % corners.size()];
+                const int c = int(g() % 4);
+                if (nd.lo[0][c] <= nd.hi[0][c])
+                    light = glm::dvec3((g() & 1) ? nd.lo[0][c] : nd.hi[0][c],
+                                       (g() & 1) ? nd.lo[1][c] : nd.hi[1][c],
+                                       (g() & 1) ? nd.lo[2][c] : nd.hi[2][c]);
+            }
+            for (int j = 0; j < kMaxPacket; ++j) {
+                glm::dvec3 p = row + double(j) * step;
+                if (kind == 1) { // points and light in one plane z = const, x = const
+                    p.z = light.z;
+                    if (j % 2) p.x = light.x;
+                } else if (kind == 2 || kind == 3) { // points on primitives' surfaces
+                    const Primitive& q = *sc.primitives[g() % sc.primitives.size()];
+                    Hit h;
+                    Ray probe;
+                    probe.origin = p;
+                    probe.direction = glm::normalize(0.5 * (q.bounds().lo + q.bounds().hi) - p);
+                    if (q.intersect(probe, 0, kInf, h)) p = h.point;
+                } else if (kind == 4) { // scattered anywhere
+                    p = rnd3(g, -14 * s, 14 * s);
+                }
+                glm::dvec3 end = kind == 4 ? rnd3(g, -14 * s, 14 * s) : light;
+                if (kind == 5) p = row; // one segment in every lane
+                const glm::dvec3 v = end - p;
+                const double dist = glm::length(v);
+                rays[j].origin = p;
+                rays[j].direction = dist > 0 ? v / dist : glm::dvec3(0, 0, 1);
+                tMin[j] = (i % 2) ? 1e-6 * dist : 0;
+                tMax[j] = dist;
+            }
+            const unsigned lanes = i % 3 == 1 ? unsigned(g()) & 0xFF : 0xFFu;
+            // The blockers of each lane, by the plain loop of exact tests.
+            std::vector<const Primitive*> want[kMaxPacket];
+            for (int j = 0; j < kMaxPacket; ++j)
+                if ((lanes >> j) & 1)
+                    for (const auto& q : sc.primitives)
+                        if (q->occluded(rays[j], tMin[j], tMax[j])) want[j].push_back(q.get());
+            for (const auto& bvh : t.bvhs) {
+                INFO("packet " << i << " width " << bvh->stats().width << " avx512 "
+                               << bvh->stats().avx512 << " packets " << bvh->packetWidth()
+                               << " quantised " << !bvh->quantNodes8().empty());
+                std::vector<const Primitive*> seen[kMaxPacket];
+                unsigned done = 0;
+                const bool endSome = i % 4 == 2;
+                const unsigned walked =
+                    bvh->candidatesPacket(rays, tMin, tMax, lanes, [&](int j, const Primitive& q) {
+                        REQUIRE((lanes >> j) & 1);
+                        REQUIRE_FALSE((done >> j) & 1); // never visited after it ended
+                        seen[j].push_back(&q);
+                        if (endSome && g() % 5 == 0) {
+                            done |= 1u << j;
+                            return true;
+                        }
+                        return false;
+                    });
+                if (bvh->packetWidth() == 1) {
+                    REQUIRE(walked == 0);
+                    continue;
+                }
+                REQUIRE(walked == lanes);
+                ++packets;
+                for (int j = 0; j < kMaxPacket; ++j) {
+                    if ((done >> j) & 1) {
+                        ++ended;
+                        continue;
+                    }
+                    for (const Primitive* q : want[j]) {
+                        INFO("lane " << j);
+                        REQUIRE(std::find(seen[j].begin(), seen[j].end(), q) != seen[j].end());
+                        ++blockers;
+                    }
+                }
+            }
+        }
+        INFO(blockers << " blockers, " << ended << " lanes ended");
+        REQUIRE(blockers > packets); // the segments meet things
+        REQUIRE(ended > 0);
+    }
+}
