@@ -1447,15 +1447,6 @@ unsigned Bvh::occludedPacket(const Ray* rays, const double* tMin, const double* 
     return blocked;
 }
 
-unsigned Bvh::candidatesPacket(const Ray* rays, const double* tMin, const double* tMax,
-                               unsigned lanes,
-                               const std::function<bool(int, const Primitive&)>& visit) const {
-    // The shaft walk takes all kMaxPacket lanes whatever the node width (its leaf tests run
-    // in lanes of their own); the binary tree has none.
-    if (packetWidth() == 1) return 0;
-    return path_->candidatesPacket(*this, rays, tMin, tMax, lanes, visit);
-}
-
 std::unique_ptr<Bvh> makeAggregate(const Scene& scene, std::size_t crossover, BvhOptions options) {
     if (scene.primitives.size() < crossover) return nullptr;
     return std::make_unique<Bvh>(scene.primitives, options);

@@ -133,9 +133,6 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
         std::vector<const Primitive*> lastBlockers(
             opt.packets ? std::size_t(std::max(opt.trace.maxDepth, 0) + 1) * scene.lights.size()
                         : 0);
-        // eyeFeelers' transmittances of a packet's hits, one per light.
-        const std::size_t nLights = scene.lights.size();
-        std::vector<FeelerSample> knownLight(opt.packets ? std::size_t(kMaxPacket) * nLights : 0);
         auto rayOf = [&](int x, int y) {
             return opt.cornerRays ? lookAt->rayAt(x, y, width, height)
                                   : camera.primaryRay(x, y, width, height);
@@ -175,17 +172,11 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                     tMax[j] = std::numeric_limits<double>::infinity();
                 }
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
-                for (int j = 0; j < n; ++j)
+                for (int j = 0; j < n; ++j) {
                     if (!((found >> j) & 1)) hits[j].primitive = nullptr;
-                const FeelerSample* known = nullptr;
-                if (opt.lightFeelers) {
-                    tracer.eyeFeelers(hits, n, lastBlockers.data(), knownLight.data());
-                    known = knownLight.data();
-                }
-                for (int j = 0; j < n; ++j)
                     store(x + j, y,
-                          tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data(),
-                                           known ? known + std::size_t(j) * nLights : nullptr));
+                          tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data()));
+                }
             }
         }
         // The pixels whose four corners are all this tile's, at once (in parallel, and

@@ -85,55 +85,6 @@ void Tracer::sampleLights(const Hit& hit, std::vector<LightSample>& out) const {
     shadowRays += counts.shadow;
 }
 
-namespace {
-// One light's sample at a hit (sampleLightsFrom and eyeFeelers: the same operations, so the
-// same bits): s.toLight and s.distance; true when a feeler is needed, started at t0, else
-// s.transmittance is set (0: the surface faces away from the light; 1: the light is closer
-// than the offset). Fills s in place: the single path's sampleLightsFrom measured 18% more
-// instructions when it copied a returned sample.
-inline bool feelerOf(const Hit& hit, double eps, const Light& l, LightSample& s, double& t0) {
-    if (l.kind == Light::Kind::Point) {
-        const glm::dvec3 v = l.position - hit.point;
-        const double dist = glm::length(v);
-        s.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
-        s.distance = dist;
-    } else {
-        const double len = glm::length(l.direction);
-        s.toLight = len > 0 ? -l.direction / len : hit.normal;
-        s.distance = std::numeric_limits<double>::infinity();
-    }
-    if (glm::dot(s.toLight, hit.normal) > 0) {
-        // The feeler is the exact segment point–light, started where it is as far off
-        // the surface as the normal offset of reflected rays: a feeler that grazes a
-        // blocker's border (seed 000's does, exactly) is judged on the true line.
-        t0 = feelerStartAt(eps, hit.normal, s.toLight);
-        if (t0 < s.distance) return true;
-        s.transmittance = 1.0; // the light is closer than the offset
-    } else {
-        s.transmittance = 0.0; // the surface faces away from the light
-    }
-    return false;
-}
-} // namespace
-
-inline double Tracer::feeler(const Hit& hit, const LightSample& s, double t0, std::size_t li,
-                      const Primitive* self, const Primitive** lastBlockers) const {
-    const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
-    if (cached) {
-        Ray feeler;
-        feeler.origin = hit.point;
-        feeler.direction = s.toLight;
-        // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked by its
-        // exact test on this feeler's segment, as the walk would ask it (never `self`; only
-        // an opaque material makes the transmittance 0).
-        if (cached != self && scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
-            cached->occluded(feeler, t0, s.distance))
-            return 0.0;
-    }
-    return feelerTransmittance(hit.point, s.toLight, t0, s.distance, self,
-                               lastBlockers ? &lastBlockers[li] : nullptr);
-}
-
 void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                               std::vector<LightSample>& out, RayCounts& counts,
                               const Primitive** lastBlockers) const {
@@ -144,121 +95,54 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
     const double eps = glm::length(offsetOrigin - hit.point);
     const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
     for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
+        const Light& l = scene_.lights[li];
         LightSample s;
-        s.light = &scene_.lights[li];
-        double t0 = 0;
-        if (feelerOf(hit, eps, *s.light, s, t0)) {
-            ++counts.shadow;
-            s.transmittance = feeler(hit, s, t0, li, self, lastBlockers);
+        s.light = &l;
+        if (l.kind == Light::Kind::Point) {
+            const glm::dvec3 v = l.position - hit.point;
+            const double dist = glm::length(v);
+            s.toLight = dist > 0 ? v / dist : hit.normal; // light exactly at the point
+            s.distance = dist;
+        } else {
+            const double len = glm::length(l.direction);
+            s.toLight = len > 0 ? -l.direction / len : hit.normal;
+            s.distance = std::numeric_limits<double>::infinity();
+        }
+        if (glm::dot(s.toLight, hit.normal) > 0) {
+            // The feeler is the exact segment point–light, started where it is as far off
+            // the surface as the normal offset of reflected rays: a feeler that grazes a
+            // blocker's border (seed 000's does, exactly) is judged on the true line.
+            const double t0 = feelerStartAt(eps, hit.normal, s.toLight);
+            if (t0 < s.distance) {
+                ++counts.shadow;
+                const Primitive* cached = lastBlockers ? lastBlockers[li] : nullptr;
+                Ray feeler;
+                feeler.origin = hit.point;
+                feeler.direction = s.toLight;
+                // The shadow cache (traceFrom): the previous feeler's opaque blocker, asked
+                // by its exact test on this feeler's segment, as the walk would ask it (never
+                // `self`; only an opaque material makes the transmittance 0).
+                if (cached && cached != self &&
+                    scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
+                    cached->occluded(feeler, t0, s.distance))
+                    s.transmittance = 0.0;
+                else
+                    s.transmittance =
+                        feelerTransmittance(hit.point, s.toLight, t0, s.distance, self,
+                                            lastBlockers ? &lastBlockers[li] : nullptr);
+            } else {
+                s.transmittance = 1.0; // the light is closer than the offset
+            }
+        } else {
+            s.transmittance = 0.0; // the surface faces away from the light
         }
         out.push_back(s);
     }
 }
 
-void Tracer::knownSamples(const Hit& hit, const FeelerSample* known,
-                          std::vector<LightSample>& out, RayCounts& counts,
-                          const Primitive** lastBlockers) const {
-    out.clear();
-    out.reserve(scene_.lights.size());
-    const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
-    for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
-        const FeelerSample& f = known[li];
-        out.push_back(f.sample);
-        if (f.need) {
-            ++counts.shadow;
-            if (!(f.sample.transmittance >= 0))
-                out.back().transmittance = feeler(hit, f.sample, f.t0, li, self, lastBlockers);
-        }
-    }
-}
-
-void Tracer::eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
-                        FeelerSample* known) const {
-    const std::size_t nl = scene_.lights.size();
-    const Aggregate& agg = scene_.aggregate();
-    const Primitive* self[kMaxPacket];
-    for (int j = 0; j < n; ++j) {
-        if (!hits[j].primitive) continue;
-        // As traceRay and sampleLightsFrom compute them (the same bits).
-        const double eps =
-            glm::length(offsetRayOrigin(hits[j].point, hits[j].normal) - hits[j].point);
-        self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
-        for (std::size_t li = 0; li < nl; ++li) {
-            FeelerSample& f = known[std::size_t(j) * nl + li];
-            f.sample = LightSample{};
-            f.sample.light = &scene_.lights[li];
-            f.need = feelerOf(hits[j], eps, scene_.lights[li], f.sample, f.t0);
-            if (f.need) f.sample.transmittance = -1.0; // not decided yet
-        }
-    }
-    // What the walk's visitor needs, by one reference (std::function keeps it in place).
-    struct Lanes {
-        const Tracer& tracer;
-        Ray fwd[kMaxPacket];
-        double t0[kMaxPacket], dist[kMaxPacket];
-        const Primitive* const* self;
-        unsigned blocked = 0, seeThrough = 0;
-        const Primitive* blocker[kMaxPacket] = {};
-    } ln{*this, {}, {}, {}, self};
-    for (std::size_t li = 0; li < nl; ++li) {
-        const Light& l = scene_.lights[li];
-        if (l.kind != Light::Kind::Point) continue; // no common origin
-        double rMin[kMaxPacket], rMax[kMaxPacket];
-        unsigned lanes = 0;
-        for (int j = 0; j < n; ++j) {
-            if (!hits[j].primitive) continue;
-            FeelerSample& f = known[std::size_t(j) * nl + li];
-            if (!f.need) continue;
-            ln.fwd[j].origin = hits[j].point;
-            ln.fwd[j].direction = f.sample.toLight;
-            ln.t0[j] = f.t0;
-            ln.dist[j] = f.sample.distance;
-            // The shadow cache first, as sampleLightsFrom asks it.
-            const Primitive* cached = lastBlockers[li];
-            if (cached && cached != self[j] &&
-                scene_.materials[size_t(cached->material)].kt < settings_.opaqueKt &&
-                cached->occluded(ln.fwd[j], f.t0, f.sample.distance)) {
-                f.sample.transmittance = 0.0;
-                continue;
-            }
-            // The feeler's own segment: the shaft walk bounds it with its end points.
-            rMin[j] = f.t0;
-            rMax[j] = f.sample.distance;
-            lanes |= 1u << j;
-        }
-        if (!lanes) continue;
-        ln.blocked = ln.seeThrough = 0;
-        const unsigned walked =
-            agg.candidatesPacket(ln.fwd, rMin, rMax, lanes, [&ln](int j, const Primitive& q) {
-                // Each candidate by its exact test on the feeler's own segment, as the
-                // forward walk asks it (never the hit's own flat primitive).
-                if (&q == ln.self[j] || !q.occluded(ln.fwd[j], ln.t0[j], ln.dist[j])) return false;
-                if (ln.tracer.scene_.materials[size_t(q.material)].kt <
-                    ln.tracer.settings_.opaqueKt) {
-                    ln.blocked |= 1u << j;
-                    ln.blocker[j] = &q;
-                    return true; // 0, whatever else blocks
-                }
-                ln.seeThrough |= 1u << j; // Π kt in the walk's order: the forward feeler's
-                return false;
-            });
-        for (unsigned m = walked; m; m &= m - 1) {
-            const int j = __builtin_ctz(m);
-            FeelerSample& f = known[std::size_t(j) * nl + li];
-            if ((ln.blocked >> j) & 1) {
-                f.sample.transmittance = 0.0;
-                lastBlockers[li] = ln.blocker[j];
-            } else if (!((ln.seeThrough >> j) & 1)) {
-                f.sample.transmittance = 1.0;
-            }
-        }
-    }
-}
-
 template <bool kObserve>
 Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
-                       RayCounts& counts, const Hit* known, const Primitive** lastBlockers,
-                       const FeelerSample* knownLight) const {
+                       RayCounts& counts, const Hit* known, const Primitive** lastBlockers) const {
     if (ray.depth == 0)
         ++counts.primary;
     else
@@ -292,10 +176,7 @@ Color Tracer::traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, lo
         // used up by direct() before the recursion below, so nested rays can refill it.
         // (A shading model must not call trace() from direct().)
         thread_local std::vector<LightSample> samples;
-        if (knownLight)
-            knownSamples(hit, knownLight, samples, counts, lastBlockers);
-        else
-            sampleLightsFrom(hit, offsetOrigin, samples, counts, lastBlockers);
+        sampleLightsFrom(hit, offsetOrigin, samples, counts, lastBlockers);
         c = model_.direct(scene_, ray, hit, m, surface, samples);
     }
 
@@ -410,14 +291,6 @@ Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
     // The cache's levels count depth from 0 (an eye ray).
     return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit,
                            ray.depth == 0 ? lastBlockers : nullptr);
-}
-
-Color Tracer::traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
-                        const Primitive** lastBlockers, const FeelerSample* knownLight) const {
-    long budget = settings_.maxRaysPerSample;
-    return traceRay<false>(ray, RayKind::Primary, nullptr, budget, counts, &hit,
-                           ray.depth == 0 ? lastBlockers : nullptr,
-                           ray.depth == 0 ? knownLight : nullptr);
 }
 
 Color Tracer::trace(const Ray& ray, TraceObserver* observer) const {

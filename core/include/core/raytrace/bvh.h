@@ -115,9 +115,6 @@ class Bvh : public Aggregate {
     // Bit j: occluded(rays[j], tMin[j], tMax[j], skip ? skip[j] : nullptr).
     unsigned occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
                             const Primitive* const* skip, unsigned lanes) const;
-    unsigned candidatesPacket(const Ray* rays, const double* tMin, const double* tMax,
-                              unsigned lanes,
-                              const std::function<bool(int, const Primitive&)>& visit) const override;
     // Rays per shared walk: 8 or 4 (wide trees with packets), 1 (binary tree, or packets off).
     int packetWidth() const;
 
@@ -189,8 +186,6 @@ class Bvh : public Aggregate {
                                     unsigned);
         unsigned (*occludedPacket)(const Bvh&, const Ray*, const double*, const double*,
                                    const Primitive* const*, unsigned);
-        unsigned (*candidatesPacket)(const Bvh&, const Ray*, const double*, const double*,
-                                     unsigned, const std::function<bool(int, const Primitive&)>&);
     };
     template <class Lanes, bool Quantised = false> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only

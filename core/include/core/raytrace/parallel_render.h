@@ -33,10 +33,6 @@ struct ParallelRenderOptions {
     // Eye rays in packets of 8 neighbouring pixels of a row, one walk per packet
     // (Aggregate::intersectPacket; issue 21); the same picture as one by one (false).
     bool packets = true;
-    // With packets: the eye hits' feelers to each point light traced as packets from the
-    // light (Tracer::eyeFeelers; issue 21), the same picture. Off by default: on the balls 4
-    // frame it ran 3.6% more instructions and no faster (docs/raytrace-scale.md, rtframe2).
-    bool lightFeelers = false;
     // Called after each finished tile, from a worker thread, serialised by a mutex.
     // With cornerRays the tiles are tiles of the corner grid and the image is complete
     // only at the end: a tile averages the pixels whose corners are all its own, the

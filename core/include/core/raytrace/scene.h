@@ -53,18 +53,6 @@ class Aggregate {
                 found |= unsigned(intersect(rays[j], tMin[j], tMax[j], hits[j])) << j;
         return found;
     }
-    // Candidates of a packet's segments (issue 21: shadow feelers traced from their light,
-    // Tracer::eyeFeelers): for each ray j of the lanes returned, visit(j, q) has been called
-    // for a superset of the primitives whose exact test finds a point of the segment
-    // (tMin[j], tMax[j]] — every such primitive, and others — until it returned true (lane j
-    // done). The lanes not returned were not walked: the caller asks them its own way.
-    // The default walks none; a Bvh walks the rays it can share a walk between.
-    virtual unsigned candidatesPacket(const Ray* /*rays*/, const double* /*tMin*/,
-                                      const double* /*tMax*/, unsigned /*lanes*/,
-                                      const std::function<bool(int, const Primitive&)>& /*visit*/)
-        const {
-        return 0;
-    }
 };
 
 class BruteForce : public Aggregate {

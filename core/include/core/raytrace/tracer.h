@@ -82,14 +82,6 @@ struct RayCounts {
     long long shadow = 0;    // shadow feelers
 };
 
-// One light's sample at a hit with its feeler (Tracer::eyeFeelers): where the feeler starts
-// (t0) and whether one is needed; sample.transmittance −1 while it is not decided.
-struct FeelerSample {
-    LightSample sample;
-    double t0 = 0;
-    bool need = false;
-};
-
 class Tracer {
   public:
     Tracer(const Scene& scene, const ShadingModel& model, TraceSettings settings = {})
@@ -120,25 +112,6 @@ class Tracer {
     // scene: a transparent one or the hit's own flat primitive is not taken as a blocker).
     Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
                     const Primitive** lastBlockers) const;
-    // The feelers of up to kMaxPacket eye hits to each point light, traced as packets FROM
-    // the light (issue 21, renderParallel's packet path): all of a light's rays share one
-    // origin, so the packet's interval test stays tight where the hits' own origins scatter.
-    // The walk is only a filter: each candidate it lets through is asked by its exact test
-    // on the feeler's own segment (what the forward walk asks). known[j·lights + i] gets
-    // hit j's sample of light i as sampleLights makes it, its transmittance the forward
-    // feeler's: 0 (an opaque blocker confirmed), 1 (none confirmed: the reverse walk's
-    // float filters, whose margins are ~2^-20 of the coordinates, pass every primitive
-    // within far more than the ~2^-50 by which the two lines differ, so none the exact
-    // test would confirm is missed), or −1 when not decided (a directional light, a lane
-    // outside the packet, or a transparent blocker, whose Π kt the forward walk gives in
-    // its order): traceFrom then runs the feeler. hits[j] with a null primitive: a miss
-    // (its entries are not written). Asks and updates the shadow cache (lastBlockers'
-    // first level) as traceFrom does.
-    void eyeFeelers(const Hit* hits, int n, const Primitive** lastBlockers,
-                    FeelerSample* known) const;
-    // traceFrom with eyeFeelers' samples for this hit (known: one per light, or null).
-    Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
-                    const Primitive** lastBlockers, const FeelerSample* known) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -162,14 +135,6 @@ class Tracer {
     void sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                           std::vector<LightSample>& out, RayCounts& counts,
                           const Primitive** lastBlockers = nullptr) const;
-    // The same samples from eyeFeelers' (known: one per light; those not decided get their
-    // feeler here).
-    void knownSamples(const Hit& hit, const FeelerSample* known, std::vector<LightSample>& out,
-                      RayCounts& counts, const Primitive** lastBlockers) const;
-    // The transmittance of light li's feeler from hit (sample s, start t0): the shadow cache's
-    // blocker first (lastBlockers, may be null), else the walk (it leaves its blocker there).
-    double feeler(const Hit& hit, const LightSample& s, double t0, std::size_t li,
-                  const Primitive* self, const Primitive** lastBlockers) const;
     // transmittance without counting the feeler (the caller counts it); *blocker (if not
     // null) gets the opaque blocker that ended the walk, or null.
     double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
@@ -185,8 +150,7 @@ class Tracer {
     template <bool kObserve>
     Color traceRay(const Ray& ray, RayKind kind, TraceObserver* observer, long& budget,
                    RayCounts& counts, const Hit* known = nullptr,
-                   const Primitive** lastBlockers = nullptr,
-                   const FeelerSample* knownLight = nullptr) const;
+                   const Primitive** lastBlockers = nullptr) const;
 
     const Scene& scene_;
     const ShadingModel& model_;
