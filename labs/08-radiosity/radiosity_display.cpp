@@ -265,7 +265,7 @@ void RadiosityLab::draw(const View& view) {
     if (skipSlice_)
         skipSlice_ = false;
     else
-        stepOnMainThread(false);
+        stepOnMainThread(false, view.inputWaiting);
 }
 
 void RadiosityLab::drawScene(const View& view) {

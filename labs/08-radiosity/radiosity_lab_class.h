@@ -136,7 +136,9 @@ class RadiosityLab : public Lab {
     void startRun();
     void stopRun();
     void finishRun();
-    void stepOnMainThread(bool headless);
+    // inputWaiting: the window's View::inputWaiting (null headless): the slice ends early when
+    // the user's input waits.
+    void stepOnMainThread(bool headless, bool (*inputWaiting)() = nullptr);
     bool running() const { return running_.load(); }
     bool overBudget() const;
     int stepLimit() const;

@@ -149,7 +149,7 @@ void RadiosityLab::finishRun() {
 }
 
 // The GL method's run: steps until the frame's time budget is spent (headless: to the end).
-void RadiosityLab::stepOnMainThread(bool headless) {
+void RadiosityLab::stepOnMainThread(bool headless, bool (*inputWaiting)()) {
     if (!mainThreadRun_ || !model_) return;
     const bool isPreview = previewPhase_ && model_->preview.solver;
     rad::Solver& sol = isPreview ? *model_->preview.solver : *model_->solver;
@@ -158,13 +158,17 @@ void RadiosityLab::stepOnMainThread(bool headless) {
     const auto t0 = std::chrono::steady_clock::now();
     bool show = false; // a picture to show at once: the next frame skips its slice
     try {
-        // 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at 512², the
-        // old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to draw here;
-        // 30 ms slices made convergence 3× slower in a window than headless (measured at 512²:
-        // 1.2-1.3 s against 0.7 s). Keys answer within a slice. The slice ends early when the
-        // picture becomes usable or the full solve overtakes the preview.
+        // Up to 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at
+        // 512², the old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to
+        // draw here; 30 ms slices made convergence 3× slower in a window than headless
+        // (measured at 512²: 1.2-1.3 s against 0.7 s). The slice ends early when the picture
+        // becomes usable or the full solve overtakes the preview, and when the user's input
+        // waits (a key, a click, a drag): it used to wait for the rest of the slice, up to
+        // 0.25 s. Past kMinSlice only, so that a drag's stream of motion still leaves the run
+        // most of the time (docs/bench/radiosity.md, "Input during a GL run").
+        constexpr double kSlice = 0.25, kMinSlice = 0.02;
         while (sol.residual() >= tol && sol.steps() < limit &&
-               (headless || secondsSince(t0) < 0.25)) {
+               (headless || secondsSince(t0) < kSlice)) {
             if (overBudget()) {
                 budgetHit_ = true;
                 break;
@@ -175,6 +179,7 @@ void RadiosityLab::stepOnMainThread(bool headless) {
                 show = true;
                 break;
             }
+            if (inputWaiting && secondsSince(t0) >= kMinSlice && inputWaiting()) break;
         }
     } catch (const std::exception& e) {
         message_ = e.what();
