@@ -27,6 +27,15 @@ void RadiosityLab::stepOnce() {
         message_ = e.what();
     }
     lastStepSeconds_ = secondsSince(t0);
+#if !defined(WB_HEADLESS)
+    // Below 5% by hand: said here with the steps, not later by `r` as "after 0.00 s".
+    const double before = snapshot().residual, now = model_->solver->residual();
+    if (before >= 0.05 && now < 0.05) {
+        std::printf("lab08: unshot power < 5%% after %d steps by hand (space)\n",
+                    model_->solver->steps());
+        std::fflush(stdout);
+    }
+#endif
     publish();
 }
 
@@ -69,6 +78,7 @@ void RadiosityLab::startRun() {
         usableSeconds_ = -1;
         shownSeconds_ = -1;
     }
+    usableBefore_ = usableSeconds_ < 0 && model_->solver->residual() < 0.05;
     stepSeconds_ = 0;
     // A fresh solve starts with the preview (radiosity_preview.cpp); a run resumed after a key
     // stopped it goes on where it was.
@@ -245,7 +255,7 @@ void RadiosityLab::publish(const rad::Solver& sol, bool preview, bool last) {
     snap.history = sol.history();
     snap.lastShooter = sol.lastShooter();
     // "Usable": unshot power below 5% of the emitted (docs/bench/radiosity.md §4).
-    if (running() && usableSeconds_ < 0 && snap.residual < 0.05) {
+    if (running() && usableSeconds_ < 0 && !usableBefore_ && snap.residual < 0.05) {
         usableSeconds_ = secondsSince(runStart_);
         frameWanted_ = true;
 #if !defined(WB_HEADLESS)
