@@ -95,14 +95,6 @@ std::vector<std::vector<glm::dvec3>> exposedPieces(const PatchMesh& mesh, const 
     return out;
 }
 
-// Van der Corput's radical inverse in base 2: 0, 1/2, 1/4, 3/4, 1/8, ...
-double radicalInverse2(unsigned i) {
-    double r = 0.0, f = 0.5;
-    for (; i; i >>= 1, f *= 0.5)
-        if (i & 1u) r += f;
-    return r;
-}
-
 // One edge's term of Lambert's contour integral, exactly as pointToPolygon sums it for a
 // polygon wholly in front of the point (closed_forms.cpp): a, b the edge's ends minus the
 // point. term(b, a) = −term(a, b) bit for bit (the cross product's components and the dot
@@ -327,14 +319,8 @@ void groupGatherRow(const PatchMesh& mesh, const PatchBvh& bvh, int g, int k,
             // sampled where its many small members are: the triangles next to the block took
             // most samples, the floor seen from the ceiling came out too occluded (ceiling in
             // front of the light -1.28% against Cycles; -0.82% by area, the grid -0.73%).
-            // Each stratum at its own fraction (the shift plus the stratum's radical inverse,
-            // a Hammersley set over the list): at the same fraction, k = 4 strata of a group of
-            // 4 member rows put all 4 samples in one column, and tall block 1 came out +0.97%
-            // against Cycles (+0.87% now, the same rays; docs/bench/radiosity.md).
             const double shift = static_cast<double>((j * 7919u) % members) / static_cast<double>(members);
-            double within = shift + radicalInverse2(static_cast<unsigned>(s));
-            within -= std::floor(within);
-            const double at = (static_cast<double>(s) + within) / static_cast<double>(kk) * cumArea.back();
+            const double at = (static_cast<double>(s) + shift) / static_cast<double>(kk) * cumArea.back();
             const std::size_t m = std::min<std::size_t>(
                 static_cast<std::size_t>(std::upper_bound(cumArea.begin(), cumArea.end(), at) - cumArea.begin()),
                 members - 1);
