@@ -253,7 +253,7 @@ void RadiosityLab::draw(const View& view) {
     drawScene(view);
     // The first frame that shows a usable picture (unshot light < 5%): the time the student
     // waits for it (docs/bench/radiosity.md; the frame is swapped right after this).
-    if (running() && shownSeconds_ < 0 && residual_ < 0.05) {
+    if (running() && shownSeconds_ < 0 && !usableBefore_ && residual_ < 0.05) {
         shownSeconds_ = secondsSince(runStart_);
         std::printf("lab08: usable picture drawn after %.2f s%s\n", shownSeconds_.load(),
                     drawnPreview_ ? " (preview)" : "");
@@ -265,7 +265,7 @@ void RadiosityLab::draw(const View& view) {
     if (skipSlice_)
         skipSlice_ = false;
     else
-        stepOnMainThread(false);
+        stepOnMainThread(false, view.inputWaiting);
 }
 
 void RadiosityLab::drawScene(const View& view) {

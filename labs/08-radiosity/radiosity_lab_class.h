@@ -136,7 +136,9 @@ class RadiosityLab : public Lab {
     void startRun();
     void stopRun();
     void finishRun();
-    void stepOnMainThread(bool headless);
+    // inputWaiting: the window's View::inputWaiting (null headless): the slice ends early when
+    // the user's input waits.
+    void stepOnMainThread(bool headless, bool (*inputWaiting)() = nullptr);
     bool running() const { return running_.load(); }
     bool overBudget() const;
     int stepLimit() const;
@@ -190,6 +192,9 @@ class RadiosityLab : public Lab {
     std::atomic<double> runSeconds_{0};
     std::atomic<double> stepSeconds_{0}; // of the run, inside solver steps (the rest: the window)
     std::atomic<double> usableSeconds_{-1}; // the run's time to unshot power < 5% (−1: not yet)
+    // The run started below 5% reached by `space` steps: it has no time to usable to report
+    // (it logged "unshot power < 5% after 0.00 s"); the steps that got there say so instead.
+    std::atomic<bool> usableBefore_{false};
     std::atomic<bool> budgetHit_{false};
     double lastStepSeconds_ = 0;
     mutable std::mutex snapMutex_;

@@ -27,6 +27,15 @@ void RadiosityLab::stepOnce() {
         message_ = e.what();
     }
     lastStepSeconds_ = secondsSince(t0);
+#if !defined(WB_HEADLESS)
+    // Below 5% by hand: said here with the steps, not later by `r` as "after 0.00 s".
+    const double before = snapshot().residual, now = model_->solver->residual();
+    if (before >= 0.05 && now < 0.05) {
+        std::printf("lab08: unshot power < 5%% after %d steps by hand (space)\n",
+                    model_->solver->steps());
+        std::fflush(stdout);
+    }
+#endif
     publish();
 }
 
@@ -69,6 +78,7 @@ void RadiosityLab::startRun() {
         usableSeconds_ = -1;
         shownSeconds_ = -1;
     }
+    usableBefore_ = usableSeconds_ < 0 && model_->solver->residual() < 0.05;
     stepSeconds_ = 0;
     // A fresh solve starts with the preview (radiosity_preview.cpp); a run resumed after a key
     // stopped it goes on where it was.
@@ -149,7 +159,7 @@ void RadiosityLab::finishRun() {
 }
 
 // The GL method's run: steps until the frame's time budget is spent (headless: to the end).
-void RadiosityLab::stepOnMainThread(bool headless) {
+void RadiosityLab::stepOnMainThread(bool headless, bool (*inputWaiting)()) {
     if (!mainThreadRun_ || !model_) return;
     const bool isPreview = previewPhase_ && model_->preview.solver;
     rad::Solver& sol = isPreview ? *model_->preview.solver : *model_->solver;
@@ -158,13 +168,17 @@ void RadiosityLab::stepOnMainThread(bool headless) {
     const auto t0 = std::chrono::steady_clock::now();
     bool show = false; // a picture to show at once: the next frame skips its slice
     try {
-        // 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at 512², the
-        // old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to draw here;
-        // 30 ms slices made convergence 3× slower in a window than headless (measured at 512²:
-        // 1.2-1.3 s against 0.7 s). Keys answer within a slice. The slice ends early when the
-        // picture becomes usable or the full solve overtakes the preview.
+        // Up to 0.25 s of steps a frame: the first shots draw a GL hemicube each (~20 ms at
+        // 512², the old default; less at 128²), and a frame of 3.7k patches takes ~50 ms to
+        // draw here; 30 ms slices made convergence 3× slower in a window than headless
+        // (measured at 512²: 1.2-1.3 s against 0.7 s). The slice ends early when the picture
+        // becomes usable or the full solve overtakes the preview, and when the user's input
+        // waits (a key, a click, a drag): it used to wait for the rest of the slice, up to
+        // 0.25 s. Past kMinSlice only, so that a drag's stream of motion still leaves the run
+        // most of the time (docs/bench/radiosity.md, "Input during a GL run").
+        constexpr double kSlice = 0.25, kMinSlice = 0.02;
         while (sol.residual() >= tol && sol.steps() < limit &&
-               (headless || secondsSince(t0) < 0.25)) {
+               (headless || secondsSince(t0) < kSlice)) {
             if (overBudget()) {
                 budgetHit_ = true;
                 break;
@@ -175,6 +189,7 @@ void RadiosityLab::stepOnMainThread(bool headless) {
                 show = true;
                 break;
             }
+            if (inputWaiting && secondsSince(t0) >= kMinSlice && inputWaiting()) break;
         }
     } catch (const std::exception& e) {
         message_ = e.what();
@@ -240,7 +255,7 @@ void RadiosityLab::publish(const rad::Solver& sol, bool preview, bool last) {
     snap.history = sol.history();
     snap.lastShooter = sol.lastShooter();
     // "Usable": unshot power below 5% of the emitted (docs/bench/radiosity.md §4).
-    if (running() && usableSeconds_ < 0 && snap.residual < 0.05) {
+    if (running() && usableSeconds_ < 0 && !usableBefore_ && snap.residual < 0.05) {
         usableSeconds_ = secondsSince(runStart_);
         frameWanted_ = true;
 #if !defined(WB_HEADLESS)

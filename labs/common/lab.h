@@ -31,6 +31,10 @@ struct View {
     bool headless = false; // true when drawing into OSMesa for a PNG
     double time =
         0.0; // seconds since start (0 in headless renders); frames come on change only, see busy()
+    // In a window: true when the user's input waits for the shell (a key, a click or the wheel,
+    // a resize, a drag's motion). A lab working inside draw() (worksInDraw) ends its slice
+    // early then, so the input is answered within a short part of the slice. Null headless.
+    bool (*inputWaiting)() = nullptr;
 };
 
 // One line of the "Keys:" list shown in the panel and in --help.

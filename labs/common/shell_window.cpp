@@ -192,6 +192,38 @@ void updateCursor() {
     if (cursor != current) glutSetCursor(current = cursor);
 }
 
+// View::inputWaiting: looks through GLUT's X connection (the queue and what the server has
+// sent) for input a user waits on, without taking any event off it; GLUT handles them after
+// the frame. Motion without a button held (hover) does not count: the panel's hover can wait
+// for the next paced frame, and a pointer resting on the window would cut every slice short.
+Bool isWaitedInput(Display*, XEvent* e, XPointer found) {
+    switch (e->type) {
+    case KeyPress:
+    case ButtonPress:
+    case ButtonRelease:
+    case ConfigureNotify:
+    case ClientMessage: // the window manager's close
+        *reinterpret_cast<bool*>(found) = true;
+        break;
+    case MotionNotify:
+        if (e->xmotion.state & (Button1Mask | Button2Mask | Button3Mask))
+            *reinterpret_cast<bool*>(found) = true;
+        break;
+    default:
+        break;
+    }
+    return False; // nothing is removed
+}
+
+bool inputWaiting() {
+    Display* dpy = glXGetCurrentDisplay();
+    if (!dpy) return false;
+    bool found = false;
+    XEvent e;
+    XCheckIfEvent(dpy, &e, isWaitedInput, reinterpret_cast<XPointer>(&found));
+    return found;
+}
+
 void busyTimer(int) {
     g->timerPending = false;
     glutPostRedisplay();
@@ -281,6 +313,7 @@ void display() {
     updateCursor();
 
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
+    g->view.inputWaiting = inputWaiting;
     layout();
     // The whole window starts black: a lab may clear only its own part (lab 07 draws its
     // traced image), and the panel's background is translucent, so earlier frames would show
