@@ -79,12 +79,15 @@ PathChoice choosePath(const BvhOptions& o) {
             }
         }
     }
-    const bool avx2 = simd != BvhSimd::Sse2 && __builtin_cpu_supports("avx2");
+    // The AVX2 walk's node test uses FMA (issue 21): every AVX2 CPU of this decade has it.
+    const bool avx2 = simd != BvhSimd::Sse2 && __builtin_cpu_supports("avx2") &&
+                      __builtin_cpu_supports("fma");
     // AVX-512 (F + VL), 8-wide: asked for, or automatic where the CPU has it (measured
     // faster than AVX2 8-wide in two runs, ours/Embree eye / shadow rays: balls 4 0.78 /
     // 1.15 against 0.74 / 1.10, mesh 0.77 / 0.87 against 0.74 / 0.84, jacks 4 equal;
     // docs/raytrace-scale.md, issue 21).
-    const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+    const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                        __builtin_cpu_supports("fma");
     if (avx512 && width != 4 && (simd == BvhSimd::Avx512 || (simd == BvhSimd::Auto && width == 0)))
         return {8, true, true};
     if (width == 0) width = avx2 ? kAutoWidthAvx2 : 4;
@@ -137,6 +140,23 @@ void Bvh::fillLeafData(std::uint32_t i) {
                 mag += std::abs((*vs[j])[a]);
             }
         tm_[i] = float(2 * mag) * kTriMargin; // see the triangle test's δ
+        // The single-ray filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
+        // from the double vertices, rounded to float (the parts rounded up).
+        const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
+        const glm::dvec3 ne1 = -e1; // the filter reads −e1 (exactly negated): F2 = R·(−e1)
+        const glm::dvec3* es[3] = {&ne1, &e2, &nn};
+        for (int j = 0; j < 3; ++j)
+            for (int a = 0; a < 3; ++a)
+                te_[j * 3 + a][i] = float((*es[j])[a]);
+        auto l1 = [](const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); };
+        const double vmax = std::max({l1(t->v0), l1(t->v1), l1(t->v2)});
+        const double em = std::max(l1(e1), l1(e2));
+        const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
+        const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1(nn) +
+                          kMtDoubleMargin * vmax * vmax;
+        const bool small = vmax <= kMtMaxCoord; // false for NaN
+        tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
+        tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
     } else {
         // Rounded outward; a box float cannot hold (or an empty one) is never rejected.
         const Aabb bx = order_[i]->bounds();
@@ -388,6 +408,10 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         if (has[kRunTriangle]) {
             tm_.assign(n + 4, 0.0f);
             for (auto& v : tv_)
+                v.assign(n + 4, 0.0f);
+            for (auto& v : te_)
+                v.assign(n + 4, 0.0f);
+            for (auto& v : tp_)
                 v.assign(n + 4, 0.0f);
         }
         if (has[kRunOther])

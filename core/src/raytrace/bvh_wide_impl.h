@@ -55,6 +55,7 @@ template <int Tag> struct Lanes4 {
     static V load(const float* p) { return _mm_load_ps(p); }
     static V sub(V a, V b) { return _mm_sub_ps(a, b); }
     static V mul(V a, V b) { return _mm_mul_ps(a, b); }
+    static constexpr bool kFma = false; // the node test as (plane − o)·(1/d)
     static V min(V a, V b) { return _mm_min_ps(a, b); }
     static V max(V a, V b) { return _mm_max_ps(a, b); }
     static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
@@ -83,6 +84,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const std::size_t* off; // byte offsets in a Node: near planes x, y, z, far planes x, y, z
         V on[3], of[3];         // origin moved by ∓eps for near and ±eps for far planes
         V inv[3], invFar[3];    // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
+        V oin[3], oif[3];       // L::kFma: on·inv and of·invFar rounded (the slabs' fmsub)
         V tMin;                 // lowered tMin
         bool useFloat = false;  // boxes tested in float (else in double)
         bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
@@ -94,9 +96,52 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // Triangle test (set up at the first triangle run): the watertight shear (kz the
         // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
         bool triReady = false;
-        TriangleShear sh; // in double: the exact tests of plain triangles reuse it
-        int k[3];         // the filter's axes: sh.kz last, the other two in cyclic order
+        // The shear in double, set up at the first exact test of a plain triangle (which
+        // reuses it) or by triangleSetup: mutable, the exact tests get const RayData.
+        mutable bool shReady = false;
+        mutable TriangleShear sh;
+        int k[3]; // the filter's axes: sh.kz last, the other two in cyclic order
         __m128 to[3], shx, shy, tom;
+        // The single ray's triangle filter on precomputed edges (set up at the first triangle
+        // run; bvh_wide_kinds.h): the float origin and direction, the bound's X, Y, Z.
+        bool mtReady = false;
+        __m128 mo[3], md[3], mx, my, mz;
+
+        // Out of line (once per ray at most): inlined, they made the walk's own code
+        // longer on every scene, jacks 4's eye walk without a triangle included (callgrind).
+        __attribute__((noinline)) void shearSetup() const {
+            sh = triangleShear(d);
+            shReady = true;
+        }
+        __attribute__((noinline)) void mtSetup() {
+            const __m128d zero = _mm_setzero_pd();
+            const __m128 vo =
+                _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&o.x)),
+                              _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&o.y), zero)));
+            const __m128 vd =
+                _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&d.x)),
+                              _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&d.y), zero)));
+            mo[0] = _mm_shuffle_ps(vo, vo, 0x00);
+            mo[1] = _mm_shuffle_ps(vo, vo, 0x55);
+            mo[2] = _mm_shuffle_ps(vo, vo, 0xAA);
+            md[0] = _mm_shuffle_ps(vd, vd, 0x00);
+            md[1] = _mm_shuffle_ps(vd, vd, 0x55);
+            md[2] = _mm_shuffle_ps(vd, vd, 0xAA);
+            const double ol = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
+            const double dm = std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z)));
+            // The bound's parts, each raised by 2^-20 over its double value (float's rounding
+            // to nearest takes at most 2^-24 of it; an underflow at most 2^-150, which
+            // kMtFloor covers); beyond the ranges X = Y = +inf: no rejection.
+            constexpr double kUp = 1 + 0x1p-20;
+            const bool ok = ol <= bvh_detail::kMtMaxCoord && dm <= bvh_detail::kMtMaxDir;
+            const double x = dm * ol;
+            constexpr float kInfF = std::numeric_limits<float>::infinity();
+            mx = _mm_set1_ps(ok ? float(x * kUp) : kInfF);
+            my = _mm_set1_ps(ok ? float(dm * kUp) : kInfF);
+            mz = _mm_set1_ps(
+                float(bvh_detail::kMtDoubleMargin * kUp * x * ol + bvh_detail::kMtFloor));
+            mtReady = true;
+        }
 
         void sphereSetup() {
             unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
@@ -111,7 +156,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         void triangleSetup() {
             // The watertight test's axes and shear (inline: compiled into this walk), the
             // same bits as Triangle::intersect's, which the exact tests reuse.
-            sh = triangleShear(d);
+            if (!shReady) shearSetup();
             // The float filter's axes: kz and the next two in cyclic order, whatever the
             // sign of d[kz] (the exact test swaps kx and ky when it is negative, to keep the
             // winding). The filter's verdict is the same either way: the swap exchanges px
@@ -249,56 +294,44 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
                     mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
                 } else if (runKind == kRunTriangle) {
-                    if (!r.triReady) r.triangleSetup();
-                    // The watertight test's edge functions in float (same shear); rejected
-                    // only when one is surely negative and another surely positive: e bounds
-                    // their float error (inputs off by δ after rounding vertices and origin,
-                    // the shear and the differences; products and their difference rounded).
-                    // The vertex arrays are picked by constants, one instance per kz (issue
-                    // 21: indexing them by the ray's axes took ~30 of a run's ~120
-                    // instructions in address arithmetic).
-                    __m128 px[3], py[3];
-                    const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-                    auto edges = [&](auto kzC) __attribute__((always_inline)) {
-                        constexpr int kz = decltype(kzC)::value;
-                        constexpr int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-                        for (int j = 0; j < 3; ++j) {
-                            const __m128 X =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kx][i]), r.to[0]);
-                            const __m128 Y =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + ky][i]), r.to[1]);
-                            const __m128 Z =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kz][i]), r.to[2]);
-                            px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
-                            py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
-                        }
+                    if (!r.mtReady) r.mtSetup();
+                    // Möller–Trumbore's quantities on the edges precomputed at the build: the
+                    // edge functions F1 = R·e2, F2 = R·(−e1), F0 = n·d − F1 − F2 with
+                    // R = (v0 − o) × d, rejected only when one is below −B and another above
+                    // B, B their written-down error bound (bvh_wide_kinds.h). Issue 21: the
+                    // watertight shear filter took ~122 instructions a run and a per-ray shear.
+                    const __m128 ax = _mm_sub_ps(_mm_loadu_ps(&b.tv_[0][i]), r.mo[0]);
+                    const __m128 ay = _mm_sub_ps(_mm_loadu_ps(&b.tv_[1][i]), r.mo[1]);
+                    const __m128 az = _mm_sub_ps(_mm_loadu_ps(&b.tv_[2][i]), r.mo[2]);
+                    const __m128 rx = _mm_sub_ps(_mm_mul_ps(ay, r.md[2]), _mm_mul_ps(az, r.md[1]));
+                    const __m128 ry = _mm_sub_ps(_mm_mul_ps(az, r.md[0]), _mm_mul_ps(ax, r.md[2]));
+                    const __m128 rz = _mm_sub_ps(_mm_mul_ps(ax, r.md[1]), _mm_mul_ps(ay, r.md[0]));
+                    auto dot = [&](int e) __attribute__((always_inline)) {
+                        return _mm_add_ps(
+                            _mm_add_ps(_mm_mul_ps(rx, _mm_loadu_ps(&b.te_[e][i])),
+                                       _mm_mul_ps(ry, _mm_loadu_ps(&b.te_[e + 1][i]))),
+                            _mm_mul_ps(rz, _mm_loadu_ps(&b.te_[e + 2][i])));
                     };
-                    if (r.k[2] == 0)
-                        edges(std::integral_constant<int, 0>{});
-                    else if (r.k[2] == 1)
-                        edges(std::integral_constant<int, 1>{});
-                    else
-                        edges(std::integral_constant<int, 2>{});
-                    const __m128 u = _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
-                    const __m128 v = _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
-                    const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
-                    __m128 q = _mm_setzero_ps();
-                    for (int j = 0; j < 3; ++j)
-                        q = _mm_add_ps(
-                            q, _mm_add_ps(_mm_and_ps(px[j], absMask), _mm_and_ps(py[j], absMask)));
-                    // δ = (|v|₁ + |o|₁ + Σ|v − o|₁)·2^-19 (sums over the three vertices) is
-                    // at most (2·Σ|v|₁ + 4·|o|₁)·2^-19 = tm_ + tom; e = 2δ(Q + 2δ) + Q²·2^-20.
-                    const __m128 delta = _mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom);
-                    const __m128 twoD = _mm_add_ps(delta, delta);
-                    const __m128 e =
-                        _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
-                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(kTriProductMargin)));
-                    const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
-                    const __m128 someNeg = _mm_or_ps(
-                        _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
-                    const __m128 somePos = _mm_or_ps(
-                        _mm_or_ps(_mm_cmpgt_ps(u, e), _mm_cmpgt_ps(v, e)), _mm_cmpgt_ps(w, e));
-                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(someNeg, somePos));
+                    // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for
+                    // bit, and F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
+                    const __m128 f1 = dot(3), f2 = dot(0);
+                    const __m128 nd = _mm_add_ps(
+                        _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&b.te_[6][i]), r.md[0]),
+                                   _mm_mul_ps(_mm_loadu_ps(&b.te_[7][i]), r.md[1])),
+                        _mm_mul_ps(_mm_loadu_ps(&b.te_[8][i]), r.md[2]));
+                    const __m128 f0 = _mm_sub_ps(_mm_sub_ps(nd, f1), f2);
+                    const __m128 bound =
+                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(r.mx, _mm_loadu_ps(&b.tp_[0][i])),
+                                              _mm_mul_ps(r.my, _mm_loadu_ps(&b.tp_[1][i]))),
+                                   r.mz);
+                    // Some F below −B and another above B. min/max drop a NaN operand, but no
+                    // F is NaN or infinite where B is finite (bvh_wide_kinds.h: the ranges),
+                    // and a NaN or infinite B rejects nothing.
+                    const __m128 lo = _mm_min_ps(_mm_min_ps(f0, f1), f2);
+                    const __m128 hi = _mm_max_ps(_mm_max_ps(f0, f1), f2);
+                    mask = 0xF & ~_mm_movemask_ps(
+                                     _mm_and_ps(_mm_cmplt_ps(lo, _mm_sub_ps(_mm_setzero_ps(), bound)),
+                                                _mm_cmpgt_ps(hi, bound)));
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
@@ -398,6 +431,32 @@ template <class L, bool Q> struct Bvh::WideWalk {
         if (ok) {
             alignas(16) float inv[4], invFar[4], on[4], of[4];
             floatRay(ray, om, inv, invFar, on, of);
+            [[maybe_unused]] alignas(16) float oin[4], oif[4];
+            if constexpr (L::kFma) {
+                // The slabs' o·(1/d) products (bvh_wide_kinds.h, kFmaSlabs): a ray whose
+                // product for a finite 1/d lies beyond 2^±100 (or is 0 for o ≠ 0), where its
+                // rounding is not relative, takes the double walk.
+                const __m128 vinv = _mm_load_ps(inv), von = _mm_load_ps(on),
+                             vof = _mm_load_ps(of);
+                const __m128 pn = _mm_mul_ps(von, vinv),
+                             pf = _mm_mul_ps(vof, _mm_load_ps(invFar));
+                _mm_store_ps(oin, pn);
+                _mm_store_ps(oif, pf);
+                const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+                auto outside = [&](__m128 p, __m128 o4) {
+                    const __m128 ap = _mm_and_ps(p, absMask);
+                    return _mm_or_ps(_mm_cmpgt_ps(ap, _mm_set1_ps(0x1p100f)),
+                                     _mm_and_ps(_mm_cmplt_ps(ap, _mm_set1_ps(0x1p-100f)),
+                                                _mm_cmpneq_ps(o4, _mm_setzero_ps())));
+                };
+                const __m128 finiteInv = _mm_cmplt_ps(_mm_and_ps(vinv, absMask),
+                                                      _mm_set1_ps(std::numeric_limits<float>::infinity()));
+                if (_mm_movemask_ps(_mm_and_ps(finiteInv, _mm_or_ps(outside(pn, von), outside(pf, vof)))) & 7) {
+                    r.useFloat = false;
+                    r.invd = 1.0 / ray.direction;
+                    return true;
+                }
+            }
             const float ftMin = float(tMin);
             const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
             if constexpr (kRoot) {
@@ -425,6 +484,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 r.of[a] = L::set1(of[a]);
                 r.inv[a] = L::set1(inv[a]);
                 r.invFar[a] = L::set1(invFar[a]);
+                if constexpr (L::kFma) {
+                    r.oin[a] = L::set1(oin[a]);
+                    r.oif[a] = L::set1(oif[a]);
+                }
             }
             r.tMin = L::set1(lowered);
         } else {
@@ -501,8 +564,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const V farP = planes(nd, r.off[3 + a], a);
                     // max/min return the second operand for NaN (0·inf: a ray in the slab's
                     // plane): that slab is no limit.
-                    t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
-                    t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
+                    if constexpr (L::kFma) {
+                        // plane·inv − o·inv rounded once (bvh_wide_kinds.h, kFmaSlabs).
+                        t0 = L::max(L::fmsub(nearP, r.inv[a], r.oin[a]), t0);
+                        t1 = L::min(L::fmsub(farP, r.invFar[a], r.oif[a]), t1);
+                    } else {
+                        t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
+                        t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
+                    }
                 }
                 mask = L::le(t0, t1);
                 if constexpr (Q) mask &= validMask(nd);
@@ -1202,8 +1271,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
         if (kind == bvh_detail::kTriangle) {
             const auto& t = static_cast<const Triangle&>(p);
-            return r && r->triReady ? t.intersectSheared(ray, r->sh, tMin, tMax, hit)
-                                    : t.Triangle::intersect(ray, tMin, tMax, hit);
+            if (!r) return t.Triangle::intersect(ray, tMin, tMax, hit);
+            if (!r->shReady) r->shearSetup();
+            return t.intersectSheared(ray, r->sh, tMin, tMax, hit);
         }
         return p.intersect(ray, tMin, tMax, hit);
     }

@@ -42,6 +42,43 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 constexpr float kSphereMargin = 0x1p-16f;    // relative margin of the float sphere test
 constexpr float kTriMargin = 0x1p-19f;       // relative error bound of the triangle test's inputs
 constexpr float kTriProductMargin = 0x1p-20f; // of the edge functions' own roundings (× Q²)
+// - Triangles, the single-ray filter (issue 21, branch rtmesh4): on edges precomputed at
+//   the build (Möller–Trumbore's quantities), e1 = v1 − v0, e2 = v2 − v0, n = e1 × e2, each
+//   taken in double from the double vertices and rounded to float. With a = v0 − o, R = a × d
+//   the three edge functions of the ray are the signed volumes F0 = det(v1 − o, v2 − o, d),
+//   F1 = det(v2 − o, a, d) = R·e2, F2 = det(a, v1 − o, d) = −R·e1 and F0 = n·d − F1 − F2
+//   (F0 + F1 + F2 = det(e1, e2, d)). The watertight test's u, v, w are F0, F1, F2 times one
+//   common factor (±1/d[kz]), so its verdict "mixed signs" is theirs. The filter computes
+//   a, R, F1, G = R·e1 (F2 = −G) and F0 = (n·d − F1) + G in float and rejects only when
+//   one of F0, F1, F2 is below −B and another above B, B bounding:
+//   * the float error. With D = |d|∞, A = |v0|₁ + |o|₁ (>= |a|₁), E = max(|e1|₁, |e2|₁) and
+//     |(x × y)·z| <= |x|₁·|y|∞·|z|₁: rounding v0, o and a − (2u·A), d (u·D), e (2u·E):
+//     5u·D·E·A for F1 and for G; R's two products and difference and the dot's three
+//     products and two sums: another 5u·D·E·A each; n·d (n rounded, d rounded, three
+//     products, two sums): 5u·D·|n|₁ + 5u_d·D·E² (n's and e's double roundings, u_d = 2^-53);
+//     F0's two sums: 2u·(D·|n|₁ + 2D·E·A). In all <= 25u·D·E·A + 7.1u·D·|n|₁ + 5u_d·D·E².
+//   * the double test's own error (it rejects on its computed signs): its sheared
+//     coordinates are off by <= 4u_d·|v − o|₁ (|shear| <= 1), so u, v, w by
+//     <= 23u_d·|v_i − o|₁·|v_j − o|₁, i.e. F by 23u_d·D·(V + |o|₁)², V = max_i |v_i|₁.
+//   So B = D·(kMtEdgeMargin·E·(V + |o|₁) + kMtNormalMargin·|n|₁ + kMtDoubleMargin·(V +
+//   |o|₁)²) + kMtFloor: 2^-18 = 64u against 25u, 2^-19 = 32u against 7.1u, 2^-46 = 128u_d
+//   against 23u_d + 20u_d (E <= 2V); B's own five roundings take < 1% of those factors.
+//   kMtFloor covers underflow: each float operation may also be off by 2^-150 absolutely,
+//   in all <= 2^-146·E + 2^-145, which is below 2^-120 for E <= 2^24 and below the first
+//   term otherwise (D >= 1e-30 > 2^-100 for a float-walk ray with d ≠ 0; d = 0 makes every
+//   F exactly 0). Overflow: no product exceeds 12·D·(V + |o|₁)², so the filter is used only
+//   for V <= 2^30 (per triangle: else its parts are +inf, B is inf or NaN and never
+//   rejects), |o|₁ <= 2^30 and D <= 2^60 (per ray: else X = Y = +inf): 12·2^62·2^60 < 2^128.
+//   Per triangle tp_[0] = P1 = 2^-18·E + 2·2^-46·V and tp_[1] = P2 = 2^-18·E·V +
+//   2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
+//   rounded up): B = X·P1 + Y·P2 + Z. NaN anywhere never rejects (compares are false).
+//   (The test "the precomputed-edge filter's bound" fails with kMtEdgeMargin cut to 2^-30.)
+constexpr double kMtEdgeMargin = 0x1p-18;   // × D·E·(V + |o|₁): the float error
+constexpr double kMtNormalMargin = 0x1p-19; // × D·|n|₁
+constexpr double kMtDoubleMargin = 0x1p-46; // × D·(V + |o|₁)²: the double test's error
+constexpr double kMtFloor = 0x1p-120;       // underflow
+constexpr double kMtMaxCoord = 0x1p30;      // V and |o|₁ beyond: no rejection (overflow)
+constexpr double kMtMaxDir = 0x1p60;        // D beyond: no rejection
 // The slab test in float: entry = (near − o')·inv, exit = (far − o'')·invFar, where
 // inv = 1/float(d) and invFar = inv·(1 + 2^-19), each rounded (u = 2^-24; o', o'' are the
 // origin widened for its own rounding). Then inv <= (1/d)(1 + 2u), so an entry comes out
@@ -49,6 +86,18 @@ constexpr float kTriProductMargin = 0x1p-20f; // of the edge functions' own roun
 // exit at least (1 + 27u) times its exact value: entry <= exit whenever the exact ray
 // enters the box, and a box it enters is never missed.
 constexpr float kInvFarScaleF = 1 + 0x1p-19f;
+// kFmaSlabs: the AVX2 and AVX-512 8-wide walks (issue 21) take a slab as
+// fmsub(plane, inv, p) = plane·inv − p rounded once, p = fl(o'·inv) per ray and axis (and
+// fl(o''·invFar) for the far planes). Then p = o'·inv·(1 + ε1), |ε1| <= u, so the slab is
+// fl((plane − o' − o'·ε1)·inv): the form above with the origin moved by o'·ε1, at most
+// u·|o'| <= 1.01u·|o|max, and one rounding instead of two. The widening eps = |o|max·2^-21
+// (its own float value at least |o|max·2^-21·(1 − u)) covers o's rounding (u·|o|max) plus
+// that move with 2^-21 >= 4·2.01u to spare, so o' stays behind (o'' ahead of) the exact
+// origin, and the entry is at most (1 + 3u) times its exact value: the argument above
+// holds. ε1 is relative only where o'·inv is a normal float: a ray with a finite 1/d whose
+// product lies beyond 2^±100 (or underflows to 0 from o' ≠ 0) takes the double walk
+// (initRay). For d = 0 (inv = ±inf) p is ±inf or NaN (o' = 0), and plane·inf − p is NaN
+// (no limit) or the infinity of the right sign: never a box wrongly missed.
 // BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
 constexpr int kAutoWidthAvx2 = 8;
 inline std::uint8_t runOf(std::uint8_t kind) {

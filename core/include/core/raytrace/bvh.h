@@ -244,6 +244,8 @@ class Bvh : public Aggregate {
                                                 // radius, their part of the float test's margin
     std::vector<float> tv_[9], tm_;             // triangles at their order_ index: float vertices
                                                 // [vertex·3 + axis], their part of the margin
+    std::vector<float> te_[9], tp_[2]; // and the single-ray filter's (issue 21): float edges
+                                       // v0 − v1, v2 − v0, normal (axis-major), its bound's parts
     std::vector<float> ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
