@@ -132,15 +132,9 @@ void Bvh::fillLeafData(std::uint32_t i) {
                  kSphereMargin;
     } else if (runOf(kind_[i]) == kRunTriangle) {
         const auto* t = static_cast<const Triangle*>(order_[i]);
-        const glm::dvec3* vs[3] = {&t->v0, &t->v1, &t->v2};
-        double mag = 0;
-        for (int j = 0; j < 3; ++j)
-            for (int a = 0; a < 3; ++a) {
-                tv_[j * 3 + a][i] = float((*vs[j])[a]);
-                mag += std::abs((*vs[j])[a]);
-            }
-        tm_[i] = float(2 * mag) * kTriMargin; // see the triangle test's δ
-        // The single-ray filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
+        for (int a = 0; a < 3; ++a)
+            tv_[a][i] = float(t->v0[a]);
+        // The filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
         // from the double vertices, rounded to float (the parts rounded up).
         const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
         const glm::dvec3 ne1 = -e1; // the filter reads −e1 (exactly negated): F2 = R·(−e1)
@@ -406,7 +400,6 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
                 v->assign(n + 4, 0.0f);
         if (has[kRunTriangle]) {
-            tm_.assign(n + 4, 0.0f);
             for (auto& v : tv_)
                 v.assign(n + 4, 0.0f);
             for (auto& v : te_)

@@ -93,15 +93,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
         __m128 fo[3], fd[3], om;
-        // Triangle test (set up at the first triangle run): the watertight shear (kz the
-        // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
-        bool triReady = false;
-        // The shear in double, set up at the first exact test of a plain triangle (which
-        // reuses it) or by triangleSetup: mutable, the exact tests get const RayData.
+        // The watertight test's shear in double, set up at the first exact test of a plain
+        // triangle, which reuses it: mutable, the exact tests get const RayData.
         mutable bool shReady = false;
         mutable TriangleShear sh;
-        int k[3]; // the filter's axes: sh.kz last, the other two in cyclic order
-        __m128 to[3], shx, shy, tom;
         // The single ray's triangle filter on precomputed edges (set up at the first triangle
         // run; bvh_wide_kinds.h): the float origin and direction, the bound's X, Y, Z.
         bool mtReady = false;
@@ -152,33 +147,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
             om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) *
                              bvh_detail::kSphereMargin);
             sphReady = true;
-        }
-        void triangleSetup() {
-            // The watertight test's axes and shear (inline: compiled into this walk), the
-            // same bits as Triangle::intersect's, which the exact tests reuse.
-            if (!shReady) shearSetup();
-            // The float filter's axes: kz and the next two in cyclic order, whatever the
-            // sign of d[kz] (the exact test swaps kx and ky when it is negative, to keep the
-            // winding). The filter's verdict is the same either way: the swap exchanges px
-            // and py (the same operations on the same values), so u, v, w change sign
-            // exactly (a − b = −(b − a) in IEEE) and "one surely negative, another surely
-            // positive" is unchanged, as are q and e. One order per kz lets the leaf test
-            // index the vertex arrays by constants (visitLeaf: 3 kinds of triangle test).
-            k[2] = sh.kz;
-            k[0] = sh.kz == 2 ? 0 : sh.kz + 1;
-            k[1] = k[0] == 2 ? 0 : k[0] + 1;
-            const bool swapped = sh.kx != k[0];
-            const double* op = &o.x; // glm's operator[] would switch on the index
-            to[0] = _mm_set1_ps(float(op[k[0]]));
-            to[1] = _mm_set1_ps(float(op[k[1]]));
-            to[2] = _mm_set1_ps(float(op[k[2]]));
-            // sh.sx = d[sh.kx]/d[kz], sh.sy = d[sh.ky]/d[kz]: the shear of axis k[0] is sh.sx
-            // unless swapped.
-            shx = _mm_set1_ps(float(swapped ? sh.sy : sh.sx));
-            shy = _mm_set1_ps(float(swapped ? sh.sx : sh.sy));
-            tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
-                              bvh_detail::kTriMargin);
-            triReady = true;
         }
     };
 
@@ -366,7 +334,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // put a register-to-register vmovq (C5 79 D6) into the AVX2 walk, which valgrind 3.19
     // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
     __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
-                                                        float* invFar, float* on, float* of) {
+                                                        float* invFar, float* on, float* of,
+                                                        float epsFloor = 0.0f) {
         const __m128d zero = _mm_setzero_pd();
         const __m128 fd =
             _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
@@ -376,7 +345,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                           _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&ray.origin[1]), zero)));
         const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
         const __m128 sgnEps =
-            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f + epsFloor), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
         _mm_store_ps(inv, finv);
         _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
         _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
@@ -385,11 +354,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
 
     // The range check of two doubles, branch-free: bit i set when lane i is 0 or
     // 1e-30 <= |v| <= 1e30 (false for NaN).
-    __attribute__((always_inline)) static int inRange(__m128d v) {
+    __attribute__((always_inline)) static int inRange(__m128d v, double lo = 1e-30, double hi = 1e30) {
         const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
         return _mm_movemask_pd(_mm_or_pd(
             _mm_cmpeq_pd(av, _mm_setzero_pd()),
-            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(lo)), _mm_cmple_pd(av, _mm_set1_pd(hi)))));
     }
 
     // A ray's RayData fields that initRay and the packets' joinPacket both set: the plane
@@ -426,36 +395,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
+        // The FMA node test's walks carry a narrower range in float (bvh_wide_kinds.h,
+        // kFmaSlabs: no overflow of o·(1/d)).
+        constexpr double kHi = L::kFma ? bvh_detail::kFmaRange : 1e30,
+                         kLo = L::kFma ? 1 / bvh_detail::kFmaRange : 1e-30;
+        const bool ok = om < kHi && inRange(dxy, kLo, kHi) == 3 && (inRange(dz, kLo, kHi) & 1);
         setRayData(r, signs, ok, ray);
         if (ok) {
             alignas(16) float inv[4], invFar[4], on[4], of[4];
-            floatRay(ray, om, inv, invFar, on, of);
+            floatRay(ray, om, inv, invFar, on, of, L::kFma ? bvh_detail::kFmaEpsFloor : 0.0f);
             [[maybe_unused]] alignas(16) float oin[4], oif[4];
-            if constexpr (L::kFma) {
-                // The slabs' o·(1/d) products (bvh_wide_kinds.h, kFmaSlabs): a ray whose
-                // product for a finite 1/d lies beyond 2^±100 (or is 0 for o ≠ 0), where its
-                // rounding is not relative, takes the double walk.
-                const __m128 vinv = _mm_load_ps(inv), von = _mm_load_ps(on),
-                             vof = _mm_load_ps(of);
-                const __m128 pn = _mm_mul_ps(von, vinv),
-                             pf = _mm_mul_ps(vof, _mm_load_ps(invFar));
-                _mm_store_ps(oin, pn);
-                _mm_store_ps(oif, pf);
-                const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-                auto outside = [&](__m128 p, __m128 o4) {
-                    const __m128 ap = _mm_and_ps(p, absMask);
-                    return _mm_or_ps(_mm_cmpgt_ps(ap, _mm_set1_ps(0x1p100f)),
-                                     _mm_and_ps(_mm_cmplt_ps(ap, _mm_set1_ps(0x1p-100f)),
-                                                _mm_cmpneq_ps(o4, _mm_setzero_ps())));
-                };
-                const __m128 finiteInv = _mm_cmplt_ps(_mm_and_ps(vinv, absMask),
-                                                      _mm_set1_ps(std::numeric_limits<float>::infinity()));
-                if (_mm_movemask_ps(_mm_and_ps(finiteInv, _mm_or_ps(outside(pn, von), outside(pf, vof)))) & 7) {
-                    r.useFloat = false;
-                    r.invd = 1.0 / ray.direction;
-                    return true;
-                }
+            if constexpr (L::kFma) { // the slabs' o·(1/d) (bvh_wide_kinds.h, kFmaSlabs)
+                _mm_store_ps(oin, _mm_mul_ps(_mm_load_ps(on), _mm_load_ps(inv)));
+                _mm_store_ps(oif, _mm_mul_ps(_mm_load_ps(of), _mm_load_ps(invFar)));
             }
             const float ftMin = float(tMin);
             const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
@@ -696,16 +648,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         float tMinLo;
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
-        // kind): RayData's fo, fd, om (spheres) and to, shx, shy, tom (triangles) of each
+        // kind): RayData's fo, fd, om (spheres) and mo, md, mx, my, mz (triangles) of each
         // lane's ray. sphLanes: lanes with a unit direction (the others visit every
-        // sphere, as their single walk does); triLanes: lanes whose shear axes are the
-        // first lane's (tk; the others run their own test).
+        // sphere, as their single walk does); triLanes: every lane of the packet (the
+        // triangle filter has no per-ray axes).
         alignas(32) float sfo[3][W], sfd[3][W], som[W];
-        alignas(32) float tto[3][W], tshx[W], tshy[W], ttom[W];
+        alignas(32) float tmo[3][W], tmd[3][W], tmx[W], tmy[W], tmz[W];
         unsigned sphLanes = 0, triLanes = 0;
         unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
         bool sphSet = false, triSet = false;
-        int tk[3] = {0, 1, 2};
     };
     // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
     // docs/raytrace-scale.md has the measurement).
@@ -732,22 +683,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int first = __builtin_ctz(lanes);
         for (int j = 0; j < W; ++j) {
             RayData& r = p.r[(lanes >> j) & 1 ? j : first];
-            if (!r.triReady) r.triangleSetup();
+            if (!r.mtReady) r.mtSetup();
+            for (int a = 0; a < 3; ++a) {
+                p.tmo[a][j] = lane0(r.mo[a]);
+                p.tmd[a][j] = lane0(r.md[a]);
+            }
+            p.tmx[j] = lane0(r.mx);
+            p.tmy[j] = lane0(r.my);
+            p.tmz[j] = lane0(r.mz);
         }
-        const RayData& r0 = p.r[first];
-        for (int a = 0; a < 3; ++a)
-            p.tk[a] = r0.k[a];
-        for (int j = 0; j < W; ++j) {
-            const bool in = (lanes >> j) & 1;
-            const RayData& r = p.r[in ? j : first];
-            if (in && r.k[0] == p.tk[0] && r.k[1] == p.tk[1] && r.k[2] == p.tk[2])
-                p.triLanes |= 1u << j;
-            for (int a = 0; a < 3; ++a)
-                p.tto[a][j] = lane0(r.to[a]);
-            p.tshx[j] = lane0(r.shx);
-            p.tshy[j] = lane0(r.shy);
-            p.ttom[j] = lane0(r.tom);
-        }
+        p.triLanes = lanes; // the filter has no per-ray axes: every lane is transposed
         p.triSet = true;
     }
     // Sphere i against the lanes: visitLeaf's sphere test with ray j's values in lane j
@@ -769,34 +714,32 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const V rm = L::add(L::set1(b.sr_[i]), L::add(L::load(p.som), L::set1(b.sm_[i])));
         return unsigned(L::ngt(ll, L::mul(rm, rm)));
     }
-    // Triangle i against the lanes of triLanes: visitLeaf's edge functions with their error
-    // bound e, ray j's shear and origin in lane j; rejected only when one is surely negative
-    // and another surely positive.
+    // Triangle i against the lanes of triLanes: visitLeaf's filter on the precomputed edges
+    // with ray j's float origin, direction and bound parts in lane j (the same operations in
+    // the same order: ray j's single-walk verdict).
     __attribute__((always_inline)) static unsigned triangleLanesTest(const Bvh& b, const Packet& p,
                                                                      std::uint32_t i) {
-        V px[3], py[3];
-        const V to0 = L::load(p.tto[0]), to1 = L::load(p.tto[1]), to2 = L::load(p.tto[2]);
-        const V shx = L::load(p.tshx), shy = L::load(p.tshy);
-        for (int j = 0; j < 3; ++j) {
-            const V X = L::sub(L::set1(b.tv_[j * 3 + p.tk[0]][i]), to0);
-            const V Y = L::sub(L::set1(b.tv_[j * 3 + p.tk[1]][i]), to1);
-            const V Z = L::sub(L::set1(b.tv_[j * 3 + p.tk[2]][i]), to2);
-            px[j] = L::sub(X, L::mul(shx, Z));
-            py[j] = L::sub(Y, L::mul(shy, Z));
-        }
-        const V u = L::sub(L::mul(px[2], py[1]), L::mul(py[2], px[1]));
-        const V v = L::sub(L::mul(px[0], py[2]), L::mul(py[0], px[2]));
-        const V w = L::sub(L::mul(px[1], py[0]), L::mul(py[1], px[0]));
-        V q = L::set1(0.0f);
-        for (int j = 0; j < 3; ++j)
-            q = L::add(q, L::add(L::abs(px[j]), L::abs(py[j])));
-        const V delta = L::add(L::set1(b.tm_[i]), L::load(p.ttom));
-        const V twoD = L::add(delta, delta);
-        const V e = L::add(L::mul(twoD, L::add(q, twoD)), L::mul(L::mul(q, q), L::set1(0x1p-20f)));
-        const V ne = L::sub(L::set1(0.0f), e);
-        const int someNeg = L::lt(u, ne) | L::lt(v, ne) | L::lt(w, ne);
-        const int somePos = L::gt(u, e) | L::gt(v, e) | L::gt(w, e);
-        return ~unsigned(someNeg & somePos) & ((1u << W) - 1);
+        const V d0 = L::load(p.tmd[0]), d1 = L::load(p.tmd[1]), d2 = L::load(p.tmd[2]);
+        const V ax = L::sub(L::set1(b.tv_[0][i]), L::load(p.tmo[0]));
+        const V ay = L::sub(L::set1(b.tv_[1][i]), L::load(p.tmo[1]));
+        const V az = L::sub(L::set1(b.tv_[2][i]), L::load(p.tmo[2]));
+        const V rx = L::sub(L::mul(ay, d2), L::mul(az, d1));
+        const V ry = L::sub(L::mul(az, d0), L::mul(ax, d2));
+        const V rz = L::sub(L::mul(ax, d1), L::mul(ay, d0));
+        auto dot = [&](int e) __attribute__((always_inline)) {
+            return L::add(L::add(L::mul(rx, L::set1(b.te_[e][i])), L::mul(ry, L::set1(b.te_[e + 1][i]))),
+                          L::mul(rz, L::set1(b.te_[e + 2][i])));
+        };
+        const V f1 = dot(3), f2 = dot(0);
+        const V nd = L::add(L::add(L::mul(L::set1(b.te_[6][i]), d0), L::mul(L::set1(b.te_[7][i]), d1)),
+                            L::mul(L::set1(b.te_[8][i]), d2));
+        const V f0 = L::sub(L::sub(nd, f1), f2);
+        const V bound = L::add(L::add(L::mul(L::load(p.tmx), L::set1(b.tp_[0][i])),
+                                      L::mul(L::load(p.tmy), L::set1(b.tp_[1][i]))),
+                               L::load(p.tmz));
+        const V lo = L::min(L::min(f0, f1), f2), hi = L::max(L::max(f0, f1), f2);
+        const int reject = L::lt(lo, L::sub(L::set1(0.0f), bound)) & L::gt(hi, bound);
+        return ~unsigned(reject) & ((1u << W) - 1);
     }
 
     // Sets up the rays of `lanes` that can join the packet and returns their mask; the others

@@ -29,28 +29,17 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   u·(|o|₁ + |c|₁ + r) (one u per rounding, ~20 of them, for a unit d); kSphereMargin =
 //   2^-16 = 256u leaves a wide factor over that. (The test "the leaves' float filters
 //   keep their margins" fails with 2^-28, below the error; it passes with 2^-24.)
-// - Triangles: the watertight test's edge functions u, v, w = px·py' − py·px' in float.
-//   Each sheared input px = (v − o)[kx] − sx·(v − o)[kz] is off from its double value by
-//   rounding v, o, sx (|sx| <= 1) and three operations: <= 6u·(|v|₁ + |o|₁ + |v − o|₁),
-//   which kTriMargin = 2^-19 = 32u bounds as δ <= (2·Σ|v|₁ + 4·|o|₁)·2^-19 (tm_ + tom).
-//   With inputs off by <= δ each product is off by <= δ(|a| + |b|) + δ², so an edge
-//   function by <= 2δ(Q + 2δ), Q = Σ|px| + |py|; rounding its two products and their
-//   difference adds <= 3u·Q² <= Q²·kTriProductMargin (2^-20 = 16u). A triangle is
-//   rejected only when one edge function is below −e and another above e. (The same
-//   test fails with kTriMargin cut to 2^-32; it passes with 2^-24: the |·|₁ sums over
-//   all coordinates make δ a wide bound.)
-constexpr float kSphereMargin = 0x1p-16f;    // relative margin of the float sphere test
-constexpr float kTriMargin = 0x1p-19f;       // relative error bound of the triangle test's inputs
-constexpr float kTriProductMargin = 0x1p-20f; // of the edge functions' own roundings (× Q²)
-// - Triangles, the single-ray filter (issue 21, branch rtmesh4): on edges precomputed at
-//   the build (Möller–Trumbore's quantities), e1 = v1 − v0, e2 = v2 − v0, n = e1 × e2, each
+// - Triangles (issue 21, branch rtmesh4, for single rays and the packets' transposed test;
+//   it replaced the watertight edge functions in float, which needed a per-ray shear): on
+//   edges precomputed at the build (Möller–Trumbore's), e1 = v1 − v0, e2 = v2 − v0, n = e1 × e2, each
 //   taken in double from the double vertices and rounded to float. With a = v0 − o, R = a × d
 //   the three edge functions of the ray are the signed volumes F0 = det(v1 − o, v2 − o, d),
 //   F1 = det(v2 − o, a, d) = R·e2, F2 = det(a, v1 − o, d) = −R·e1 and F0 = n·d − F1 − F2
 //   (F0 + F1 + F2 = det(e1, e2, d)). The watertight test's u, v, w are F0, F1, F2 times one
 //   common factor (±1/d[kz]), so its verdict "mixed signs" is theirs. The filter computes
-//   a, R, F1, G = R·e1 (F2 = −G) and F0 = (n·d − F1) + G in float and rejects only when
-//   one of F0, F1, F2 is below −B and another above B, B bounding:
+//   a, R, F1 = R·e2, F2 = R·(−e1) (−e1 stored: negation is exact) and F0 = (n·d − F1) − F2
+//   in float and rejects only when one of them is below −B and another above B (min/max
+//   of the three), B bounding:
 //   * the float error. With D = |d|∞, A = |v0|₁ + |o|₁ (>= |a|₁), E = max(|e1|₁, |e2|₁) and
 //     |(x × y)·z| <= |x|₁·|y|∞·|z|₁: rounding v0, o and a − (2u·A), d (u·D), e (2u·E):
 //     5u·D·E·A for F1 and for G; R's two products and difference and the dot's three
@@ -73,6 +62,7 @@ constexpr float kTriProductMargin = 0x1p-20f; // of the edge functions' own roun
 //   2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
 //   rounded up): B = X·P1 + Y·P2 + Z. NaN anywhere never rejects (compares are false).
 //   (The test "the precomputed-edge filter's bound" fails with kMtEdgeMargin cut to 2^-30.)
+constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
 constexpr double kMtEdgeMargin = 0x1p-18;   // × D·E·(V + |o|₁): the float error
 constexpr double kMtNormalMargin = 0x1p-19; // × D·|n|₁
 constexpr double kMtDoubleMargin = 0x1p-46; // × D·(V + |o|₁)²: the double test's error
@@ -94,10 +84,14 @@ constexpr float kInvFarScaleF = 1 + 0x1p-19f;
 // (its own float value at least |o|max·2^-21·(1 − u)) covers o's rounding (u·|o|max) plus
 // that move with 2^-21 >= 4·2.01u to spare, so o' stays behind (o'' ahead of) the exact
 // origin, and the entry is at most (1 + 3u) times its exact value: the argument above
-// holds. ε1 is relative only where o'·inv is a normal float: a ray with a finite 1/d whose
-// product lies beyond 2^±100 (or underflows to 0 from o' ≠ 0) takes the double walk
-// (initRay). For d = 0 (inv = ±inf) p is ±inf or NaN (o' = 0), and plane·inf − p is NaN
-// (no limit) or the infinity of the right sign: never a box wrongly missed.
+// holds. Range: these walks carry in float only rays with |o|max < 2^60 and direction
+// components 0 or within 2^±60 (the others take the double walk), so |o'·inv| < 2^121: no
+// overflow; an underflow is off by at most 2^-150 absolutely, an origin move of at most
+// 2^-150·|d| <= 2^-90, which kFmaEpsFloor = 2^-80 added to eps covers. For d = 0
+// (inv = ±inf) p is ±inf or NaN (o' = 0), and plane·inf − p is NaN (no limit) or the
+// infinity of the right sign: never a box wrongly missed.
+constexpr float kFmaEpsFloor = 0x1p-80f;
+constexpr double kFmaRange = 0x1p60;
 // BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
 constexpr int kAutoWidthAvx2 = 8;
 inline std::uint8_t runOf(std::uint8_t kind) {
