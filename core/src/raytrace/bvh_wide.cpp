@@ -79,15 +79,12 @@ PathChoice choosePath(const BvhOptions& o) {
             }
         }
     }
-    // The AVX2 walk's node test uses FMA (issue 21): every AVX2 CPU of this decade has it.
-    const bool avx2 = simd != BvhSimd::Sse2 && __builtin_cpu_supports("avx2") &&
-                      __builtin_cpu_supports("fma");
+    const bool avx2 = simd != BvhSimd::Sse2 && __builtin_cpu_supports("avx2");
     // AVX-512 (F + VL), 8-wide: asked for, or automatic where the CPU has it (measured
     // faster than AVX2 8-wide in two runs, ours/Embree eye / shadow rays: balls 4 0.78 /
     // 1.15 against 0.74 / 1.10, mesh 0.77 / 0.87 against 0.74 / 0.84, jacks 4 equal;
     // docs/raytrace-scale.md, issue 21).
-    const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                        __builtin_cpu_supports("fma");
+    const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
     if (avx512 && width != 4 && (simd == BvhSimd::Avx512 || (simd == BvhSimd::Auto && width == 0)))
         return {8, true, true};
     if (width == 0) width = avx2 ? kAutoWidthAvx2 : 4;

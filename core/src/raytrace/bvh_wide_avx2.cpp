@@ -22,10 +22,10 @@
 #include <type_traits>
 
 #if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx2,fma"))), apply_to = function)
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
 #elif defined(__GNUC__)
 #pragma GCC push_options
-#pragma GCC target("avx2,fma")
+#pragma GCC target("avx2")
 #endif
 
 namespace wb::rt::avx2 {
@@ -44,9 +44,6 @@ struct L8 {
             _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))));
     }
     static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
-    // a·b − c rounded once: the node test's slabs (issue 21; bvh_wide_kinds.h).
-    static constexpr bool kFma = true;
-    static V fmsub(V a, V b, V c) { return _mm256_fmsub_ps(a, b, c); }
     static V min(V a, V b) { return _mm256_min_ps(a, b); }
     static V max(V a, V b) { return _mm256_max_ps(a, b); }
     // Ordered, quiet: false for NaN, as SSE's cmpleps.

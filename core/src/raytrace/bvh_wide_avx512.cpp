@@ -5,11 +5,10 @@
 // BvhOptions::simd Avx2 or WB_BVH_PATH=avx8 force the AVX2 walk). Everything this file
 // includes is included first, before AVX2 is switched on for the rest of the file, so
 // the library code it inlines (std::, glm) keeps its plain x86-64 definitions and only
-// the walk itself is compiled for AVX-512. FMA only where the code asks (the node test's
-// fmsub, bvh_wide_kinds.h kFmaSlabs): GCC's avx512f turns FMA on and had contracted 143
-// products and sums into vfmadd, which the leaf tests' bounds do not allow, so this file
-// is compiled with -ffp-contract=off (core/raytrace.cmake); objdump shows only the node
-// test's vfmsub in it (48, the walks' instances), as in the AVX2 file.
+// the walk itself is compiled for AVX-512. Not FMA: no product is fused with a sum, so
+// the float tests round exactly as their error bounds assume: GCC's avx512f turns FMA on
+// and contracted 143 products and sums into vfmadd, so this file is compiled with
+// -ffp-contract=off (core/raytrace.cmake); objdump shows no vfmadd in it.
 #include "bvh_internal.h"
 #include "bvh_wide_kinds.h"
 #include "core/raytrace/bvh.h"
@@ -28,10 +27,10 @@
 #include <type_traits>
 
 #if defined(__clang__)
-#pragma clang attribute push(__attribute__((target("avx512f,avx512vl,fma"))), apply_to = function)
+#pragma clang attribute push(__attribute__((target("avx512f,avx512vl"))), apply_to = function)
 #elif defined(__GNUC__)
 #pragma GCC push_options
-#pragma GCC target("avx512f,avx512vl,fma")
+#pragma GCC target("avx512f,avx512vl")
 #endif
 
 namespace wb::rt::avx512 {
@@ -50,9 +49,6 @@ struct L8 {
             _mm256_cvtepu8_epi32(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(p))));
     }
     static V mul(V a, V b) { return _mm256_mul_ps(a, b); }
-    // a·b − c rounded once: the node test's slabs (issue 21; bvh_wide_kinds.h).
-    static constexpr bool kFma = true;
-    static V fmsub(V a, V b, V c) { return _mm256_fmsub_ps(a, b, c); }
     static V min(V a, V b) { return _mm256_min_ps(a, b); }
     static V max(V a, V b) { return _mm256_max_ps(a, b); }
     // Ordered, quiet: false for NaN, as SSE's cmpleps.

@@ -55,7 +55,6 @@ template <int Tag> struct Lanes4 {
     static V load(const float* p) { return _mm_load_ps(p); }
     static V sub(V a, V b) { return _mm_sub_ps(a, b); }
     static V mul(V a, V b) { return _mm_mul_ps(a, b); }
-    static constexpr bool kFma = false; // the node test as (plane − o)·(1/d)
     static V min(V a, V b) { return _mm_min_ps(a, b); }
     static V max(V a, V b) { return _mm_max_ps(a, b); }
     static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
@@ -84,7 +83,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const std::size_t* off; // byte offsets in a Node: near planes x, y, z, far planes x, y, z
         V on[3], of[3];         // origin moved by ∓eps for near and ±eps for far planes
         V inv[3], invFar[3];    // 1/d and 1/d·(1 + 2^-19) in float (kInvFarScaleF)
-        V oin[3], oif[3];       // L::kFma: on·inv and of·invFar rounded (the slabs' fmsub)
         V tMin;                 // lowered tMin
         bool useFloat = false;  // boxes tested in float (else in double)
         bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
@@ -334,8 +332,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // put a register-to-register vmovq (C5 79 D6) into the AVX2 walk, which valgrind 3.19
     // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
     __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
-                                                        float* invFar, float* on, float* of,
-                                                        float epsFloor = 0.0f) {
+                                                        float* invFar, float* on, float* of) {
         const __m128d zero = _mm_setzero_pd();
         const __m128 fd =
             _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&ray.direction[0])),
@@ -345,7 +342,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                           _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&ray.origin[1]), zero)));
         const __m128 finv = _mm_div_ps(_mm_set1_ps(1.0f), fd);
         const __m128 sgnEps =
-            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f + epsFloor), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
+            _mm_xor_ps(_mm_set1_ps(float(om) * 0x1p-21f), _mm_and_ps(fd, _mm_set1_ps(-0.0f)));
         _mm_store_ps(inv, finv);
         _mm_store_ps(invFar, _mm_mul_ps(finv, _mm_set1_ps(bvh_detail::kInvFarScaleF)));
         _mm_store_ps(on, _mm_add_ps(fo, sgnEps));
@@ -354,11 +351,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
 
     // The range check of two doubles, branch-free: bit i set when lane i is 0 or
     // 1e-30 <= |v| <= 1e30 (false for NaN).
-    __attribute__((always_inline)) static int inRange(__m128d v, double lo = 1e-30, double hi = 1e30) {
+    __attribute__((always_inline)) static int inRange(__m128d v) {
         const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
         return _mm_movemask_pd(_mm_or_pd(
             _mm_cmpeq_pd(av, _mm_setzero_pd()),
-            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(lo)), _mm_cmple_pd(av, _mm_set1_pd(hi)))));
+            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
     }
 
     // A ray's RayData fields that initRay and the packets' joinPacket both set: the plane
@@ -395,20 +392,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
         const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        // The FMA node test's walks carry a narrower range in float (bvh_wide_kinds.h,
-        // kFmaSlabs: no overflow of o·(1/d)).
-        constexpr double kHi = L::kFma ? bvh_detail::kFmaRange : 1e30,
-                         kLo = L::kFma ? 1 / bvh_detail::kFmaRange : 1e-30;
-        const bool ok = om < kHi && inRange(dxy, kLo, kHi) == 3 && (inRange(dz, kLo, kHi) & 1);
+        const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
         setRayData(r, signs, ok, ray);
         if (ok) {
             alignas(16) float inv[4], invFar[4], on[4], of[4];
-            floatRay(ray, om, inv, invFar, on, of, L::kFma ? bvh_detail::kFmaEpsFloor : 0.0f);
-            [[maybe_unused]] alignas(16) float oin[4], oif[4];
-            if constexpr (L::kFma) { // the slabs' o·(1/d) (bvh_wide_kinds.h, kFmaSlabs)
-                _mm_store_ps(oin, _mm_mul_ps(_mm_load_ps(on), _mm_load_ps(inv)));
-                _mm_store_ps(oif, _mm_mul_ps(_mm_load_ps(of), _mm_load_ps(invFar)));
-            }
+            floatRay(ray, om, inv, invFar, on, of);
             const float ftMin = float(tMin);
             const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
             if constexpr (kRoot) {
@@ -436,10 +424,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 r.of[a] = L::set1(of[a]);
                 r.inv[a] = L::set1(inv[a]);
                 r.invFar[a] = L::set1(invFar[a]);
-                if constexpr (L::kFma) {
-                    r.oin[a] = L::set1(oin[a]);
-                    r.oif[a] = L::set1(oif[a]);
-                }
             }
             r.tMin = L::set1(lowered);
         } else {
@@ -516,14 +500,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const V farP = planes(nd, r.off[3 + a], a);
                     // max/min return the second operand for NaN (0·inf: a ray in the slab's
                     // plane): that slab is no limit.
-                    if constexpr (L::kFma) {
-                        // plane·inv − o·inv rounded once (bvh_wide_kinds.h, kFmaSlabs).
-                        t0 = L::max(L::fmsub(nearP, r.inv[a], r.oin[a]), t0);
-                        t1 = L::min(L::fmsub(farP, r.invFar[a], r.oif[a]), t1);
-                    } else {
-                        t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
-                        t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
-                    }
+                    t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
+                    t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
                 }
                 mask = L::le(t0, t1);
                 if constexpr (Q) mask &= validMask(nd);

@@ -60,7 +60,8 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   rejects), |o|₁ <= 2^30 and D <= 2^60 (per ray: else X = Y = +inf): 12·2^62·2^60 < 2^128.
 //   Per triangle tp_[0] = P1 = 2^-18·E + 2·2^-46·V and tp_[1] = P2 = 2^-18·E·V +
 //   2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
-//   rounded up): B = X·P1 + Y·P2 + Z. NaN anywhere never rejects (compares are false).
+//   rounded up): B = X·P1 + Y·P2 + Z. Where B is finite every F is finite (the ranges);
+//   a NaN or infinite B rejects nothing (its compares are false).
 //   (The test "the precomputed-edge filter's bound" fails with kMtEdgeMargin cut to 2^-30.)
 constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
 constexpr double kMtEdgeMargin = 0x1p-18;   // × D·E·(V + |o|₁): the float error
@@ -76,22 +77,12 @@ constexpr double kMtMaxDir = 0x1p60;        // D beyond: no rejection
 // exit at least (1 + 27u) times its exact value: entry <= exit whenever the exact ray
 // enters the box, and a box it enters is never missed.
 constexpr float kInvFarScaleF = 1 + 0x1p-19f;
-// kFmaSlabs: the AVX2 and AVX-512 8-wide walks (issue 21) take a slab as
-// fmsub(plane, inv, p) = plane·inv − p rounded once, p = fl(o'·inv) per ray and axis (and
-// fl(o''·invFar) for the far planes). Then p = o'·inv·(1 + ε1), |ε1| <= u, so the slab is
-// fl((plane − o' − o'·ε1)·inv): the form above with the origin moved by o'·ε1, at most
-// u·|o'| <= 1.01u·|o|max, and one rounding instead of two. The widening eps = |o|max·2^-21
-// (its own float value at least |o|max·2^-21·(1 − u)) covers o's rounding (u·|o|max) plus
-// that move with 2^-21 >= 4·2.01u to spare, so o' stays behind (o'' ahead of) the exact
-// origin, and the entry is at most (1 + 3u) times its exact value: the argument above
-// holds. Range: these walks carry in float only rays with |o|max < 2^60 and direction
-// components 0 or within 2^±60 (the others take the double walk), so |o'·inv| < 2^121: no
-// overflow; an underflow is off by at most 2^-150 absolutely, an origin move of at most
-// 2^-150·|d| <= 2^-90, which kFmaEpsFloor = 2^-80 added to eps covers. For d = 0
-// (inv = ±inf) p is ±inf or NaN (o' = 0), and plane·inf − p is NaN (no limit) or the
-// infinity of the right sign: never a box wrongly missed.
-constexpr float kFmaEpsFloor = 0x1p-80f;
-constexpr double kFmaRange = 0x1p60;
+// (Issue 21, branch rtmesh4: an FMA form, fmsub(plane, inv, fl(o'·inv)), was built with its
+// bound — o's rounding plus the product's, 2u·|o|max, inside the 2^-21 widening, with a
+// narrower float range against overflow and a 2^-80 floor on eps against underflow — and
+// taken back: GCC keeps the ray's values on the stack (the exact tests' calls in the loop
+// clobber every vector register), so the fused form needs the same 43 instructions a node
+// and the set-up more: callgrind +2–9% on every row, time within the noise; commit a7764b8.)
 // BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
 constexpr int kAutoWidthAvx2 = 8;
 inline std::uint8_t runOf(std::uint8_t kind) {
