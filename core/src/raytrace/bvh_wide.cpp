@@ -143,8 +143,8 @@ void Bvh::fillLeafData(std::uint32_t i) {
         const double vmax = std::max({l1(t->v0), l1(t->v1), l1(t->v2)});
         const double em = std::max(l1(e1), l1(e2));
         const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
-        const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1(nn) +
-                          kMtDoubleMargin * vmax * vmax;
+        const double p2 =
+            kMtEdgeMargin * em * vmax + kMtNormalMargin * l1(nn) + kMtDoubleMargin * vmax * vmax;
         const bool small = vmax <= kMtMaxCoord; // false for NaN
         tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
         tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();

@@ -281,10 +281,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for
                     // bit, and F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
                     const __m128 f1 = dot(3), f2 = dot(0);
-                    const __m128 nd = _mm_add_ps(
-                        _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&b.te_[6][i]), r.md[0]),
-                                   _mm_mul_ps(_mm_loadu_ps(&b.te_[7][i]), r.md[1])),
-                        _mm_mul_ps(_mm_loadu_ps(&b.te_[8][i]), r.md[2]));
+                    const __m128 nd =
+                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&b.te_[6][i]), r.md[0]),
+                                              _mm_mul_ps(_mm_loadu_ps(&b.te_[7][i]), r.md[1])),
+                                   _mm_mul_ps(_mm_loadu_ps(&b.te_[8][i]), r.md[2]));
                     const __m128 f0 = _mm_sub_ps(_mm_sub_ps(nd, f1), f2);
                     const __m128 bound =
                         _mm_add_ps(_mm_add_ps(_mm_mul_ps(r.mx, _mm_loadu_ps(&b.tp_[0][i])),
@@ -295,9 +295,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // and a NaN or infinite B rejects nothing.
                     const __m128 lo = _mm_min_ps(_mm_min_ps(f0, f1), f2);
                     const __m128 hi = _mm_max_ps(_mm_max_ps(f0, f1), f2);
-                    mask = 0xF & ~_mm_movemask_ps(
-                                     _mm_and_ps(_mm_cmplt_ps(lo, _mm_sub_ps(_mm_setzero_ps(), bound)),
-                                                _mm_cmpgt_ps(hi, bound)));
+                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(
+                                     _mm_cmplt_ps(lo, _mm_sub_ps(_mm_setzero_ps(), bound)),
+                                     _mm_cmpgt_ps(hi, bound)));
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
@@ -705,12 +705,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const V ry = L::sub(L::mul(az, d0), L::mul(ax, d2));
         const V rz = L::sub(L::mul(ax, d1), L::mul(ay, d0));
         auto dot = [&](int e) __attribute__((always_inline)) {
-            return L::add(L::add(L::mul(rx, L::set1(b.te_[e][i])), L::mul(ry, L::set1(b.te_[e + 1][i]))),
-                          L::mul(rz, L::set1(b.te_[e + 2][i])));
+            return L::add(
+                L::add(L::mul(rx, L::set1(b.te_[e][i])), L::mul(ry, L::set1(b.te_[e + 1][i]))),
+                L::mul(rz, L::set1(b.te_[e + 2][i])));
         };
         const V f1 = dot(3), f2 = dot(0);
-        const V nd = L::add(L::add(L::mul(L::set1(b.te_[6][i]), d0), L::mul(L::set1(b.te_[7][i]), d1)),
-                            L::mul(L::set1(b.te_[8][i]), d2));
+        const V nd =
+            L::add(L::add(L::mul(L::set1(b.te_[6][i]), d0), L::mul(L::set1(b.te_[7][i]), d1)),
+                   L::mul(L::set1(b.te_[8][i]), d2));
         const V f0 = L::sub(L::sub(nd, f1), f2);
         const V bound = L::add(L::add(L::mul(L::load(p.tmx), L::set1(b.tp_[0][i])),
                                       L::mul(L::load(p.tmy), L::set1(b.tp_[1][i]))),

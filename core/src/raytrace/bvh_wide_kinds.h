@@ -31,8 +31,8 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   keep their margins" fails with 2^-28, below the error; it passes with 2^-24.)
 // - Triangles (issue 21, branch rtmesh4, for single rays and the packets' transposed test;
 //   it replaced the watertight edge functions in float, which needed a per-ray shear): on
-//   edges precomputed at the build (Möller–Trumbore's), e1 = v1 − v0, e2 = v2 − v0, n = e1 × e2, each
-//   taken in double from the double vertices and rounded to float. With a = v0 − o, R = a × d
+//   edges precomputed at the build (Möller–Trumbore's), e1 = v1 − v0, e2 = v2 − v0, n = e1 × e2,
+//   each taken in double from the double vertices and rounded to float. With a = v0 − o, R = a × d
 //   the three edge functions of the ray are the signed volumes F0 = det(v1 − o, v2 − o, d),
 //   F1 = det(v2 − o, a, d) = R·e2, F2 = det(a, v1 − o, d) = −R·e1 and F0 = n·d − F1 − F2
 //   (F0 + F1 + F2 = det(e1, e2, d)). The watertight test's u, v, w are F0, F1, F2 times one
@@ -63,7 +63,7 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   rounded up): B = X·P1 + Y·P2 + Z. Where B is finite every F is finite (the ranges);
 //   a NaN or infinite B rejects nothing (its compares are false).
 //   (The test "the precomputed-edge filter's bound" fails with kMtEdgeMargin cut to 2^-30.)
-constexpr float kSphereMargin = 0x1p-16f; // relative margin of the float sphere test
+constexpr float kSphereMargin = 0x1p-16f;   // relative margin of the float sphere test
 constexpr double kMtEdgeMargin = 0x1p-18;   // × D·E·(V + |o|₁): the float error
 constexpr double kMtNormalMargin = 0x1p-19; // × D·|n|₁
 constexpr double kMtDoubleMargin = 0x1p-46; // × D·(V + |o|₁)²: the double test's error

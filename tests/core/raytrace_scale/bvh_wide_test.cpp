@@ -1040,7 +1040,10 @@ TEST_CASE("rt_bvh_wide: the precomputed-edge triangle filter keeps its bound (sl
             const auto* tp = dynamic_cast<const Triangle*>(p.get());
             REQUIRE(tp);
             const glm::dvec3 from = (-kFarCentre + rnd3(g, -300, 300)) * sc;
-            const glm::dvec3 pts[6] = {tp->v0, tp->v1, tp->v2, 0.5 * (tp->v0 + tp->v1),
+            const glm::dvec3 pts[6] = {tp->v0,
+                                       tp->v1,
+                                       tp->v2,
+                                       0.5 * (tp->v0 + tp->v1),
                                        tp->v1 + u(g) * (tp->v2 - tp->v1),
                                        tp->v2 + u(g) * (tp->v0 - tp->v2)};
             for (const glm::dvec3& q : pts) {
