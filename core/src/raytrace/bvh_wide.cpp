@@ -129,14 +129,25 @@ void Bvh::fillLeafData(std::uint32_t i) {
                  kSphereMargin;
     } else if (runOf(kind_[i]) == kRunTriangle) {
         const auto* t = static_cast<const Triangle*>(order_[i]);
-        const glm::dvec3* vs[3] = {&t->v0, &t->v1, &t->v2};
-        double mag = 0;
+        for (int a = 0; a < 3; ++a)
+            tv_[a][i] = float(t->v0[a]);
+        // The filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
+        // from the double vertices, rounded to float (the parts rounded up).
+        const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
+        const glm::dvec3 ne1 = -e1; // the filter reads −e1 (exactly negated): F2 = R·(−e1)
+        const glm::dvec3* es[3] = {&ne1, &e2, &nn};
         for (int j = 0; j < 3; ++j)
-            for (int a = 0; a < 3; ++a) {
-                tv_[j * 3 + a][i] = float((*vs[j])[a]);
-                mag += std::abs((*vs[j])[a]);
-            }
-        tm_[i] = float(2 * mag) * kTriMargin; // see the triangle test's δ
+            for (int a = 0; a < 3; ++a)
+                te_[j * 3 + a][i] = float((*es[j])[a]);
+        auto l1 = [](const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); };
+        const double vmax = std::max({l1(t->v0), l1(t->v1), l1(t->v2)});
+        const double em = std::max(l1(e1), l1(e2));
+        const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
+        const double p2 =
+            kMtEdgeMargin * em * vmax + kMtNormalMargin * l1(nn) + kMtDoubleMargin * vmax * vmax;
+        const bool small = vmax <= kMtMaxCoord; // false for NaN
+        tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
+        tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
     } else {
         // Rounded outward; a box float cannot hold (or an empty one) is never rejected.
         const Aabb bx = order_[i]->bounds();
@@ -386,8 +397,11 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
                 v->assign(n + 4, 0.0f);
         if (has[kRunTriangle]) {
-            tm_.assign(n + 4, 0.0f);
             for (auto& v : tv_)
+                v.assign(n + 4, 0.0f);
+            for (auto& v : te_)
+                v.assign(n + 4, 0.0f);
+            for (auto& v : tp_)
                 v.assign(n + 4, 0.0f);
         }
         if (has[kRunOther])

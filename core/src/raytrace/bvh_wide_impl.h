@@ -91,12 +91,50 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
         __m128 fo[3], fd[3], om;
-        // Triangle test (set up at the first triangle run): the watertight shear (kz the
-        // dominant axis of d), the origin in (kx, ky, kz) order, |o|₁·margin.
-        bool triReady = false;
-        TriangleShear sh; // in double: the exact tests of plain triangles reuse it
-        int k[3];         // the filter's axes: sh.kz last, the other two in cyclic order
-        __m128 to[3], shx, shy, tom;
+        // The watertight test's shear in double, set up at the first exact test of a plain
+        // triangle, which reuses it: mutable, the exact tests get const RayData.
+        mutable bool shReady = false;
+        mutable TriangleShear sh;
+        // The single ray's triangle filter on precomputed edges (set up at the first triangle
+        // run; bvh_wide_kinds.h): the float origin and direction, the bound's X, Y, Z.
+        bool mtReady = false;
+        __m128 mo[3], md[3], mx, my, mz;
+
+        // Out of line (once per ray at most): inlined, they made the walk's own code
+        // longer on every scene, jacks 4's eye walk without a triangle included (callgrind).
+        __attribute__((noinline)) void shearSetup() const {
+            sh = triangleShear(d);
+            shReady = true;
+        }
+        __attribute__((noinline)) void mtSetup() {
+            const __m128d zero = _mm_setzero_pd();
+            const __m128 vo =
+                _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&o.x)),
+                              _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&o.y), zero)));
+            const __m128 vd =
+                _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&d.x)),
+                              _mm_cvtpd_ps(_mm_unpackhi_pd(_mm_loadu_pd(&d.y), zero)));
+            mo[0] = _mm_shuffle_ps(vo, vo, 0x00);
+            mo[1] = _mm_shuffle_ps(vo, vo, 0x55);
+            mo[2] = _mm_shuffle_ps(vo, vo, 0xAA);
+            md[0] = _mm_shuffle_ps(vd, vd, 0x00);
+            md[1] = _mm_shuffle_ps(vd, vd, 0x55);
+            md[2] = _mm_shuffle_ps(vd, vd, 0xAA);
+            const double ol = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
+            const double dm = std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z)));
+            // The bound's parts, each raised by 2^-20 over its double value (float's rounding
+            // to nearest takes at most 2^-24 of it; an underflow at most 2^-150, which
+            // kMtFloor covers); beyond the ranges X = Y = +inf: no rejection.
+            constexpr double kUp = 1 + 0x1p-20;
+            const bool ok = ol <= bvh_detail::kMtMaxCoord && dm <= bvh_detail::kMtMaxDir;
+            const double x = dm * ol;
+            constexpr float kInfF = std::numeric_limits<float>::infinity();
+            mx = _mm_set1_ps(ok ? float(x * kUp) : kInfF);
+            my = _mm_set1_ps(ok ? float(dm * kUp) : kInfF);
+            mz = _mm_set1_ps(
+                float(bvh_detail::kMtDoubleMargin * kUp * x * ol + bvh_detail::kMtFloor));
+            mtReady = true;
+        }
 
         void sphereSetup() {
             unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
@@ -107,33 +145,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
             om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) *
                              bvh_detail::kSphereMargin);
             sphReady = true;
-        }
-        void triangleSetup() {
-            // The watertight test's axes and shear (inline: compiled into this walk), the
-            // same bits as Triangle::intersect's, which the exact tests reuse.
-            sh = triangleShear(d);
-            // The float filter's axes: kz and the next two in cyclic order, whatever the
-            // sign of d[kz] (the exact test swaps kx and ky when it is negative, to keep the
-            // winding). The filter's verdict is the same either way: the swap exchanges px
-            // and py (the same operations on the same values), so u, v, w change sign
-            // exactly (a − b = −(b − a) in IEEE) and "one surely negative, another surely
-            // positive" is unchanged, as are q and e. One order per kz lets the leaf test
-            // index the vertex arrays by constants (visitLeaf: 3 kinds of triangle test).
-            k[2] = sh.kz;
-            k[0] = sh.kz == 2 ? 0 : sh.kz + 1;
-            k[1] = k[0] == 2 ? 0 : k[0] + 1;
-            const bool swapped = sh.kx != k[0];
-            const double* op = &o.x; // glm's operator[] would switch on the index
-            to[0] = _mm_set1_ps(float(op[k[0]]));
-            to[1] = _mm_set1_ps(float(op[k[1]]));
-            to[2] = _mm_set1_ps(float(op[k[2]]));
-            // sh.sx = d[sh.kx]/d[kz], sh.sy = d[sh.ky]/d[kz]: the shear of axis k[0] is sh.sx
-            // unless swapped.
-            shx = _mm_set1_ps(float(swapped ? sh.sy : sh.sx));
-            shy = _mm_set1_ps(float(swapped ? sh.sx : sh.sy));
-            tom = _mm_set1_ps(float(4 * (std::abs(o.x) + std::abs(o.y) + std::abs(o.z))) *
-                              bvh_detail::kTriMargin);
-            triReady = true;
         }
     };
 
@@ -249,56 +260,44 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
                     mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
                 } else if (runKind == kRunTriangle) {
-                    if (!r.triReady) r.triangleSetup();
-                    // The watertight test's edge functions in float (same shear); rejected
-                    // only when one is surely negative and another surely positive: e bounds
-                    // their float error (inputs off by δ after rounding vertices and origin,
-                    // the shear and the differences; products and their difference rounded).
-                    // The vertex arrays are picked by constants, one instance per kz (issue
-                    // 21: indexing them by the ray's axes took ~30 of a run's ~120
-                    // instructions in address arithmetic).
-                    __m128 px[3], py[3];
-                    const __m128 absMask = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
-                    auto edges = [&](auto kzC) __attribute__((always_inline)) {
-                        constexpr int kz = decltype(kzC)::value;
-                        constexpr int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-                        for (int j = 0; j < 3; ++j) {
-                            const __m128 X =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kx][i]), r.to[0]);
-                            const __m128 Y =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + ky][i]), r.to[1]);
-                            const __m128 Z =
-                                _mm_sub_ps(_mm_loadu_ps(&b.tv_[j * 3 + kz][i]), r.to[2]);
-                            px[j] = _mm_sub_ps(X, _mm_mul_ps(r.shx, Z));
-                            py[j] = _mm_sub_ps(Y, _mm_mul_ps(r.shy, Z));
-                        }
+                    if (!r.mtReady) r.mtSetup();
+                    // Möller–Trumbore's quantities on the edges precomputed at the build: the
+                    // edge functions F1 = R·e2, F2 = R·(−e1), F0 = n·d − F1 − F2 with
+                    // R = (v0 − o) × d, rejected only when one is below −B and another above
+                    // B, B their written-down error bound (bvh_wide_kinds.h). Issue 21: the
+                    // watertight shear filter took ~122 instructions a run and a per-ray shear.
+                    const __m128 ax = _mm_sub_ps(_mm_loadu_ps(&b.tv_[0][i]), r.mo[0]);
+                    const __m128 ay = _mm_sub_ps(_mm_loadu_ps(&b.tv_[1][i]), r.mo[1]);
+                    const __m128 az = _mm_sub_ps(_mm_loadu_ps(&b.tv_[2][i]), r.mo[2]);
+                    const __m128 rx = _mm_sub_ps(_mm_mul_ps(ay, r.md[2]), _mm_mul_ps(az, r.md[1]));
+                    const __m128 ry = _mm_sub_ps(_mm_mul_ps(az, r.md[0]), _mm_mul_ps(ax, r.md[2]));
+                    const __m128 rz = _mm_sub_ps(_mm_mul_ps(ax, r.md[1]), _mm_mul_ps(ay, r.md[0]));
+                    auto dot = [&](int e) __attribute__((always_inline)) {
+                        return _mm_add_ps(
+                            _mm_add_ps(_mm_mul_ps(rx, _mm_loadu_ps(&b.te_[e][i])),
+                                       _mm_mul_ps(ry, _mm_loadu_ps(&b.te_[e + 1][i]))),
+                            _mm_mul_ps(rz, _mm_loadu_ps(&b.te_[e + 2][i])));
                     };
-                    if (r.k[2] == 0)
-                        edges(std::integral_constant<int, 0>{});
-                    else if (r.k[2] == 1)
-                        edges(std::integral_constant<int, 1>{});
-                    else
-                        edges(std::integral_constant<int, 2>{});
-                    const __m128 u = _mm_sub_ps(_mm_mul_ps(px[2], py[1]), _mm_mul_ps(py[2], px[1]));
-                    const __m128 v = _mm_sub_ps(_mm_mul_ps(px[0], py[2]), _mm_mul_ps(py[0], px[2]));
-                    const __m128 w = _mm_sub_ps(_mm_mul_ps(px[1], py[0]), _mm_mul_ps(py[1], px[0]));
-                    __m128 q = _mm_setzero_ps();
-                    for (int j = 0; j < 3; ++j)
-                        q = _mm_add_ps(
-                            q, _mm_add_ps(_mm_and_ps(px[j], absMask), _mm_and_ps(py[j], absMask)));
-                    // δ = (|v|₁ + |o|₁ + Σ|v − o|₁)·2^-19 (sums over the three vertices) is
-                    // at most (2·Σ|v|₁ + 4·|o|₁)·2^-19 = tm_ + tom; e = 2δ(Q + 2δ) + Q²·2^-20.
-                    const __m128 delta = _mm_add_ps(_mm_loadu_ps(&b.tm_[i]), r.tom);
-                    const __m128 twoD = _mm_add_ps(delta, delta);
-                    const __m128 e =
-                        _mm_add_ps(_mm_mul_ps(twoD, _mm_add_ps(q, twoD)),
-                                   _mm_mul_ps(_mm_mul_ps(q, q), _mm_set1_ps(kTriProductMargin)));
-                    const __m128 ne = _mm_sub_ps(_mm_setzero_ps(), e);
-                    const __m128 someNeg = _mm_or_ps(
-                        _mm_or_ps(_mm_cmplt_ps(u, ne), _mm_cmplt_ps(v, ne)), _mm_cmplt_ps(w, ne));
-                    const __m128 somePos = _mm_or_ps(
-                        _mm_or_ps(_mm_cmpgt_ps(u, e), _mm_cmpgt_ps(v, e)), _mm_cmpgt_ps(w, e));
-                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(someNeg, somePos));
+                    // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for
+                    // bit, and F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
+                    const __m128 f1 = dot(3), f2 = dot(0);
+                    const __m128 nd =
+                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&b.te_[6][i]), r.md[0]),
+                                              _mm_mul_ps(_mm_loadu_ps(&b.te_[7][i]), r.md[1])),
+                                   _mm_mul_ps(_mm_loadu_ps(&b.te_[8][i]), r.md[2]));
+                    const __m128 f0 = _mm_sub_ps(_mm_sub_ps(nd, f1), f2);
+                    const __m128 bound =
+                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(r.mx, _mm_loadu_ps(&b.tp_[0][i])),
+                                              _mm_mul_ps(r.my, _mm_loadu_ps(&b.tp_[1][i]))),
+                                   r.mz);
+                    // Some F below −B and another above B. min/max drop a NaN operand, but no
+                    // F is NaN or infinite where B is finite (bvh_wide_kinds.h: the ranges),
+                    // and a NaN or infinite B rejects nothing.
+                    const __m128 lo = _mm_min_ps(_mm_min_ps(f0, f1), f2);
+                    const __m128 hi = _mm_max_ps(_mm_max_ps(f0, f1), f2);
+                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(
+                                     _mm_cmplt_ps(lo, _mm_sub_ps(_mm_setzero_ps(), bound)),
+                                     _mm_cmpgt_ps(hi, bound)));
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
@@ -627,16 +626,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         float tMinLo;
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
-        // kind): RayData's fo, fd, om (spheres) and to, shx, shy, tom (triangles) of each
+        // kind): RayData's fo, fd, om (spheres) and mo, md, mx, my, mz (triangles) of each
         // lane's ray. sphLanes: lanes with a unit direction (the others visit every
-        // sphere, as their single walk does); triLanes: lanes whose shear axes are the
-        // first lane's (tk; the others run their own test).
+        // sphere, as their single walk does); triLanes: every lane of the packet (the
+        // triangle filter has no per-ray axes).
         alignas(32) float sfo[3][W], sfd[3][W], som[W];
-        alignas(32) float tto[3][W], tshx[W], tshy[W], ttom[W];
+        alignas(32) float tmo[3][W], tmd[3][W], tmx[W], tmy[W], tmz[W];
         unsigned sphLanes = 0, triLanes = 0;
         unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
         bool sphSet = false, triSet = false;
-        int tk[3] = {0, 1, 2};
     };
     // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
     // docs/raytrace-scale.md has the measurement).
@@ -663,22 +661,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int first = __builtin_ctz(lanes);
         for (int j = 0; j < W; ++j) {
             RayData& r = p.r[(lanes >> j) & 1 ? j : first];
-            if (!r.triReady) r.triangleSetup();
+            if (!r.mtReady) r.mtSetup();
+            for (int a = 0; a < 3; ++a) {
+                p.tmo[a][j] = lane0(r.mo[a]);
+                p.tmd[a][j] = lane0(r.md[a]);
+            }
+            p.tmx[j] = lane0(r.mx);
+            p.tmy[j] = lane0(r.my);
+            p.tmz[j] = lane0(r.mz);
         }
-        const RayData& r0 = p.r[first];
-        for (int a = 0; a < 3; ++a)
-            p.tk[a] = r0.k[a];
-        for (int j = 0; j < W; ++j) {
-            const bool in = (lanes >> j) & 1;
-            const RayData& r = p.r[in ? j : first];
-            if (in && r.k[0] == p.tk[0] && r.k[1] == p.tk[1] && r.k[2] == p.tk[2])
-                p.triLanes |= 1u << j;
-            for (int a = 0; a < 3; ++a)
-                p.tto[a][j] = lane0(r.to[a]);
-            p.tshx[j] = lane0(r.shx);
-            p.tshy[j] = lane0(r.shy);
-            p.ttom[j] = lane0(r.tom);
-        }
+        p.triLanes = lanes; // the filter has no per-ray axes: every lane is transposed
         p.triSet = true;
     }
     // Sphere i against the lanes: visitLeaf's sphere test with ray j's values in lane j
@@ -700,34 +692,34 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const V rm = L::add(L::set1(b.sr_[i]), L::add(L::load(p.som), L::set1(b.sm_[i])));
         return unsigned(L::ngt(ll, L::mul(rm, rm)));
     }
-    // Triangle i against the lanes of triLanes: visitLeaf's edge functions with their error
-    // bound e, ray j's shear and origin in lane j; rejected only when one is surely negative
-    // and another surely positive.
+    // Triangle i against the lanes of triLanes: visitLeaf's filter on the precomputed edges
+    // with ray j's float origin, direction and bound parts in lane j (the same operations in
+    // the same order: ray j's single-walk verdict).
     __attribute__((always_inline)) static unsigned triangleLanesTest(const Bvh& b, const Packet& p,
                                                                      std::uint32_t i) {
-        V px[3], py[3];
-        const V to0 = L::load(p.tto[0]), to1 = L::load(p.tto[1]), to2 = L::load(p.tto[2]);
-        const V shx = L::load(p.tshx), shy = L::load(p.tshy);
-        for (int j = 0; j < 3; ++j) {
-            const V X = L::sub(L::set1(b.tv_[j * 3 + p.tk[0]][i]), to0);
-            const V Y = L::sub(L::set1(b.tv_[j * 3 + p.tk[1]][i]), to1);
-            const V Z = L::sub(L::set1(b.tv_[j * 3 + p.tk[2]][i]), to2);
-            px[j] = L::sub(X, L::mul(shx, Z));
-            py[j] = L::sub(Y, L::mul(shy, Z));
-        }
-        const V u = L::sub(L::mul(px[2], py[1]), L::mul(py[2], px[1]));
-        const V v = L::sub(L::mul(px[0], py[2]), L::mul(py[0], px[2]));
-        const V w = L::sub(L::mul(px[1], py[0]), L::mul(py[1], px[0]));
-        V q = L::set1(0.0f);
-        for (int j = 0; j < 3; ++j)
-            q = L::add(q, L::add(L::abs(px[j]), L::abs(py[j])));
-        const V delta = L::add(L::set1(b.tm_[i]), L::load(p.ttom));
-        const V twoD = L::add(delta, delta);
-        const V e = L::add(L::mul(twoD, L::add(q, twoD)), L::mul(L::mul(q, q), L::set1(0x1p-20f)));
-        const V ne = L::sub(L::set1(0.0f), e);
-        const int someNeg = L::lt(u, ne) | L::lt(v, ne) | L::lt(w, ne);
-        const int somePos = L::gt(u, e) | L::gt(v, e) | L::gt(w, e);
-        return ~unsigned(someNeg & somePos) & ((1u << W) - 1);
+        const V d0 = L::load(p.tmd[0]), d1 = L::load(p.tmd[1]), d2 = L::load(p.tmd[2]);
+        const V ax = L::sub(L::set1(b.tv_[0][i]), L::load(p.tmo[0]));
+        const V ay = L::sub(L::set1(b.tv_[1][i]), L::load(p.tmo[1]));
+        const V az = L::sub(L::set1(b.tv_[2][i]), L::load(p.tmo[2]));
+        const V rx = L::sub(L::mul(ay, d2), L::mul(az, d1));
+        const V ry = L::sub(L::mul(az, d0), L::mul(ax, d2));
+        const V rz = L::sub(L::mul(ax, d1), L::mul(ay, d0));
+        auto dot = [&](int e) __attribute__((always_inline)) {
+            return L::add(
+                L::add(L::mul(rx, L::set1(b.te_[e][i])), L::mul(ry, L::set1(b.te_[e + 1][i]))),
+                L::mul(rz, L::set1(b.te_[e + 2][i])));
+        };
+        const V f1 = dot(3), f2 = dot(0);
+        const V nd =
+            L::add(L::add(L::mul(L::set1(b.te_[6][i]), d0), L::mul(L::set1(b.te_[7][i]), d1)),
+                   L::mul(L::set1(b.te_[8][i]), d2));
+        const V f0 = L::sub(L::sub(nd, f1), f2);
+        const V bound = L::add(L::add(L::mul(L::load(p.tmx), L::set1(b.tp_[0][i])),
+                                      L::mul(L::load(p.tmy), L::set1(b.tp_[1][i]))),
+                               L::load(p.tmz));
+        const V lo = L::min(L::min(f0, f1), f2), hi = L::max(L::max(f0, f1), f2);
+        const int reject = L::lt(lo, L::sub(L::set1(0.0f), bound)) & L::gt(hi, bound);
+        return ~unsigned(reject) & ((1u << W) - 1);
     }
 
     // Sets up the rays of `lanes` that can join the packet and returns their mask; the others
@@ -1202,8 +1194,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return static_cast<const Sphere&>(p).Sphere::intersect(ray, tMin, tMax, hit);
         if (kind == bvh_detail::kTriangle) {
             const auto& t = static_cast<const Triangle&>(p);
-            return r && r->triReady ? t.intersectSheared(ray, r->sh, tMin, tMax, hit)
-                                    : t.Triangle::intersect(ray, tMin, tMax, hit);
+            if (!r) return t.Triangle::intersect(ray, tMin, tMax, hit);
+            if (!r->shReady) r->shearSetup();
+            return t.intersectSheared(ray, r->sh, tMin, tMax, hit);
         }
         return p.intersect(ray, tMin, tMax, hit);
     }

@@ -242,8 +242,9 @@ class Bvh : public Aggregate {
     std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
     std::vector<float> sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                                 // radius, their part of the float test's margin
-    std::vector<float> tv_[9], tm_;             // triangles at their order_ index: float vertices
-                                                // [vertex·3 + axis], their part of the margin
+    // Triangles at their order_ index (issue 21: the filter on precomputed edges): float
+    // v0, v0 − v1, v2 − v0 and the normal (axis-major), the filter bound's two parts.
+    std::vector<float> tv_[3], te_[9], tp_[2];
     std::vector<float> ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
