@@ -161,13 +161,9 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
         const glm::dvec3 e = build[i].hi - build[i].lo;
         return e.x * e.y + e.y * e.z + e.z * e.x;
     };
-    // Build nodes in the subtree of i (depth first: it ends where its right spine's leaf does).
-    auto subtreeSize = [&](std::size_t i) {
-        std::size_t j = i;
-        while (build[j].count == 0)
-            j = build[j].offset;
-        return j + 1 - i;
-    };
+    // Build nodes in the subtree of i, at most kSizeCap (BuildNode::size: the array has
+    // gaps between the build's parallel subtrees, so the places no longer tell it).
+    auto subtreeSize = [&](std::size_t i) { return std::size_t(build[i].size); };
     // An inner subtree of at most kMergePrims primitives becomes one leaf of the wide tree
     // (its leaves are contiguous in order_): the leaves' float tests take four primitives
     // at a time, so one leaf of four costs what one of one does, and the slots it frees
@@ -202,6 +198,7 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
     // 3. Their arrays appended in task order, the placeholders and the tasks' inner links
     //    made global. The layout depends on the tree only, not on the threads (tested).
     constexpr std::size_t kTaskNodes = 4096;
+    static_assert(2 * kTaskNodes < kSizeCap, "subtreeSize is compared with these uncapped");
     struct Task {
         std::size_t buildIndex;          // root of the subtree
         std::vector<WideNodeT<W>> nodes; // its wide nodes, root first
