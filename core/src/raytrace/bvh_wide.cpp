@@ -353,28 +353,39 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         }
         parallelFor(blocks, block); // inside the build's arena
     };
-    // Kinds: taken by the build in scene order (sceneKind_), here by index.
+    // Kinds: taken by the build in scene order (sceneKind_), here by index. Each block
+    // notes the run kinds it saw (`has` below), so no serial pass over kind_ follows
+    // (issue 21: part of the two-thread build's serial time).
+    constexpr std::size_t kBlockKinds = 16384;
+    const std::size_t kindBlocks = (n + kBlockKinds - 1) / kBlockKinds;
+    std::vector<unsigned> seen(kindBlocks, 0); // per block: bit r for run kind r
     if (sceneKind_.size() >= n) {
         // No object is read: blocks without perPrimitive's prefetches, parallel with the
         // build's threads (a serial pass here was part of the 2-thread build's serial time).
-        constexpr std::size_t kBlockKinds = 16384;
-        const std::size_t blocks = (n + kBlockKinds - 1) / kBlockKinds;
         auto block = [&](std::size_t b) {
-            for (std::size_t i = b * kBlockKinds, e = std::min(n, i + kBlockKinds); i < e; ++i)
+            unsigned bits = 0;
+            for (std::size_t i = b * kBlockKinds, e = std::min(n, i + kBlockKinds); i < e; ++i) {
                 kind_[i] = sceneKind_[orderIndex_[i]];
+                bits |= 1u << runOf(kind_[i]);
+            }
+            seen[b] = bits;
         };
-        if (options_.buildThreads == 1 || blocks < 2) {
-            for (std::size_t b = 0; b < blocks; ++b)
+        if (options_.buildThreads == 1 || kindBlocks < 2) {
+            for (std::size_t b = 0; b < kindBlocks; ++b)
                 block(b);
         } else {
-            parallelFor(blocks, block); // inside the build's arena
+            parallelFor(kindBlocks, block); // inside the build's arena
         }
-    } else
+    } else {
         perPrimitive([&](std::size_t i) { kind_[i] = primitiveKind(order_[i]); });
+        for (std::size_t i = 0; i < n; ++i)
+            seen[i / kBlockKinds] |= 1u << runOf(kind_[i]);
+    }
     std::vector<std::uint8_t>().swap(sceneKind_);
     bool has[3] = {false, false, false}; // per run kind
-    for (std::size_t i = 0; i < n; ++i)
-        has[runOf(kind_[i])] = true;
+    for (const unsigned bits : seen)
+        for (int r = 0; r < 3; ++r)
+            has[r] = has[r] || ((bits >> r) & 1);
     // The float arrays of the kinds present only (a leaf test reads its own kind's):
     // the collapse writes less memory for a scene of one kind. Zeroed beside the
     // collapse's tasks (collapseInto), which do not read them.
