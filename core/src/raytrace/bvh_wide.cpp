@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +35,7 @@
 #include <typeinfo>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace wb::rt {
 
@@ -282,7 +284,24 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
             for (std::size_t t = 0; t < tasks.size(); ++t)
                 runTask(t);
         } else {
-            parallelFor(tasks.size(), runTask);
+            // Largest first (each task writes its own array, so the order they run in
+            // changes nothing): the last task to start is a small one, and the two
+            // threads finish together (tasks are up to kTaskNodes each, a sixth of balls
+            // 5's collapse).
+            std::vector<std::uint32_t> bySize(tasks.size());
+            for (std::size_t t = 0; t < tasks.size(); ++t)
+                bySize[t] = std::uint32_t(t);
+            std::stable_sort(bySize.begin(), bySize.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return subtreeSize(tasks[a].buildIndex) > subtreeSize(tasks[b].buildIndex);
+            });
+            // Taken one at a time from the list by whichever thread is free (TBB's
+            // parallel_for would hand each thread a half of the list).
+            std::atomic<std::size_t> next{0};
+            const auto workers = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+            parallelFor(std::min(workers, tasks.size()), [&](std::size_t) {
+                for (std::size_t k = next++; k < tasks.size(); k = next++)
+                    runTask(bySize[k]);
+            });
         }
     };
     auto append = [&] {
