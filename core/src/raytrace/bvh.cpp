@@ -1116,30 +1116,26 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         run();
     // Flatten: one Node per inner build node, holding its children's boxes, numbered in
     // depth-first order (the order of the build array's places; its gaps are skipped by
-    // following the links).
+    // following the links, not scanned).
     stats_.nodes = int(buildNodes);
     if (buildNodes == 1) {
         rootLeafCount_ = build[0].count;
     } else if (buildNodes > 1 && options_.width == 2) {
-        std::vector<std::uint32_t> inner; // build index of each inner node, depth first
-        inner.reserve(buildNodes / 2 + 1);
-        std::vector<std::uint32_t> stack{0};
+        // Inner nodes numbered in depth-first order as they are reached; each inner child
+        // is linked from its parent's slot when its own number is known.
+        struct Open {
+            std::uint32_t build, parent, slot;
+        };
+        nodes_.reserve(buildNodes / 2 + 1);
+        std::vector<Open> stack{{0, 0, 0}};
         while (!stack.empty()) {
-            const std::uint32_t i = stack.back();
+            const Open o = stack.back();
             stack.pop_back();
-            if (build[i].count != 0) continue;
-            inner.push_back(i);
-            stack.push_back(build[i].offset);
-            stack.push_back(i + 1);
-        }
-        std::vector<std::uint32_t> wide(build.size(), 0); // inner nodes only are read
-        for (std::size_t k = 0; k < inner.size(); ++k)
-            wide[inner[k]] = std::uint32_t(k);
-        nodes_.resize(inner.size());
-        for (std::size_t k = 0; k < inner.size(); ++k) {
-            const std::size_t i = inner[k];
+            const auto k = std::uint32_t(nodes_.size());
+            if (o.build != 0) nodes_[o.parent].child[o.slot] = k;
+            nodes_.emplace_back();
             Node& w = nodes_[k];
-            const std::size_t kids[2] = {i + 1, build[i].offset};
+            const std::uint32_t kids[2] = {o.build + 1, build[o.build].offset};
             for (int c = 0; c < 2; ++c) {
                 const BuildNode& kn = build[kids[c]];
                 for (int a = 0; a < 3; ++a) {
@@ -1147,8 +1143,10 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                     w.hi[a][c] = kn.hi[a];
                 }
                 w.count[c] = kn.count;
-                w.child[c] = kn.count ? kn.offset : wide[kids[c]];
+                w.child[c] = kn.count ? kn.offset : 0; // inner: set when it is numbered
             }
+            for (int c = 1; c >= 0; --c) // the left child is numbered first
+                if (build[kids[c]].count == 0) stack.push_back({kids[c], k, std::uint32_t(c)});
         }
     }
     if (buildNodes > 0)
