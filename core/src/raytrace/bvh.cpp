@@ -776,6 +776,9 @@ KeptMappings& keptMappings() {
     return *kept;
 }
 #endif
+} // namespace
+
+namespace bvh_detail {
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
@@ -820,6 +823,9 @@ void bigFree(void* p, std::size_t bytes) noexcept {
     (void)bytes;
     std::free(p);
 }
+} // namespace bvh_detail
+
+namespace {
 
 // The node array (not zeroed on resize: every node is written), in bigAlloc memory.
 template <class T> struct NoInit {

@@ -201,16 +201,23 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
     //    made global. The layout depends on the tree only, not on the threads (tested).
     constexpr std::size_t kTaskNodes = 4096;
     static_assert(2 * kTaskNodes < kSizeCap, "subtreeSize is compared with these uncapped");
+    // A task's wide nodes, in the one buffer of all tasks (below).
+    struct Span {
+        WideNodeT<W>* data = nullptr;
+        std::size_t n = 0;
+        std::size_t size() const { return n; }
+        void emplace_back() { ++n; } // the slot is written when the node is done
+        WideNodeT<W>& operator[](std::size_t i) { return data[i]; }
+    };
     struct Task {
-        std::size_t buildIndex;          // root of the subtree
-        std::vector<WideNodeT<W>> nodes; // its wide nodes, root first
-        std::uint32_t owner, slot;       // the top node and child slot pointing at it
+        std::size_t buildIndex;    // root of the subtree
+        Span nodes;                // its wide nodes, root first
+        std::uint32_t owner, slot; // the top node and child slot pointing at it
     };
     std::vector<Task> tasks;
     // Collapses the subtree at bi into `into` depth first (a node's first inner child
     // tends to follow it in memory); with `top`, small inner subtrees become tasks.
-    auto collapse = [&](auto&& self, std::vector<WideNodeT<W>>& into, std::size_t bi,
-                        bool top) -> std::uint32_t {
+    auto collapse = [&](auto&& self, auto& into, std::size_t bi, bool top) -> std::uint32_t {
         const auto idx = std::uint32_t(into.size());
         into.emplace_back();
         std::array<std::size_t, W> kids{};
@@ -273,8 +280,30 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
     };
     // Small trees in one go: tasks would cost more than they share out.
     collapse(collapse, out, 0, subtreeSize(0) > 2 * kTaskNodes);
+    // The tasks' nodes in one bigAlloc buffer, each task its room: a wide node per inner
+    // build node at most, (size − 1) / 2 of a subtree. Issue 21: each task had a vector of
+    // its own, malloc'd by whichever thread ran it; glibc gives a worker thread's freed
+    // heap back to the kernel, so every two-thread build faulted and zeroed those pages
+    // again (clear_page_erms 2.3-3.3% of a two-thread balls 5 build's samples once the
+    // stitch no longer kept that heap in use). A kept mapping is not given back.
+    std::size_t room = 0;
+    for (Task& t : tasks) {
+        t.nodes.n = room; // the task's first place, until it runs
+        room += subtreeSize(t.buildIndex) / 2;
+    }
+    struct Buffer {
+        std::size_t bytes;
+        void* raw;
+        ~Buffer() { bigFree(raw, bytes); }
+    } buffer{room * sizeof(WideNodeT<W>) + 64, nullptr};
+    buffer.raw = bigAlloc(buffer.bytes);
+    auto* const first = reinterpret_cast<WideNodeT<W>*>(
+        (reinterpret_cast<std::uintptr_t>(buffer.raw) + 63) / 64 * 64); // the nodes' alignment
+    for (Task& t : tasks) {
+        t.nodes.data = first + t.nodes.n;
+        t.nodes.n = 0;
+    }
     auto runTask = [&](std::size_t t) {
-        tasks[t].nodes.reserve(subtreeSize(tasks[t].buildIndex) / 2);
         collapse(collapse, tasks[t].nodes, tasks[t].buildIndex, false);
     };
     // Called inside the build's arena (Bvh::Bvh): parallelFor uses its threads.
@@ -312,12 +341,12 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
         for (Task& t : tasks) {
             const auto base = std::uint32_t(out.size());
             out[t.owner].child[t.slot] = base;
-            for (WideNodeT<W>& w : t.nodes) {
+            for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+                WideNodeT<W>& w = t.nodes[i];
                 for (int c = 0; c < W; ++c)
                     if (w.count[c] == 0 && w.lo[0][c] <= w.hi[0][c]) w.child[c] += base; // inner
                 out.push_back(w);
             }
-            std::vector<WideNodeT<W>>().swap(t.nodes);
         }
     };
     // Issue 21: the caller's serial work beside the tasks and beside the append (one
