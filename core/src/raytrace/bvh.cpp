@@ -701,7 +701,7 @@ struct Builder {
         _mm_store_sd(&node.hi.z, _mm_cvtps_pd(_mm_movehl_ps(hi, hi)));
         node.offset = 0;
         node.count = 0;
-        node.axis = 0;
+        node.size = 1;
         return node;
     }
 
@@ -776,6 +776,9 @@ KeptMappings& keptMappings() {
     return *kept;
 }
 #endif
+} // namespace
+
+namespace bvh_detail {
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
@@ -820,6 +823,9 @@ void bigFree(void* p, std::size_t bytes) noexcept {
     (void)bytes;
     std::free(p);
 }
+} // namespace bvh_detail
+
+namespace {
 
 // The node array (not zeroed on resize: every node is written), in bigAlloc memory.
 template <class T> struct NoInit {
@@ -843,15 +849,19 @@ using Nodes = std::vector<BuildNode, NoInit<BuildNode>>;
 // Counters of a subtree; its SAH cost summed in depth-first order.
 struct Tally {
     int leaves = 0, maxDepth = 0;
+    std::size_t nodes = 0;
     double sahCost = 0;
 };
 
-// 3. A subtree built depth first by one task (left child right after its parent),
-//    appended to `nodes`; inner offsets are indices into `nodes` (the final array with
-//    one thread, the task's own array in the parallel build).
-void buildSubtree(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Tally& tally) {
-    const auto idx = nodes.size();
-    nodes.push_back(b.nodeOf(t));
+// 3. A subtree built depth first by one task (left child right after its parent) into
+//    the final array from index `next` on; inner offsets are indices into that array.
+//    A subtree of k references takes at most 2k − 1 places (a binary tree of at most k
+//    leaves), the room buildTop gives it.
+void buildSubtree(const Builder& b, const Task& t, BuildNode* nodes, std::uint32_t& next,
+                  Scratch& sc, Tally& tally) {
+    const auto idx = next++;
+    nodes[idx] = b.nodeOf(t);
+    ++tally.nodes;
     tally.maxDepth = std::max(tally.maxDepth, t.depth);
     if (t.end - t.begin == 1 || b.mergedLeaf(t)) { // a leaf as decide (or the collapse) would
         b.emitLeaf(t, nodes[idx]);
@@ -867,115 +877,76 @@ void buildSubtree(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Ta
         tally.sahCost += d.leafCost * t.box.area() / b.rootArea;
         return;
     }
-    nodes[idx].axis = std::uint16_t(d.axis);
     tally.sahCost += b.options.traversalCost * t.box.area() / b.rootArea;
-    buildSubtree(b, d.left, nodes, sc, tally);
-    nodes[idx].offset = std::uint32_t(nodes.size());
-    buildSubtree(b, d.right, nodes, sc, tally);
+    buildSubtree(b, d.left, nodes, next, sc, tally);
+    nodes[idx].offset = next;
+    buildSubtree(b, d.right, nodes, next, sc, tally);
+    nodes[idx].size = std::uint16_t(std::min<std::uint32_t>(next - idx, kSizeCap));
 }
 
-// 4. The top of the tree: nodes of more than kParallelGrain references are split here
-//    and their children built as two TBB tasks (parallel) or one after the other (one
-//    thread: straight into the final array); smaller subtrees are one task each. The
-//    SAH cost is summed per subtree and the sums in depth-first order either way, so
-//    it is the same number for any thread count.
-struct Subtree {
-    bool split = false;
-    BuildNode node{};                     // split: this node (offset set when stitched)
-    std::unique_ptr<Subtree> left, right; // split: the children
-    Nodes nodes;                          // !split: built by one task
-    Tally tally;                          // split: this node only
-    std::size_t base = 0;                 // index of the first node in the final array
+// 4. The top of the tree: nodes of more than kParallelGrain references are split here,
+//    each at its place p in the final array, its left child at p + 1 and its right child
+//    at p + 2·(left references) (bvh_internal.h, BuildNode): the places depend on the
+//    partition only, so both children are built at once as two TBB tasks (parallel) or
+//    one after the other (one thread), into the same array, the same places either way.
+//    Smaller subtrees are one task each (buildSubtree). The SAH cost is summed in the
+//    same depth-first order as before (each top node's own cost, then each subtree's
+//    sum), so it is the same number for any thread count.
+//    Issue 21: the parallel build built its subtrees into arrays of their own and copied
+//    them into the final one (the stitch: balls 5 0.28 ms at two threads, with its
+//    allocations, part of the two-thread build's serial time); now nothing is copied.
+struct TopTally {
+    Tally own;                          // split: this node only; else the subtree's
+    std::unique_ptr<TopTally> left, right;
+    void sumInto(Tally& total) const {
+        total.maxDepth = std::max(total.maxDepth, own.maxDepth);
+        total.sahCost += own.sahCost;
+        total.leaves += own.leaves;
+        total.nodes += own.nodes;
+        if (left) {
+            left->sumInto(total);
+            right->sumInto(total);
+        }
+    }
 };
 
-void buildTopParallel(const Builder& b, const Task& t, Subtree& out) {
-    Scratch sc(b.options.bins);
+std::uint32_t buildTop(const Builder& b, const Task& t, BuildNode* nodes, std::uint32_t at,
+                       Scratch& sc, TopTally& out) {
     if (t.end - t.begin > kParallelGrain) {
         const Decision d = b.decideAny(t, sc);
         if (!d.leaf) {
-            out.split = true;
-            out.node = b.nodeOf(t);
-            out.node.axis = std::uint16_t(d.axis);
-            out.tally.maxDepth = t.depth;
-            out.tally.sahCost = b.options.traversalCost * t.box.area() / b.rootArea;
-            out.left = std::make_unique<Subtree>();
-            out.right = std::make_unique<Subtree>();
-            parallelInvoke([&] { buildTopParallel(b, d.left, *out.left); },
-                           [&] { buildTopParallel(b, d.right, *out.right); });
-            return;
+            nodes[at] = b.nodeOf(t);
+            out.own.nodes = 1;
+            out.own.maxDepth = t.depth;
+            out.own.sahCost = b.options.traversalCost * t.box.area() / b.rootArea;
+            out.left = std::make_unique<TopTally>();
+            out.right = std::make_unique<TopTally>();
+            const auto right = std::uint32_t(at + 2 * (d.left.end - d.left.begin));
+            nodes[at].offset = right;
+            std::uint32_t sizes[2] = {0, 0};
+            if (b.parallel) {
+                parallelInvoke(
+                    [&] {
+                        Scratch own(b.options.bins);
+                        sizes[0] = buildTop(b, d.left, nodes, at + 1, own, *out.left);
+                    },
+                    [&] {
+                        Scratch own(b.options.bins);
+                        sizes[1] = buildTop(b, d.right, nodes, right, own, *out.right);
+                    });
+            } else {
+                sizes[0] = buildTop(b, d.left, nodes, at + 1, sc, *out.left);
+                sizes[1] = buildTop(b, d.right, nodes, right, sc, *out.right);
+            }
+            const std::uint32_t size = 1 + sizes[0] + sizes[1];
+            nodes[at].size = std::uint16_t(std::min(size, kSizeCap));
+            return size;
         }
         // A large group that cannot be split (coincident centroids): one task.
     }
-    out.nodes.reserve(2 * (t.end - t.begin));
-    buildSubtree(b, t, out.nodes, sc, out.tally);
-}
-
-void buildTopSequential(const Builder& b, const Task& t, Nodes& nodes, Scratch& sc, Tally& total) {
-    if (t.end - t.begin > kParallelGrain) {
-        const auto idx = nodes.size();
-        nodes.push_back(b.nodeOf(t));
-        const Decision d = b.decideAny(t, sc);
-        if (!d.leaf) {
-            nodes[idx].axis = std::uint16_t(d.axis);
-            total.maxDepth = std::max(total.maxDepth, t.depth);
-            total.sahCost += b.options.traversalCost * t.box.area() / b.rootArea;
-            buildTopSequential(b, d.left, nodes, sc, total);
-            nodes[idx].offset = std::uint32_t(nodes.size());
-            buildTopSequential(b, d.right, nodes, sc, total);
-            return;
-        }
-        nodes.pop_back(); // a large leaf group: built below as one subtree
-    }
-    Tally tally; // offsets: buildSubtree appends to the final array, so they are global
-    buildSubtree(b, t, nodes, sc, tally);
-    total.leaves += tally.leaves;
-    total.maxDepth = std::max(total.maxDepth, tally.maxDepth);
-    total.sahCost += tally.sahCost;
-}
-
-// 5. The parallel build's subtrees into one depth-first array: bases first (a walk of
-//    the few top nodes), then every subtree copied by its own task.
-void placeSubtrees(Subtree& t, std::size_t& next, std::vector<Subtree*>& groups, Tally& total) {
-    t.base = next;
-    total.maxDepth = std::max(total.maxDepth, t.tally.maxDepth);
-    total.sahCost += t.tally.sahCost;
-    if (t.split) {
-        ++next;
-        placeSubtrees(*t.left, next, groups, total);
-        t.node.offset = std::uint32_t(next);
-        placeSubtrees(*t.right, next, groups, total);
-        return;
-    }
-    total.leaves += t.tally.leaves;
-    next += t.nodes.size();
-    groups.push_back(&t);
-}
-
-void stitch(Subtree& top, Nodes& nodes, Tally& total) {
-    std::size_t count = 0;
-    std::vector<Subtree*> groups;
-    placeSubtrees(top, count, groups, total);
-    nodes.resize(count);
-    // The split nodes.
-    std::vector<Subtree*> stack{&top};
-    while (!stack.empty()) {
-        Subtree* s = stack.back();
-        stack.pop_back();
-        if (!s->split) continue;
-        nodes[s->base] = s->node;
-        stack.push_back(s->right.get());
-        stack.push_back(s->left.get());
-    }
-    parallelFor(groups.size(), [&](std::size_t g) {
-        const Subtree& s = *groups[g];
-        const auto base = std::uint32_t(s.base);
-        BuildNode* dst = nodes.data() + s.base;
-        for (const BuildNode& n : s.nodes) {
-            *dst = n;
-            if (n.count == 0) dst->offset += base;
-            ++dst;
-        }
-    });
+    std::uint32_t next = at;
+    buildSubtree(b, t, nodes, next, sc, out.own);
+    return next - at;
 }
 
 // References of a primitive: false if its box is unbounded, empty, non-finite or
@@ -1027,6 +998,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
     const auto start = std::chrono::steady_clock::now();
     const bool parallel = options.buildThreads != 1;
     Nodes build;
+    std::size_t buildNodes = 0; // in use in `build` (which has gaps: BuildNode)
     auto buildTree = [&] {
         // References: boxes fetched once, in scene order (unbounded ones set aside).
         const std::size_t count = prims.size();
@@ -1112,16 +1084,13 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
                   parallel,
                   wide && !options.fullBinary ? kinds : nullptr};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
+        build.resize(2 * n - 1); // not zeroed (NoInit): the gaps are never read
+        Scratch sc(options.bins);
+        TopTally top;
         Tally total;
-        if (parallel) {
-            Subtree top;
-            buildTopParallel(b, root, top);
-            stitch(top, build, total);
-        } else {
-            build.reserve(2 * n);
-            Scratch sc(options.bins);
-            buildTopSequential(b, root, build, sc, total);
-        }
+        buildTop(b, root, build.data(), 0, sc, top);
+        top.sumInto(total);
+        buildNodes = total.nodes;
         stats_.leaves = total.leaves;
         stats_.maxDepth = total.maxDepth;
         stats_.sahCost = total.sahCost;
@@ -1142,7 +1111,7 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         buildTree();
         if (options_.width != 2) {
             const auto t0 = std::chrono::steady_clock::now();
-            collapseWide(build.data(), build.size());
+            collapseWide(build.data(), buildNodes);
             stats_.collapseSeconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         }
@@ -1151,32 +1120,42 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         tbb::task_arena(options.buildThreads).execute(run);
     else
         run();
-    // Flatten: one Node per inner build node, holding its children's boxes.
-    stats_.nodes = int(build.size());
-    if (build.size() == 1) {
+    // Flatten: one Node per inner build node, holding its children's boxes, numbered in
+    // depth-first order (the order of the build array's places; its gaps are skipped by
+    // following the links, not scanned).
+    stats_.nodes = int(buildNodes);
+    if (buildNodes == 1) {
         rootLeafCount_ = build[0].count;
-    } else if (!build.empty() && options_.width == 2) {
-        std::vector<std::uint32_t> wide(build.size(), 0);
-        std::uint32_t next = 0;
-        for (std::size_t i = 0; i < build.size(); ++i)
-            if (build[i].count == 0) wide[i] = next++;
-        nodes_.resize(next);
-        for (std::size_t i = 0; i < build.size(); ++i) {
-            if (build[i].count != 0) continue;
-            Node& w = nodes_[wide[i]];
-            const std::size_t kids[2] = {i + 1, build[i].offset};
+    } else if (buildNodes > 1 && options_.width == 2) {
+        // Inner nodes numbered in depth-first order as they are reached; each inner child
+        // is linked from its parent's slot when its own number is known.
+        struct Open {
+            std::uint32_t build, parent, slot;
+        };
+        nodes_.reserve(buildNodes / 2 + 1);
+        std::vector<Open> stack{{0, 0, 0}};
+        while (!stack.empty()) {
+            const Open o = stack.back();
+            stack.pop_back();
+            const auto k = std::uint32_t(nodes_.size());
+            if (o.build != 0) nodes_[o.parent].child[o.slot] = k;
+            nodes_.emplace_back();
+            Node& w = nodes_[k];
+            const std::uint32_t kids[2] = {o.build + 1, build[o.build].offset};
             for (int c = 0; c < 2; ++c) {
-                const BuildNode& k = build[kids[c]];
+                const BuildNode& kn = build[kids[c]];
                 for (int a = 0; a < 3; ++a) {
-                    w.lo[a][c] = k.lo[a];
-                    w.hi[a][c] = k.hi[a];
+                    w.lo[a][c] = kn.lo[a];
+                    w.hi[a][c] = kn.hi[a];
                 }
-                w.count[c] = k.count;
-                w.child[c] = k.count ? k.offset : wide[kids[c]];
+                w.count[c] = kn.count;
+                w.child[c] = kn.count ? kn.offset : 0; // inner: set when it is numbered
             }
+            for (int c = 1; c >= 0; --c) // the left child is numbered first
+                if (build[kids[c]].count == 0) stack.push_back({kids[c], k, std::uint32_t(c)});
         }
     }
-    if (!build.empty())
+    if (buildNodes > 0)
         for (int a = 0; a < 3; ++a) {
             rootLo_[a] = build[0].lo[a];
             rootHi_[a] = build[0].hi[a];

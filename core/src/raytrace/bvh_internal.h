@@ -79,12 +79,25 @@ inline float quantDecode(float org, float scale, int q) {
 
 // A node of the binary tree as built (depth first, left child right after its parent).
 // Its box is a union of float boxes rounded outward, so it is exact in float.
+// Issue 21: the array has room for 2n − 1 nodes and a node's place follows from the
+// partition alone (bvh.cpp, buildTop): a node over references [b, e) at index p has its
+// left child at p + 1 and its right child at p + 2·(m − b), m the split, so subtrees built
+// in parallel write the final array directly. The subtrees under kParallelGrain are dense
+// (depth first, as before); between them the array has unused gaps, which nothing reads
+// (every walk follows the links).
 struct BuildNode {
     glm::dvec3 lo, hi;    // box
     std::uint32_t offset; // leaf: first index into order_; inner: right child index
     std::uint16_t count;  // leaf: number of primitives; inner: 0
-    std::uint16_t axis;   // inner: split axis
+    std::uint16_t size;   // nodes in its subtree, itself included, at most 65,535 (kSizeCap)
 };
+// BuildNode::size saturates here: the collapse compares it with a few thousand only.
+constexpr std::uint32_t kSizeCap = 65535;
+
+// Large build arrays (bvh.cpp): 2 MiB pages where whole, and mappings a build freed kept
+// for the next build (no page faults and zeroing after the first); malloc below 2 MiB.
+void* bigAlloc(std::size_t bytes);
+void bigFree(void* p, std::size_t bytes) noexcept;
 
 constexpr int kMaxDepth = 128; // binary traversal stack size (the build keeps the depth below)
 

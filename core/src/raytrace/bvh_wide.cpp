@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +35,7 @@
 #include <typeinfo>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace wb::rt {
 
@@ -172,13 +174,9 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
         const glm::dvec3 e = build[i].hi - build[i].lo;
         return e.x * e.y + e.y * e.z + e.z * e.x;
     };
-    // Build nodes in the subtree of i (depth first: it ends where its right spine's leaf does).
-    auto subtreeSize = [&](std::size_t i) {
-        std::size_t j = i;
-        while (build[j].count == 0)
-            j = build[j].offset;
-        return j + 1 - i;
-    };
+    // Build nodes in the subtree of i, at most kSizeCap (BuildNode::size: the array has
+    // gaps between the build's parallel subtrees, so the places no longer tell it).
+    auto subtreeSize = [&](std::size_t i) { return std::size_t(build[i].size); };
     // An inner subtree of at most kMergePrims primitives becomes one leaf of the wide tree
     // (its leaves are contiguous in order_): the leaves' float tests take four primitives
     // at a time, so one leaf of four costs what one of one does, and the slots it frees
@@ -213,16 +211,24 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
     // 3. Their arrays appended in task order, the placeholders and the tasks' inner links
     //    made global. The layout depends on the tree only, not on the threads (tested).
     constexpr std::size_t kTaskNodes = 4096;
+    static_assert(2 * kTaskNodes < kSizeCap, "subtreeSize is compared with these uncapped");
+    // A task's wide nodes, in the one buffer of all tasks (below).
+    struct Span {
+        WideNodeT<W>* data = nullptr;
+        std::size_t n = 0;
+        std::size_t size() const { return n; }
+        void emplace_back() { ++n; } // the slot is written when the node is done
+        WideNodeT<W>& operator[](std::size_t i) { return data[i]; }
+    };
     struct Task {
-        std::size_t buildIndex;          // root of the subtree
-        std::vector<WideNodeT<W>> nodes; // its wide nodes, root first
-        std::uint32_t owner, slot;       // the top node and child slot pointing at it
+        std::size_t buildIndex;    // root of the subtree
+        Span nodes;                // its wide nodes, root first
+        std::uint32_t owner, slot; // the top node and child slot pointing at it
     };
     std::vector<Task> tasks;
     // Collapses the subtree at bi into `into` depth first (a node's first inner child
     // tends to follow it in memory); with `top`, small inner subtrees become tasks.
-    auto collapse = [&](auto&& self, std::vector<WideNodeT<W>>& into, std::size_t bi,
-                        bool top) -> std::uint32_t {
+    auto collapse = [&](auto&& self, auto& into, std::size_t bi, bool top) -> std::uint32_t {
         const auto idx = std::uint32_t(into.size());
         into.emplace_back();
         std::array<std::size_t, W> kids{};
@@ -285,8 +291,30 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
     };
     // Small trees in one go: tasks would cost more than they share out.
     collapse(collapse, out, 0, subtreeSize(0) > 2 * kTaskNodes);
+    // The tasks' nodes in one bigAlloc buffer, each task its room: a wide node per inner
+    // build node at most, (size − 1) / 2 of a subtree. Issue 21: each task had a vector of
+    // its own, malloc'd by whichever thread ran it; glibc gives a worker thread's freed
+    // heap back to the kernel, so every two-thread build faulted and zeroed those pages
+    // again (clear_page_erms 2.3-3.3% of a two-thread balls 5 build's samples once the
+    // stitch no longer kept that heap in use). A kept mapping is not given back.
+    std::size_t room = 0;
+    for (Task& t : tasks) {
+        t.nodes.n = room; // the task's first place, until it runs
+        room += subtreeSize(t.buildIndex) / 2;
+    }
+    struct Buffer {
+        std::size_t bytes;
+        void* raw;
+        ~Buffer() { bigFree(raw, bytes); }
+    } buffer{room * sizeof(WideNodeT<W>) + 64, nullptr};
+    buffer.raw = bigAlloc(buffer.bytes);
+    auto* const first = reinterpret_cast<WideNodeT<W>*>(
+        (reinterpret_cast<std::uintptr_t>(buffer.raw) + 63) / 64 * 64); // the nodes' alignment
+    for (Task& t : tasks) {
+        t.nodes.data = first + t.nodes.n;
+        t.nodes.n = 0;
+    }
     auto runTask = [&](std::size_t t) {
-        tasks[t].nodes.reserve(subtreeSize(tasks[t].buildIndex) / 2);
         collapse(collapse, tasks[t].nodes, tasks[t].buildIndex, false);
     };
     // Called inside the build's arena (Bvh::Bvh): parallelFor uses its threads.
@@ -296,7 +324,24 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
             for (std::size_t t = 0; t < tasks.size(); ++t)
                 runTask(t);
         } else {
-            parallelFor(tasks.size(), runTask);
+            // Largest first (each task writes its own array, so the order they run in
+            // changes nothing): the last task to start is a small one, and the two
+            // threads finish together (tasks are up to kTaskNodes each, a sixth of balls
+            // 5's collapse).
+            std::vector<std::uint32_t> bySize(tasks.size());
+            for (std::size_t t = 0; t < tasks.size(); ++t)
+                bySize[t] = std::uint32_t(t);
+            std::stable_sort(bySize.begin(), bySize.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return subtreeSize(tasks[a].buildIndex) > subtreeSize(tasks[b].buildIndex);
+            });
+            // Taken one at a time from the list by whichever thread is free (TBB's
+            // parallel_for would hand each thread a half of the list).
+            std::atomic<std::size_t> next{0};
+            const auto workers = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+            parallelFor(std::min(workers, tasks.size()), [&](std::size_t) {
+                for (std::size_t k = next++; k < tasks.size(); k = next++)
+                    runTask(bySize[k]);
+            });
         }
     };
     auto append = [&] {
@@ -307,12 +352,12 @@ void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
         for (Task& t : tasks) {
             const auto base = std::uint32_t(out.size());
             out[t.owner].child[t.slot] = base;
-            for (WideNodeT<W>& w : t.nodes) {
+            for (std::size_t i = 0; i < t.nodes.size(); ++i) {
+                WideNodeT<W>& w = t.nodes[i];
                 for (int c = 0; c < W; ++c)
                     if (w.count[c] == 0 && w.lo[0][c] <= w.hi[0][c]) w.child[c] += base; // inner
                 out.push_back(w);
             }
-            std::vector<WideNodeT<W>>().swap(t.nodes);
         }
     };
     // Issue 21: the caller's serial work beside the tasks and beside the append (one
@@ -367,28 +412,39 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         }
         parallelFor(blocks, block); // inside the build's arena
     };
-    // Kinds: taken by the build in scene order (sceneKind_), here by index.
+    // Kinds: taken by the build in scene order (sceneKind_), here by index. Each block
+    // notes the run kinds it saw (`has` below), so no serial pass over kind_ follows
+    // (issue 21: part of the two-thread build's serial time).
+    constexpr std::size_t kBlockKinds = 16384;
+    const std::size_t kindBlocks = (n + kBlockKinds - 1) / kBlockKinds;
+    std::vector<unsigned> seen(kindBlocks, 0); // per block: bit r for run kind r
     if (sceneKind_.size() >= n) {
         // No object is read: blocks without perPrimitive's prefetches, parallel with the
         // build's threads (a serial pass here was part of the 2-thread build's serial time).
-        constexpr std::size_t kBlockKinds = 16384;
-        const std::size_t blocks = (n + kBlockKinds - 1) / kBlockKinds;
         auto block = [&](std::size_t b) {
-            for (std::size_t i = b * kBlockKinds, e = std::min(n, i + kBlockKinds); i < e; ++i)
+            unsigned bits = 0;
+            for (std::size_t i = b * kBlockKinds, e = std::min(n, i + kBlockKinds); i < e; ++i) {
                 kind_[i] = sceneKind_[orderIndex_[i]];
+                bits |= 1u << runOf(kind_[i]);
+            }
+            seen[b] = bits;
         };
-        if (options_.buildThreads == 1 || blocks < 2) {
-            for (std::size_t b = 0; b < blocks; ++b)
+        if (options_.buildThreads == 1 || kindBlocks < 2) {
+            for (std::size_t b = 0; b < kindBlocks; ++b)
                 block(b);
         } else {
-            parallelFor(blocks, block); // inside the build's arena
+            parallelFor(kindBlocks, block); // inside the build's arena
         }
-    } else
+    } else {
         perPrimitive([&](std::size_t i) { kind_[i] = primitiveKind(order_[i]); });
+        for (std::size_t i = 0; i < n; ++i)
+            seen[i / kBlockKinds] |= 1u << runOf(kind_[i]);
+    }
     std::vector<std::uint8_t>().swap(sceneKind_);
     bool has[3] = {false, false, false}; // per run kind
-    for (std::size_t i = 0; i < n; ++i)
-        has[runOf(kind_[i])] = true;
+    for (const unsigned bits : seen)
+        for (int r = 0; r < 3; ++r)
+            has[r] = has[r] || ((bits >> r) & 1);
     // The float arrays of the kinds present only (a leaf test reads its own kind's):
     // the collapse writes less memory for a scene of one kind. Zeroed beside the
     // collapse's tasks (collapseInto), which do not read them.

@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -376,6 +377,52 @@ TEST_CASE("rt_bvh: nodes over 65536 primitives (blocked binning and partition) g
     CHECK(two->stats().sahCost == Bvh(s.primitives, full).stats().sahCost);
     compareWithBruteForce(s, *one, 60, 5);
     compareWithBruteForce(s, *two, 60, 6);
+}
+
+TEST_CASE("rt_bvh: a subtree that fills its whole room in the build array keeps every "
+          "primitive (one per leaf, 1 and 2 threads)",
+          "[raytrace][bvh]") {
+    // Issue 21: the build writes node p's right child at p + 2·(left references), the
+    // room a binary tree of that many one-primitive leaves needs (2k − 1 nodes), so the
+    // parallel subtrees write one array at once. Only a subtree with a primitive per leaf
+    // fills its room: leaves of one primitive (maxLeafSize 1), distinct centroids, and
+    // more than kParallelGrain (2048) per top node. A place one short would overwrite the
+    // left subtree's last leaf (red with the offset 2k − 2): its primitive is then lost.
+    std::mt19937_64 g(33);
+    Scene s;
+    std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+    for (int x = 0; x < 20; ++x)
+        for (int y = 0; y < 20; ++y)
+            for (int z = 0; z < 20; ++z)
+                s.add(Sphere(glm::dvec3(x + jitter(g), y + jitter(g), z + jitter(g)), 0.1), 0);
+    for (int threads : {1, 2}) {
+        for (int width : {2, 4}) {
+            INFO("threads " << threads << ", width " << width);
+            BvhOptions o;
+            o.buildThreads = threads;
+            o.width = width;
+            o.maxLeafSize = 1;
+            o.fullBinary = true; // width 4: no stop at the wide leaves, every leaf is one sphere
+            const Bvh b(s.primitives, o);
+            REQUIRE(b.stats().leaves == 8000); // one primitive each: every room is full
+            REQUIRE(b.stats().nodes == 2 * 8000 - 1);
+            // Every sphere is on the ray through its own centre along x.
+            int found = 0;
+            for (const auto& p : s.primitives) {
+                const auto& sp = static_cast<const Sphere&>(*p);
+                Ray ray;
+                ray.origin = sp.centre - glm::dvec3(30, 0, 0);
+                ray.direction = {1, 0, 0};
+                bool seen = false;
+                b.forEachHit(ray, 0, std::numeric_limits<double>::infinity(), [&](const Hit& h) {
+                    seen = seen || h.primitive == p.get();
+                    return true;
+                });
+                found += seen;
+            }
+            CHECK(found == 8000);
+        }
+    }
 }
 
 TEST_CASE("rt_bvh: 70,000 coincident centroids (blocked node, object median) stay shallow",
