@@ -902,6 +902,19 @@ TEST_CASE("rt_bvh_wide: quantised nodes hold the float boxes and lose no hit",
 // coordinate by ~6e-5): small random triangles, and with withSpheres every even one a sphere.
 static const glm::dvec3 kFarCentre{1000.0, -700.0, 600.0};
 
+// A ray from `from` through q (a vertex or edge point of t): compares every tree with the
+// plain loop and returns whether the exact code says it hits t itself.
+static bool aimAtOwn(const Refs& r, const Triangle& t, const glm::dvec3& from,
+                     const glm::dvec3& q) {
+    Ray ray;
+    ray.origin = from;
+    ray.direction = glm::normalize(q - from);
+    Hit h;
+    const bool own = t.intersect(ray, 0, kInf, h);
+    compareRay(r, ray);
+    return own;
+}
+
 static void addFarPrimitives(Scene& s, std::mt19937_64& g, int count, bool withSpheres) {
     for (int i = 0; i < count; ++i) {
         const glm::dvec3 c = kFarCentre + rnd3(g, -40, 40);
@@ -948,15 +961,8 @@ TEST_CASE("rt_bvh_wide: the leaves' float filters keep their margins (hits close
             const glm::dvec3 pts[5] = {tp->v0, tp->v2, 0.5 * (tp->v0 + tp->v1),
                                        tp->v1 + u(g) * (tp->v2 - tp->v1),
                                        tp->v2 + u(g) * (tp->v0 - tp->v2)};
-            for (const glm::dvec3& q : pts) {
-                Ray ray;
-                ray.origin = from;
-                ray.direction = glm::normalize(q - from);
-                Hit h;
-                const bool own = tp->intersect(ray, 0, kInf, h);
-                edgeHits += own;
-                compareRay(r, ray);
-            }
+            for (const glm::dvec3& q : pts)
+                edgeHits += aimAtOwn(r, *tp, from, q);
         }
     }
     // Enough of the boundary rays do hit their own primitive (the exact code decides about
@@ -1046,14 +1052,8 @@ TEST_CASE("rt_bvh_wide: the precomputed-edge triangle filter keeps its bound (sl
                                        0.5 * (tp->v0 + tp->v1),
                                        tp->v1 + u(g) * (tp->v2 - tp->v1),
                                        tp->v2 + u(g) * (tp->v0 - tp->v2)};
-            for (const glm::dvec3& q : pts) {
-                Ray ray;
-                ray.origin = from;
-                ray.direction = glm::normalize(q - from);
-                Hit h;
-                edgeHits[si] += tp->intersect(ray, 0, kInf, h);
-                compareRay(r, ray);
-            }
+            for (const glm::dvec3& q : pts)
+                edgeHits[si] += aimAtOwn(r, *tp, from, q);
         }
     }
     // The exact code hits about half of these boundary rays: enough for a cut bound to lose
