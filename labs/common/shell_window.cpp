@@ -313,7 +313,6 @@ void display() {
     updateCursor();
 
     g->view.time = std::chrono::duration<double>(t0 - g->start).count();
-    g->view.inputWaiting = inputWaiting;
     layout();
     // The whole window starts black: a lab may clear only its own part (lab 07 draws its
     // traced image), and the panel's background is translucent, so earlier frames would show
@@ -558,6 +557,8 @@ int runLab(int argc, char** argv, LabFactory factory) {
     glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
     // The window is fitted to the screen it opens on (fitWindow: its height, a 4:3 scene beside
     // the panel); --size is the scene's size, the panel added beside it (as usageText says).
+    // Labs that work inside draw() ask it whether to yield (View::inputWaiting).
+    state.view.inputWaiting = inputWaiting;
     state.screenWidth = glutGet(GLUT_SCREEN_WIDTH);
     state.screenHeight = glutGet(GLUT_SCREEN_HEIGHT);
     const WindowFit fit = fitWindow(state.opts, state.lab->panelFillsWindow(), state.screenWidth,

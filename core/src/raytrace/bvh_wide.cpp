@@ -73,10 +73,11 @@ PathChoice choosePath(const BvhOptions& o) {
                 // lab (it threw through lab 07 and lab 08's patch BVH). Said once, ignored.
                 static std::once_flag said;
                 std::call_once(said, [&] {
-                    std::fprintf(stderr,
-                                 "WB_BVH_PATH='%s' ignored: expected sse4, avx4, avx8 or avx512; using the "
-                                 "automatic choice\n",
-                                 v.c_str());
+                    std::fprintf(
+                        stderr,
+                        "WB_BVH_PATH='%s' ignored: expected sse4, avx4, avx8 or avx512; using the "
+                        "automatic choice\n",
+                        v.c_str());
                 });
             }
         }
@@ -126,9 +127,7 @@ void Bvh::fillLeafData(std::uint32_t i) {
         sy_[i] = float(s->centre.y);
         sz_[i] = float(s->centre.z);
         sr_[i] = float(s->radius);
-        sm_[i] = float(std::abs(s->centre.x) + std::abs(s->centre.y) + std::abs(s->centre.z) +
-                       s->radius) *
-                 kSphereMargin;
+        sm_[i] = float(l1Norm(s->centre) + s->radius) * kSphereMargin;
     } else if (runOf(kind_[i]) == kRunTriangle) {
         const auto* t = static_cast<const Triangle*>(order_[i]);
         for (int a = 0; a < 3; ++a)
@@ -141,12 +140,11 @@ void Bvh::fillLeafData(std::uint32_t i) {
         for (int j = 0; j < 3; ++j)
             for (int a = 0; a < 3; ++a)
                 te_[j * 3 + a][i] = float((*es[j])[a]);
-        auto l1 = [](const glm::dvec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); };
-        const double vmax = std::max({l1(t->v0), l1(t->v1), l1(t->v2)});
-        const double em = std::max(l1(e1), l1(e2));
+        const double vmax = std::max({l1Norm(t->v0), l1Norm(t->v1), l1Norm(t->v2)});
+        const double em = std::max(l1Norm(e1), l1Norm(e2));
         const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
-        const double p2 =
-            kMtEdgeMargin * em * vmax + kMtNormalMargin * l1(nn) + kMtDoubleMargin * vmax * vmax;
+        const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1Norm(nn) +
+                          kMtDoubleMargin * vmax * vmax;
         const bool small = vmax <= kMtMaxCoord; // false for NaN
         tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
         tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();

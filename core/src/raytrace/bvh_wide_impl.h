@@ -120,7 +120,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             md[0] = _mm_shuffle_ps(vd, vd, 0x00);
             md[1] = _mm_shuffle_ps(vd, vd, 0x55);
             md[2] = _mm_shuffle_ps(vd, vd, 0xAA);
-            const double ol = std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
+            const double ol = bvh_detail::l1Norm(o);
             const double dm = std::max(std::abs(d.x), std::max(std::abs(d.y), std::abs(d.z)));
             // The bound's parts, each raised by 2^-20 over its double value (float's rounding
             // to nearest takes at most 2^-24 of it; an underflow at most 2^-150, which
@@ -142,8 +142,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 fo[a] = _mm_set1_ps(float(o[a]));
                 fd[a] = _mm_set1_ps(float(d[a]));
             }
-            om = _mm_set1_ps(float(std::abs(o.x) + std::abs(o.y) + std::abs(o.z)) *
-                             bvh_detail::kSphereMargin);
+            om = _mm_set1_ps(float(bvh_detail::l1Norm(o)) * bvh_detail::kSphereMargin);
             sphReady = true;
         }
     };
@@ -325,12 +324,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
     }
 
     // The float values of a ray the float walk can carry, in four lanes (x, y, z, unused),
-    // for initRay (joinPacket computes the same operations for four rays at a time): 1/d in one division (a zero component
-    // gives ±inf, the slab then no limit, as in double; see kInvFarScaleF for the roundings),
-    // the origin widened by eps = |o|max·2^-21 with the direction's signs. Written to plain
-    // float arrays, as both callers had it: shared as a function of __m128 values, GCC 12
-    // put a register-to-register vmovq (C5 79 D6) into the AVX2 walk, which valgrind 3.19
-    // cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2 walk is profiled).
+    // for initRay (joinPacket computes the same operations for four rays at a time): 1/d in one
+    // division (a zero component gives ±inf, the slab then no limit, as in double; see
+    // kInvFarScaleF for the roundings), the origin widened by eps = |o|max·2^-21 with the
+    // direction's signs. Written to plain float arrays, as both callers had it: shared as a
+    // function of __m128 values, GCC 12 put a register-to-register vmovq (C5 79 D6) into the AVX2
+    // walk, which valgrind 3.19 cannot decode (docs/raytrace-scale.md; callgrind is how the AVX2
+    // walk is profiled).
     __attribute__((always_inline)) static void floatRay(const Ray& ray, double om, float* inv,
                                                         float* invFar, float* on, float* of) {
         const __m128d zero = _mm_setzero_pd();
@@ -851,10 +851,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // lanes: rounding is monotonic, so every lane's rounded product of values inside the
     // intervals lies between them.
     static V minProduct(V x0, V x1, V y0, V y1) {
-        return L::min(L::min(L::mul(x0, y0), L::mul(x0, y1)), L::min(L::mul(x1, y0), L::mul(x1, y1)));
+        return L::min(L::min(L::mul(x0, y0), L::mul(x0, y1)),
+                      L::min(L::mul(x1, y0), L::mul(x1, y1)));
     }
     static V maxProduct(V x0, V x1, V y0, V y1) {
-        return L::max(L::max(L::mul(x0, y0), L::mul(x0, y1)), L::max(L::mul(x1, y0), L::mul(x1, y1)));
+        return L::max(L::max(L::mul(x0, y0), L::mul(x0, y1)),
+                      L::max(L::mul(x1, y0), L::mul(x1, y1)));
     }
 
     // Calls leaf(j, i, ray data) for ray j of `lanes` and the primitives i of every leaf
@@ -952,8 +954,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             for (; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
                 fillLane(p, j);
-                const bool more = visitLeaf(b, p.r[j], first, count, p.lim[j],
-                                            [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
+                const bool more =
+                    visitLeaf(b, p.r[j], first, count, p.lim[j],
+                              [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
                 if constexpr (kAnyHit) {
                     if (!more) {
                         active &= ~(1u << j);
@@ -998,12 +1001,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
                     farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
                 }
-                t0 = L::max(minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a],
-                                       iaInvHi[a]),
-                            t0);
-                t1 = L::min(maxProduct(L::sub(f, iaOfHi[a]), L::sub(f, iaOfLo[a]), iaFarLo[a],
-                                       iaFarHi[a]),
-                            t1);
+                t0 = L::max(
+                    minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a], iaInvHi[a]),
+                    t0);
+                t1 = L::min(
+                    maxProduct(L::sub(f, iaOfHi[a]), L::sub(f, iaOfLo[a]), iaFarLo[a], iaFarHi[a]),
+                    t1);
             }
             int cand = L::le(t0, t1) & validMask(nd);
             // Each candidate child against each ray (lane j: ray j's own test). A child's
@@ -1132,8 +1135,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         };
         for (unsigned m = packet; m; m &= m - 1)
             for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
-                offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther,
-                      b.unboundedIndex_[i], nullptr);
+                offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i],
+                      nullptr);
         walkPacket<false>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
             offer(j, *b.order_[i], b.kind_[i], b.orderIndex_[i], r);
             return true;
@@ -1274,14 +1277,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
             if (p != skip && p->occluded(ray, tMin, tMax) && !visit(*p)) return;
         walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
             const Primitive* p = b.order_[i];
-            return p == skip ||
-                   !(exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax) && !visit(*p));
+            return p == skip || !(exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax) && !visit(*p));
         });
     }
 
     static const WidePath* path(bool avx2) {
-        static const WidePath p{W,           avx2,           &intersect,     &occluded,
-                                &forEachHit, &forEachBlocker, &intersectPacket, &occludedPacket};
+        static const WidePath p{W,
+                                avx2,
+                                &intersect,
+                                &occluded,
+                                &forEachHit,
+                                &forEachBlocker,
+                                &intersectPacket,
+                                &occludedPacket};
         return &p;
     }
 };

@@ -14,6 +14,10 @@
 namespace wb::rt {
 
 namespace bvh_detail {
+// |v|₁ = |x| + |y| + |z|, summed in that order (the margins below are written for it).
+inline double l1Norm(const glm::dvec3& v) {
+    return std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+}
 // Exact code per kind: Sphere and Triangle are called directly, SmoothTriangle (the
 // triangle test, then its normal) and the rest through the virtual call.
 constexpr std::uint8_t kOther = 0, kSphere = 1, kTriangle = 2, kSmoothTriangle = 3;
