@@ -4,7 +4,7 @@ add_executable(raytrace_scale_bench raytrace_scale_bench.cpp)
 target_compile_options(raytrace_scale_bench PRIVATE ${WB_WARNINGS})
 target_compile_definitions(raytrace_scale_bench PRIVATE WB_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
                                                         WB_BINARY_DIR="${CMAKE_BINARY_DIR}")
-target_link_libraries(raytrace_scale_bench PRIVATE core)
+target_link_libraries(raytrace_scale_bench PRIVATE core TBB::tbb) # TBB: the build table's ceilings
 # -DWORKBENCH_EMBREE=ON: the same eye and shadow rays through Embree 3 (libembree-dev).
 option(WORKBENCH_EMBREE "Compare the ray tracer bench with Embree 3" OFF)
 if(WORKBENCH_EMBREE)
