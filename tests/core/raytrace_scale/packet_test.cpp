@@ -545,3 +545,73 @@ TEST_CASE("packets: any shadow cache content gives the uncached colour", "[bvh][
     REQUIRE(changed > 0); // the feelers wrote their blockers back
     sc.setAggregate(nullptr);
 }
+
+// The packet path's direct light in lanes (Tracer::traceFromPacket, PhongModel::directLanes):
+// each frame equals the single-ray frame byte for byte, with the same ray counts. SPD
+// scenes (balls: mirrors; jacks: cylinders and mirrors; gears: glass, refraction; teapot:
+// a triangle mesh; rings), and the shadow cache's scene with point lights only (so the
+// lanes are used) and a textured sphere, emission, attenuated lights (a textured hit
+// falls back to the single path, its neighbours in the lanes), and with its directional
+// light kept (lanesApply refuses: every hit the single path).
+TEST_CASE("packets: direct light in lanes keeps the single path's picture",
+          "[bvh][packet][phong]") {
+    PhongModel model;
+    const auto compare = [&](const Scene& sc, const LookAtCamera& cam, int w, int h) {
+        for (bool corners : {true, false}) {
+            ParallelRenderOptions opt;
+            opt.trace.maxDepth = 4;
+            opt.cornerRays = corners;
+            opt.threads = 1;
+            opt.packets = false;
+            ParallelRenderStats sst;
+            const wb::Image single = renderParallel(sc, cam, model, w, h, opt, &sst);
+            for (int threads : {1, 2}) {
+                opt.threads = threads;
+                opt.packets = true;
+                ParallelRenderStats st;
+                REQUIRE(renderParallel(sc, cam, model, w, h, opt, &st).data == single.data);
+                REQUIRE(st.primaryRays == sst.primaryRays);
+                REQUIRE(st.shadowRays == sst.shadowRays);
+                REQUIRE(st.secondaryRays == sst.secondaryRays);
+            }
+        }
+    };
+    for (const char* name : {"balls", "jacks", "gears", "teapot", "rings"}) {
+        INFO(name);
+        SceneFile sf = toScene(spdScene(name, 2));
+        REQUIRE(PhongModel::lanesApply(*sf.scene));
+        Bvh bvh(sf.scene->primitives);
+        sf.scene->setAggregate(&bvh);
+        compare(*sf.scene, sf.camera(), 96, 80);
+        sf.scene->setAggregate(nullptr);
+    }
+    Scene sc;
+    shadowCacheScene(sc);
+    const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+    Bvh bvh(sc.primitives);
+    sc.setAggregate(&bvh);
+    INFO("shadow cache scene, directional light");
+    REQUIRE_FALSE(PhongModel::lanesApply(sc));
+    compare(sc, cam, 96, 72);
+    sc.setAggregate(nullptr);
+    sc.lights.pop_back(); // point lights only: the lanes
+    sc.lights[0].constantAttenuation = 0.5;
+    sc.lights[0].linearAttenuation = 0.05;
+    sc.lights[0].quadraticAttenuation = 0.01;
+    sc.lights[1].ambient = {0.1, 0.05, 0.0};
+    sc.globalAmbient = {0.05, 0.05, 0.1};
+    wb::Image tex(2, 2, 3);
+    for (int i = 0; i < 12; ++i)
+        tex.data[std::size_t(i)] = uint8_t(40 * i);
+    Material textured;
+    textured.texture = &tex;
+    textured.kr = 0.3;
+    textured.emission = {0.1, 0.0, 0.05};
+    sc.add(Sphere({-2, 3, 1.5}, 1.2), sc.addMaterial(textured));
+    Bvh bvh2(sc.primitives);
+    sc.setAggregate(&bvh2);
+    INFO("shadow cache scene, point lights, a textured sphere");
+    REQUIRE(PhongModel::lanesApply(sc));
+    compare(sc, cam, 96, 72);
+    sc.setAggregate(nullptr);
+}
