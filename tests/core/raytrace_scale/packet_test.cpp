@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <random>
 #include <utility>
@@ -440,6 +441,31 @@ TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][pac
 // lies beyond the light on the floor's feelers: the cache must ask the segment, not the
 // ray). Every picture equals the single path's, for 1, 2 and 3 threads and every tree.
 namespace {
+// The frames with packets (for each thread count) equal the one-thread single-ray frame byte
+// for byte, with the same ray counts, for corner and centre rays (phong model, depth 4).
+void requireSingleFrame(const Scene& sc, const LookAtCamera& cam, int w, int h,
+                        std::initializer_list<int> threadCounts) {
+    PhongModel model;
+    for (bool corners : {true, false}) {
+        ParallelRenderOptions opt;
+        opt.trace.maxDepth = 4;
+        opt.cornerRays = corners;
+        opt.threads = 1;
+        opt.packets = false;
+        ParallelRenderStats sst;
+        const wb::Image single = renderParallel(sc, cam, model, w, h, opt, &sst);
+        for (int threads : threadCounts) {
+            opt.threads = threads;
+            opt.packets = true;
+            ParallelRenderStats st;
+            REQUIRE(renderParallel(sc, cam, model, w, h, opt, &st).data == single.data);
+            REQUIRE(st.primaryRays == sst.primaryRays);
+            REQUIRE(st.shadowRays == sst.shadowRays);
+            REQUIRE(st.secondaryRays == sst.secondaryRays);
+        }
+    }
+}
+
 // The shadow cache's scene (below).
 void shadowCacheScene(Scene& sc) {
     Material floor;
@@ -477,29 +503,12 @@ TEST_CASE("packets: the shadow cache along a row keeps the single path's picture
     Scene sc;
     shadowCacheScene(sc);
     const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
-    PhongModel model;
     Trees trees(sc);
     for (const auto& bvh : trees.bvhs) {
         INFO("width " << bvh->stats().width << " avx2 " << bvh->stats().avx2 << " avx512 "
                       << bvh->stats().avx512 << " packets " << bvh->packetWidth());
         sc.setAggregate(bvh.get());
-        for (bool corners : {true, false}) {
-            ParallelRenderOptions opt;
-            opt.trace.maxDepth = 4;
-            opt.cornerRays = corners;
-            opt.threads = 1;
-            opt.packets = false;
-            ParallelRenderStats sst;
-            const wb::Image single = renderParallel(sc, cam, model, 96, 72, opt, &sst);
-            for (int threads : {1, 2, 3}) {
-                opt.threads = threads;
-                opt.packets = true;
-                ParallelRenderStats st;
-                REQUIRE(renderParallel(sc, cam, model, 96, 72, opt, &st).data == single.data);
-                REQUIRE(st.shadowRays == sst.shadowRays);
-                REQUIRE(st.secondaryRays == sst.secondaryRays);
-            }
-        }
+        requireSingleFrame(sc, cam, 96, 72, {1, 2, 3});
     }
     sc.setAggregate(nullptr);
 }
@@ -555,45 +564,24 @@ TEST_CASE("packets: any shadow cache content gives the uncached colour", "[bvh][
 // light kept (lanesApply refuses: every hit the single path).
 TEST_CASE("packets: direct light in lanes keeps the single path's picture",
           "[bvh][packet][phong]") {
-    PhongModel model;
-    const auto compare = [&](const Scene& sc, const LookAtCamera& cam, int w, int h) {
-        for (bool corners : {true, false}) {
-            ParallelRenderOptions opt;
-            opt.trace.maxDepth = 4;
-            opt.cornerRays = corners;
-            opt.threads = 1;
-            opt.packets = false;
-            ParallelRenderStats sst;
-            const wb::Image single = renderParallel(sc, cam, model, w, h, opt, &sst);
-            for (int threads : {1, 2}) {
-                opt.threads = threads;
-                opt.packets = true;
-                ParallelRenderStats st;
-                REQUIRE(renderParallel(sc, cam, model, w, h, opt, &st).data == single.data);
-                REQUIRE(st.primaryRays == sst.primaryRays);
-                REQUIRE(st.shadowRays == sst.shadowRays);
-                REQUIRE(st.secondaryRays == sst.secondaryRays);
-            }
-        }
+    // `lanes`: whether the scene's lights let the packet path shade in lanes.
+    const auto check = [](Scene& sc, const LookAtCamera& cam, int w, int h, bool lanes) {
+        REQUIRE(PhongModel::lanesApply(sc) == lanes);
+        Bvh bvh(sc.primitives);
+        sc.setAggregate(&bvh);
+        requireSingleFrame(sc, cam, w, h, {1, 2});
+        sc.setAggregate(nullptr);
     };
     for (const char* name : {"balls", "jacks", "gears", "teapot", "rings"}) {
         INFO(name);
         SceneFile sf = toScene(spdScene(name, 2));
-        REQUIRE(PhongModel::lanesApply(*sf.scene));
-        Bvh bvh(sf.scene->primitives);
-        sf.scene->setAggregate(&bvh);
-        compare(*sf.scene, sf.camera(), 96, 80);
-        sf.scene->setAggregate(nullptr);
+        check(*sf.scene, sf.camera(), 96, 80, true);
     }
     Scene sc;
     shadowCacheScene(sc);
     const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
-    Bvh bvh(sc.primitives);
-    sc.setAggregate(&bvh);
     INFO("shadow cache scene, directional light");
-    REQUIRE_FALSE(PhongModel::lanesApply(sc));
-    compare(sc, cam, 96, 72);
-    sc.setAggregate(nullptr);
+    check(sc, cam, 96, 72, false);
     sc.lights.pop_back(); // point lights only: the lanes
     sc.lights[0].constantAttenuation = 0.5;
     sc.lights[0].linearAttenuation = 0.05;
@@ -608,10 +596,6 @@ TEST_CASE("packets: direct light in lanes keeps the single path's picture",
     textured.kr = 0.3;
     textured.emission = {0.1, 0.0, 0.05};
     sc.add(Sphere({-2, 3, 1.5}, 1.2), sc.addMaterial(textured));
-    Bvh bvh2(sc.primitives);
-    sc.setAggregate(&bvh2);
     INFO("shadow cache scene, point lights, a textured sphere");
-    REQUIRE(PhongModel::lanesApply(sc));
-    compare(sc, cam, 96, 72);
-    sc.setAggregate(nullptr);
+    check(sc, cam, 96, 72, true);
 }
