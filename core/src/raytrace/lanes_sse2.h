@@ -4,10 +4,15 @@
 // operation is the IEEE one the scalar code does per hit (no FMA: the library is built
 // without it), so a lane's value is the scalar value bit for bit when the formula is
 // written with the same operations in the same order.
+#include "core/raytrace/scene.h"
+
 #include <emmintrin.h>
 #include <glm/glm.hpp>
 
 namespace wb::rt::sse2lanes {
+
+// The packet path's lanes go in pairs: lanes i and i + 1 for even i < kMaxPacket.
+static_assert(kMaxPacket % 2 == 0, "packets are shaded two lanes at a time");
 
 struct D2 {
     __m128d v;
