@@ -159,7 +159,8 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
             // Eye rays of up to kMaxPacket neighbouring pixels of the row share one walk;
             // each is then shaded from its hit as trace() would (the same colour), their
             // feelers to each light through one shadow cache along the row (the last
-            // opaque blocker: Tracer::traceFrom).
+            // opaque blocker: Tracer::traceFrom), their direct light in lanes
+            // (Tracer::traceFromPacket).
             std::fill(lastBlockers.begin(), lastBlockers.end(), nullptr);
             for (int x = x0; x < x1; x += kMaxPacket) {
                 const int n = std::min(kMaxPacket, x1 - x);
@@ -172,11 +173,12 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                     tMax[j] = std::numeric_limits<double>::infinity();
                 }
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
-                for (int j = 0; j < n; ++j) {
+                for (int j = 0; j < n; ++j)
                     if (!((found >> j) & 1)) hits[j].primitive = nullptr;
-                    store(x + j, y,
-                          tracer.traceFrom(rays[j], hits[j], counts, lastBlockers.data()));
-                }
+                Color colours[kMaxPacket];
+                tracer.traceFromPacket(rays, hits, n, counts, lastBlockers.data(), colours);
+                for (int j = 0; j < n; ++j)
+                    store(x + j, y, colours[j]);
             }
         }
         // The pixels whose four corners are all this tile's, at once (in parallel, and

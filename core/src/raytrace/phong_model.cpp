@@ -2,6 +2,7 @@
 
 #include "core/lighting.h"
 #include "core/raytrace/scene.h"
+#include "lanes_sse2.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,85 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
                                                        t.specular * specular * l.colour));
     }
     return c;
+}
+
+using namespace sse2lanes;
+
+bool PhongModel::lanesApply(const Scene& scene) {
+    for (const Light& l : scene.lights)
+        if (l.kind != Light::Kind::Point || l.spotCutoff != 180.0) return false;
+    return true;
+}
+
+void PhongModel::directLanes(const Scene& scene, const Ray* views, const Hit* hits, unsigned lanes,
+                             const double* transmittance, Color* out) const {
+    // Lanes 2i+1 (low half) and 2i (high half): _mm_set_pd takes the high lane first.
+    for (int i = 0; i + 1 < kMaxPacket; i += 2) {
+        const unsigned pairMask = (lanes >> i) & 3u;
+        if (!pairMask) continue;
+        // A lane outside `lanes` computes on its partner's data (never NaN from garbage).
+        const int a = (pairMask & 1u) ? i : i + 1, b = (pairMask & 2u) ? i + 1 : i;
+        const Hit &ha = hits[a], &hb = hits[b];
+        const Material &ma = scene.materials[size_t(ha.material)],
+                       &mb = scene.materials[size_t(hb.material)];
+        // direct()'s material terms: ambient = ka·colour, diffuse = kd·colour, specular(ks).
+        const V2 surface = pair(ma.colour, mb.colour);
+        const V2 ambient = pair(ma.ka, mb.ka) * surface, diffuse = pair(ma.kd, mb.kd) * surface;
+        const D2 ks = pair(ma.ks, mb.ks);
+        const V2 specular{ks, ks, ks};
+        const double shA = std::clamp(ma.phongExp, 0.0, 128.0),
+                     shB = std::clamp(mb.phongExp, 0.0, 128.0);
+        V2 c = pair(ma.emission, mb.emission) + ambient * splat(scene.globalAmbient);
+        const V2 origin = pair(views[a].origin, views[b].origin);
+        const V2 pos = pair(ha.point, hb.point) - origin;
+        const V2 normal = pair(ha.normal, hb.normal);
+        const D2 zero = splat(0.0);
+        const V2 zero3{zero, zero, zero};
+        // eyeDirection(true, pos) = unit(−pos).
+        const V2 toViewer = {-pos.x, -pos.y, -pos.z};
+        const D2 eyeLen = sqrt2(dot(toViewer, toViewer));
+        const V2 toEye = select(_mm_cmpgt_pd(eyeLen.v, zero.v), toViewer / eyeLen, zero3);
+        for (std::size_t li = 0; li < scene.lights.size(); ++li) {
+            const Light& l = scene.lights[li];
+            // lightFactors for a point light (w = 1) without a spot: gl.position =
+            // l.position − view.origin.
+            const V2 toLight = (splat(l.position) - origin) - pos;
+            const D2 d = sqrt2(dot(toLight, toLight));
+            const V2 vp = select(_mm_cmpgt_pd(d.v, zero.v), toLight / d, zero3);
+            const D2 denom = splat(l.constantAttenuation) + splat(l.linearAttenuation) * d +
+                             splat(l.quadraticAttenuation) * d * d;
+            const D2 one = splat(1.0);
+            const D2 attenuation =
+                select(_mm_cmpeq_pd(denom.v, one.v), one, one / maxOf(denom, splat(1e-12)));
+            const D2 diffuseFactor = maxOf(dot(normal, vp), zero);
+            // The highlight: std::pow per lane where the scalar code calls it.
+            const V2 half = vp + toEye;
+            const D2 len = sqrt2(dot(half, half));
+            const D2 cosH = maxOf(dot(normal, half / len), zero);
+            alignas(16) double dv[2], lv[2], cv[2];
+            _mm_store_pd(dv, diffuseFactor.v);
+            _mm_store_pd(lv, len.v);
+            _mm_store_pd(cv, cosH.v);
+            // Index 1 is the high lane (a), index 0 the low lane (b).
+            const double specA = dv[1] != 0 && lv[1] > 0 ? std::pow(cv[1], shA) : 0.0;
+            const double specB = dv[0] != 0 && lv[0] > 0 ? std::pow(cv[0], shB) : 0.0;
+            const D2 specularFactor = pair(specA, specB);
+            const D2 trans = pair(transmittance[li * kMaxPacket + std::size_t(a)],
+                                  transmittance[li * kMaxPacket + std::size_t(b)]);
+            const V2 lightColour = splat(l.colour);
+            // attenuation · spot (1 without a cone) · (ambient·l.ambient + shadow ·
+            // (diffuse·d·colour + specular·s·colour)), as direct() groups it.
+            c = c + (attenuation * one) * (ambient * splat(l.ambient) +
+                                           trans * ((diffuseFactor * diffuse) * lightColour +
+                                                    (specularFactor * specular) * lightColour));
+        }
+        alignas(16) double cx[2], cy[2], cz[2];
+        _mm_store_pd(cx, c.x.v);
+        _mm_store_pd(cy, c.y.v);
+        _mm_store_pd(cz, c.z.v);
+        if (pairMask & 1u) out[i] = Color(cx[1], cy[1], cz[1]);
+        if (pairMask & 2u) out[i + 1] = Color(cx[0], cy[0], cz[0]);
+    }
 }
 
 Color PhongModel::addScaled(const Color& base, const Color& term, double k) const {

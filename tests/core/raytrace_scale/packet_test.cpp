@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <memory>
 #include <random>
 #include <utility>
@@ -440,6 +441,31 @@ TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][pac
 // lies beyond the light on the floor's feelers: the cache must ask the segment, not the
 // ray). Every picture equals the single path's, for 1, 2 and 3 threads and every tree.
 namespace {
+// The frames with packets (for each thread count) equal the one-thread single-ray frame byte
+// for byte, with the same ray counts, for corner and centre rays (phong model, depth 4).
+void requireSingleFrame(const Scene& sc, const LookAtCamera& cam, int w, int h,
+                        std::initializer_list<int> threadCounts) {
+    PhongModel model;
+    for (bool corners : {true, false}) {
+        ParallelRenderOptions opt;
+        opt.trace.maxDepth = 4;
+        opt.cornerRays = corners;
+        opt.threads = 1;
+        opt.packets = false;
+        ParallelRenderStats sst;
+        const wb::Image single = renderParallel(sc, cam, model, w, h, opt, &sst);
+        for (int threads : threadCounts) {
+            opt.threads = threads;
+            opt.packets = true;
+            ParallelRenderStats st;
+            REQUIRE(renderParallel(sc, cam, model, w, h, opt, &st).data == single.data);
+            REQUIRE(st.primaryRays == sst.primaryRays);
+            REQUIRE(st.shadowRays == sst.shadowRays);
+            REQUIRE(st.secondaryRays == sst.secondaryRays);
+        }
+    }
+}
+
 // The shadow cache's scene (below).
 void shadowCacheScene(Scene& sc) {
     Material floor;
@@ -477,29 +503,12 @@ TEST_CASE("packets: the shadow cache along a row keeps the single path's picture
     Scene sc;
     shadowCacheScene(sc);
     const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
-    PhongModel model;
     Trees trees(sc);
     for (const auto& bvh : trees.bvhs) {
         INFO("width " << bvh->stats().width << " avx2 " << bvh->stats().avx2 << " avx512 "
                       << bvh->stats().avx512 << " packets " << bvh->packetWidth());
         sc.setAggregate(bvh.get());
-        for (bool corners : {true, false}) {
-            ParallelRenderOptions opt;
-            opt.trace.maxDepth = 4;
-            opt.cornerRays = corners;
-            opt.threads = 1;
-            opt.packets = false;
-            ParallelRenderStats sst;
-            const wb::Image single = renderParallel(sc, cam, model, 96, 72, opt, &sst);
-            for (int threads : {1, 2, 3}) {
-                opt.threads = threads;
-                opt.packets = true;
-                ParallelRenderStats st;
-                REQUIRE(renderParallel(sc, cam, model, 96, 72, opt, &st).data == single.data);
-                REQUIRE(st.shadowRays == sst.shadowRays);
-                REQUIRE(st.secondaryRays == sst.secondaryRays);
-            }
-        }
+        requireSingleFrame(sc, cam, 96, 72, {1, 2, 3});
     }
     sc.setAggregate(nullptr);
 }
@@ -544,4 +553,49 @@ TEST_CASE("packets: any shadow cache content gives the uncached colour", "[bvh][
     REQUIRE(hits > 48 * 36 / 2);
     REQUIRE(changed > 0); // the feelers wrote their blockers back
     sc.setAggregate(nullptr);
+}
+
+// The packet path's direct light in lanes (Tracer::traceFromPacket, PhongModel::directLanes):
+// each frame equals the single-ray frame byte for byte, with the same ray counts. SPD
+// scenes (balls: mirrors; jacks: cylinders and mirrors; gears: glass, refraction; teapot:
+// a triangle mesh; rings), and the shadow cache's scene with point lights only (so the
+// lanes are used) and a textured sphere, emission, attenuated lights (a textured hit
+// falls back to the single path, its neighbours in the lanes), and with its directional
+// light kept (lanesApply refuses: every hit the single path).
+TEST_CASE("packets: direct light in lanes keeps the single path's picture",
+          "[bvh][packet][phong]") {
+    // `lanes`: whether the scene's lights let the packet path shade in lanes.
+    const auto check = [](Scene& sc, const LookAtCamera& cam, int w, int h, bool lanes) {
+        REQUIRE(PhongModel::lanesApply(sc) == lanes);
+        Bvh bvh(sc.primitives);
+        sc.setAggregate(&bvh);
+        requireSingleFrame(sc, cam, w, h, {1, 2});
+        sc.setAggregate(nullptr);
+    };
+    for (const char* name : {"balls", "jacks", "gears", "teapot", "rings"}) {
+        INFO(name);
+        SceneFile sf = toScene(spdScene(name, 2));
+        check(*sf.scene, sf.camera(), 96, 80, true);
+    }
+    Scene sc;
+    shadowCacheScene(sc);
+    const LookAtCamera cam({9, -12, 9}, {0, 0, 0.5}, {0, 0, 1}, 45);
+    INFO("shadow cache scene, directional light");
+    check(sc, cam, 96, 72, false);
+    sc.lights.pop_back(); // point lights only: the lanes
+    sc.lights[0].constantAttenuation = 0.5;
+    sc.lights[0].linearAttenuation = 0.05;
+    sc.lights[0].quadraticAttenuation = 0.01;
+    sc.lights[1].ambient = {0.1, 0.05, 0.0};
+    sc.globalAmbient = {0.05, 0.05, 0.1};
+    wb::Image tex(2, 2, 3);
+    for (int i = 0; i < 12; ++i)
+        tex.data[std::size_t(i)] = uint8_t(40 * i);
+    Material textured;
+    textured.texture = &tex;
+    textured.kr = 0.3;
+    textured.emission = {0.1, 0.0, 0.05};
+    sc.add(Sphere({-2, 3, 1.5}, 1.2), sc.addMaterial(textured));
+    INFO("shadow cache scene, point lights, a textured sphere");
+    check(sc, cam, 96, 72, true);
 }

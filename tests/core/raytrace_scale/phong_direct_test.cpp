@@ -295,3 +295,117 @@ TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]
     }
     CHECK(ties > 100); // the ties were really tested
 }
+
+// PhongModel::directLanes (issue 21: a packet's eye hits shaded two at a time in SSE2's
+// double lanes) against direct() lane by lane, bit for bit: random hits, materials
+// (emission, exponents clamped to 0..128, ka/kd/ks 0 and random), point lights with and
+// without attenuation (a denominator of exactly 1, of 0, random), shadowed and lit
+// samples, normals facing away, random lane masks (a lane outside the mask is neither
+// read nor written); and the degenerate lanes: the light at the hit point (d = 0), the
+// viewer at the hit point (no eye direction), the light exactly behind the viewer (a zero
+// half vector), huge and tiny scales.
+TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[raytrace][phong]") {
+    std::mt19937_64 g(21);
+    std::uniform_real_distribution<double> u(0, 1);
+    PhongModel model;
+    int lanesSeen = 0, lit = 0, highlights = 0;
+    for (int scale : {0, -30, 25}) {
+        const double s = std::ldexp(1.0, scale * 3); // 1, 2^-90, 2^75
+        Scene scene;
+        scene.globalAmbient = rnd3(g, 0, 0.2);
+        for (int i = 0; i < 4; ++i) {
+            Light l = Light::point(s * rnd3(g, -10, 10), rnd3(g, 0, 1));
+            l.ambient = i == 0 ? glm::dvec3(0.0) : rnd3(g, 0, 0.3);
+            if (i == 1) {
+                l.constantAttenuation = 0.5 + u(g);
+                l.linearAttenuation = 0.1 * u(g) / s;
+                l.quadraticAttenuation = 0.01 * u(g) / (s * s);
+            } else if (i == 2) {
+                l.constantAttenuation = 0; // denominator 0 at the light: 1e-12
+                l.linearAttenuation = 0;
+                l.quadraticAttenuation = 0;
+            }
+            scene.lights.push_back(l);
+        }
+        REQUIRE(PhongModel::lanesApply(scene));
+        for (int i = 0; i < 3000; ++i) {
+            Ray views[kMaxPacket];
+            Hit hits[kMaxPacket];
+            double trans[4 * kMaxPacket];
+            for (int j = 0; j < kMaxPacket; ++j) {
+                Material m;
+                m.colour = rnd3(g, 0, 1);
+                m.ka = j == 3 ? 0.0 : u(g);
+                m.kd = u(g);
+                m.ks = j == 5 ? 0.0 : u(g);
+                m.phongExp = (i + j) % 4 == 0 ? double(int(200 * u(g))) : 300 * u(g) - 20;
+                m.emission = (i + j) % 5 == 0 ? rnd3(g, 0, 0.2) : glm::dvec3(0.0);
+                hits[j].material = scene.addMaterial(m);
+                hits[j].point = s * rnd3(g, -5, 5);
+                hits[j].normal = glm::normalize(rnd3(g, -1, 1));
+                views[j].origin = s * rnd3(g, -20, 20);
+                switch ((i * kMaxPacket + j) % 23) {
+                case 0: // the light at the hit point
+                    hits[j].point = scene.lights[size_t(i % 4)].position;
+                    break;
+                case 1: // the viewer at the hit point
+                    views[j].origin = hits[j].point;
+                    break;
+                case 2: // light 0 exactly behind the viewer, along an axis
+                    scene.lights[0].position = {0, 0, -2 * s};
+                    hits[j].point = {0, 0, 0};
+                    hits[j].normal = {0, 0, -1};
+                    views[j].origin = {0, 0, s};
+                    break;
+                default:
+                    break;
+                }
+                views[j].direction = glm::normalize(hits[j].point - views[j].origin);
+                for (int li = 0; li < 4; ++li)
+                    trans[li * kMaxPacket + j] = (i + j + li) % 3 == 0 ? 0.0 : u(g);
+            }
+            const unsigned lanes = i % 4 == 0 ? 0xFFu : unsigned(g() & 0xFFu);
+            Color out[kMaxPacket];
+            const Color poison(std::numeric_limits<double>::quiet_NaN());
+            for (Color& c : out)
+                c = poison;
+            model.directLanes(scene, views, hits, lanes, trans, out);
+            for (int j = 0; j < kMaxPacket; ++j) {
+                INFO("scale " << scale << " packet " << i << " lane " << j);
+                if (!((lanes >> j) & 1u)) {
+                    REQUIRE(std::isnan(out[j].x)); // not written
+                    continue;
+                }
+                std::vector<LightSample> samples;
+                for (std::size_t li = 0; li < scene.lights.size(); ++li) {
+                    LightSample ls;
+                    ls.light = &scene.lights[li];
+                    ls.transmittance = trans[li * kMaxPacket + std::size_t(j)];
+                    samples.push_back(ls);
+                }
+                const Material& m = scene.materials[size_t(hits[j].material)];
+                const Color want = model.direct(scene, views[j], hits[j], m, m.colour, samples);
+                REQUIRE(std::memcmp(&out[j], &want, sizeof want) == 0);
+                ++lanesSeen;
+                lit += want != m.emission + m.ka * m.colour * scene.globalAmbient;
+                highlights += m.ks > 0;
+            }
+            scene.materials.clear();
+            scene.lights[0].position = s * rnd3(g, -10, 10);
+        }
+    }
+    CHECK(lanesSeen > 3 * 3000 * 4); // about 5 of 8 lanes a packet
+    CHECK(lit > lanesSeen / 2);
+    CHECK(highlights > lanesSeen / 2);
+}
+
+TEST_CASE("rt_phong: lanesApply takes point lights without a spot only", "[raytrace][phong]") {
+    Scene scene;
+    CHECK(PhongModel::lanesApply(scene));
+    scene.lights.push_back(Light::point({1, 2, 3}));
+    CHECK(PhongModel::lanesApply(scene));
+    scene.lights.back().spotCutoff = 45;
+    CHECK_FALSE(PhongModel::lanesApply(scene));
+    scene.lights.back() = Light::directional({0, 0, -1});
+    CHECK_FALSE(PhongModel::lanesApply(scene));
+}

@@ -112,6 +112,13 @@ class Tracer {
     // scene: a transparent one or the hit's own flat primitive is not taken as a blocker).
     Color traceFrom(const Ray& ray, const Hit& hit, RayCounts& counts,
                     const Primitive** lastBlockers) const;
+    // traceFrom(rays[j], hits[j], counts, lastBlockers) into out[j] for j < n <= kMaxPacket
+    // (issue 21: a packet's eye rays, depth 0), the same colours bit for bit. With the
+    // phong model on a scene PhongModel::lanesApply accepts, the untextured hits' direct
+    // light is computed two hits at a time (PhongModel::directLanes); every other ray, and
+    // every feeler and child ray, goes the single path.
+    void traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts& counts,
+                         const Primitive** lastBlockers, Color* out) const;
     // The same colour, reporting the recursion to `observer` (may be null).
     Color trace(const Ray& ray, TraceObserver* observer) const;
     // Direct-light samples of every scene light at a hit (shadow feelers included).
@@ -140,6 +147,10 @@ class Tracer {
     double feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& dir, double tMin,
                                double dist, const Primitive* self,
                                const Primitive** blocker = nullptr) const;
+    // The feeler of one sample (not counted): the shadow cache's entry (traceFrom; null
+    // without a cache) asked first, then the walk, which leaves its opaque blocker there.
+    double cachedFeeler(const glm::dvec3& point, const glm::dvec3& toLight, double t0, double dist,
+                        const Primitive* self, const Primitive** cacheEntry) const;
     void add(const RayCounts& counts) const; // to the atomic counters
     // One ray of the recursion; `kind` is only told to the observer (the root is Primary).
     // kObserve = false compiles every event away: trace(ray) costs what it did before.
@@ -152,6 +163,13 @@ class Tracer {
                    RayCounts& counts, const Hit* known = nullptr,
                    const Primitive** lastBlockers = nullptr) const;
 
+    // traceRay's part after the direct colour `c` of the hit: the reflected and transmitted
+    // children (offsetOrigin = offsetRayOrigin(hit.point, hit.normal)) and the attenuation
+    // along `ray`; the observer's events of those steps, not rayEnd.
+    template <bool kObserve>
+    Color spawnChildren(const Ray& ray, const Hit& hit, const Material& m,
+                        const glm::dvec3& offsetOrigin, Color c, TraceObserver* observer,
+                        long& budget, RayCounts& counts, const Primitive** lastBlockers) const;
     const Scene& scene_;
     const ShadingModel& model_;
     TraceSettings settings_;

@@ -1,0 +1,83 @@
+#pragma once
+// Two hits' doubles in SSE2's lanes (baseline x86-64, no run-time check) for the packet
+// path's shading (issue 21: PhongModel::directLanes, Tracer::traceFromPacket). Each
+// operation is the IEEE one the scalar code does per hit (no FMA: the library is built
+// without it), so a lane's value is the scalar value bit for bit when the formula is
+// written with the same operations in the same order.
+#include "core/raytrace/scene.h"
+
+#include <emmintrin.h>
+#include <glm/glm.hpp>
+
+namespace wb::rt::sse2lanes {
+
+// The packet path's lanes go in pairs: lanes i and i + 1 for even i < kMaxPacket.
+static_assert(kMaxPacket % 2 == 0, "packets are shaded two lanes at a time");
+
+struct D2 {
+    __m128d v;
+};
+inline D2 operator+(D2 a, D2 b) {
+    return {_mm_add_pd(a.v, b.v)};
+}
+inline D2 operator-(D2 a, D2 b) {
+    return {_mm_sub_pd(a.v, b.v)};
+}
+inline D2 operator*(D2 a, D2 b) {
+    return {_mm_mul_pd(a.v, b.v)};
+}
+inline D2 operator/(D2 a, D2 b) {
+    return {_mm_div_pd(a.v, b.v)};
+}
+inline D2 operator-(D2 a) { // −x flips the sign bit, as the scalar negation does
+    return {_mm_xor_pd(a.v, _mm_set1_pd(-0.0))};
+}
+inline D2 sqrt2(D2 a) {
+    return {_mm_sqrt_pd(a.v)};
+}
+inline D2 splat(double x) {
+    return {_mm_set1_pd(x)};
+}
+// m ? a : b lane by lane (m: all ones or all zeros, from a comparison).
+inline D2 select(__m128d m, D2 a, D2 b) {
+    return {_mm_or_pd(_mm_and_pd(m, a.v), _mm_andnot_pd(m, b.v))};
+}
+// std::max(x, lo) = (x < lo) ? lo : x (NaN stays x).
+inline D2 maxOf(D2 x, D2 lo) {
+    return select(_mm_cmplt_pd(x.v, lo.v), lo, x);
+}
+struct V2 { // a dvec3 of two hits
+    D2 x, y, z;
+};
+inline V2 operator+(const V2& a, const V2& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+inline V2 operator-(const V2& a, const V2& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+inline V2 operator*(const V2& a, const V2& b) {
+    return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
+inline V2 operator*(D2 k, const V2& a) {
+    return {k * a.x, k * a.y, k * a.z};
+}
+inline V2 operator/(const V2& a, D2 k) {
+    return {a.x / k, a.y / k, a.z / k};
+}
+inline D2 dot(const V2& a, const V2& b) { // glm: (x·x' + y·y') + z·z'
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline V2 select(__m128d m, const V2& a, const V2& b) {
+    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+}
+inline V2 splat(const glm::dvec3& v) {
+    return {splat(v.x), splat(v.y), splat(v.z)};
+}
+// Lanes a and b of a per-hit vector or number.
+inline V2 pair(const glm::dvec3& a, const glm::dvec3& b) {
+    return {{_mm_set_pd(a.x, b.x)}, {_mm_set_pd(a.y, b.y)}, {_mm_set_pd(a.z, b.z)}};
+}
+inline D2 pair(double a, double b) {
+    return {_mm_set_pd(a, b)};
+}
+} // namespace wb::rt::sse2lanes
