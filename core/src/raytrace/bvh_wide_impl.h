@@ -86,8 +86,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         V tMin;                 // lowered tMin
         bool useFloat = false;  // boxes tested in float (else in double)
         bool unitD = false;     // unit direction (and useFloat): the float sphere test applies
-        int neg[3];             // direction sign per axis
-        glm::dvec3 o, d, invd;  // the ray in double (invd: double walk only)
+        int signs;              // bit a: d[a] < 0
+        // The ray itself (its origin and direction in double, read by the set-ups below; a
+        // pointer, not a copy: six moves a ray less, issue 21's seventh session).
+        const Ray* ray;
+        glm::dvec3 invd; // double walk only
+        bool neg(int a) const { return (signs >> a) & 1; }
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
         __m128 fo[3], fd[3], om;
@@ -103,10 +107,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // Out of line (once per ray at most): inlined, they made the walk's own code
         // longer on every scene, jacks 4's eye walk without a triangle included (callgrind).
         __attribute__((noinline)) void shearSetup() const {
-            sh = triangleShear(d);
+            sh = triangleShear(ray->direction);
             shReady = true;
         }
         __attribute__((noinline)) void mtSetup() {
+            const glm::dvec3& o = ray->origin;
+            const glm::dvec3& d = ray->direction;
             const __m128d zero = _mm_setzero_pd();
             const __m128 vo =
                 _mm_movelh_ps(_mm_cvtpd_ps(_mm_loadu_pd(&o.x)),
@@ -137,6 +143,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
 
         void sphereSetup() {
+            const glm::dvec3& o = ray->origin;
+            const glm::dvec3& d = ray->direction;
             unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
             for (int a = 0; a < 3; ++a) {
                 fo[a] = _mm_set1_ps(float(o[a]));
@@ -302,8 +310,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // test's margins, up to the limit.
                     __m128 t0 = L::low(r.tMin), t1 = _mm_set1_ps(limit);
                     for (int a = 0; a < 3; ++a) {
-                        const __m128 nearP = _mm_loadu_ps(&b.ob_[r.neg[a] ? 3 + a : a][i]);
-                        const __m128 farP = _mm_loadu_ps(&b.ob_[r.neg[a] ? a : 3 + a][i]);
+                        const __m128 nearP = _mm_loadu_ps(&b.ob_[r.neg(a) ? 3 + a : a][i]);
+                        const __m128 farP = _mm_loadu_ps(&b.ob_[r.neg(a) ? a : 3 + a][i]);
                         t0 = _mm_max_ps(
                             _mm_mul_ps(_mm_sub_ps(nearP, L::low(r.on[a])), L::low(r.inv[a])), t0);
                         t1 = _mm_min_ps(
@@ -359,76 +367,112 @@ template <class L, bool Q> struct Bvh::WideWalk {
     }
 
     // A ray's RayData fields that initRay and the packets' joinPacket both set: the plane
-    // offsets and axis signs of `signs` (bit a: d[a] < 0), the float-walk flag, the ray in
-    // double (copied from the Ray: with initRay's register copies passed instead, GCC 12
-    // moved a register with the vmovq valgrind 3.19 cannot decode, see floatRay).
+    // offsets and axis signs of `signs` (bit a: d[a] < 0), the float-walk flag, the ray (by
+    // pointer: it outlives the walk in both callers).
     __attribute__((always_inline)) static void setRayData(RayData& r, int signs, bool useFloat,
                                                           const Ray& ray) {
         r.off = kOffsets.v[signs];
-        for (int a = 0; a < 3; ++a)
-            r.neg[a] = (signs >> a) & 1;
+        r.signs = signs;
         r.useFloat = useFloat;
-        r.o = ray.origin;
-        r.d = ray.direction;
+        r.ray = &ray;
     }
 
-    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set); its
-    // float values come from floatRay (the packets' lanes: joinPacket, the same operations).
-    // False: a float ray that surely misses the root node's boxes (b.rootF_, their union) on
-    // (tMin, limit], before its lanes are set up (issue 21: on the mesh bench, 55% of the eye
-    // rays miss the whole mesh's box, and their set-up and one node test were most of their
-    // cost). The test is the node test's, on the union box: its near planes are at or
-    // before every child's and its far planes at or after, and rounding is monotonic, so
-    // its entry is at most every child's entry and its exit at least every child's exit;
-    // a ray the node test would let into a child is never turned away here. Only for
-    // nearest hits (kRoot): any-hit rays (shadow feelers) start on a surface inside the
-    // box, where the test is ~20 instructions of waste (callgrind, mesh shadow rays: +2%).
+    // A float ray's start values (floatRay's, the lowered tMin, the direction's signs), kept
+    // in memory: the walk broadcasts each from there into the node test's lanes.
+    struct FloatStart {
+        alignas(16) float inv[4], invFar[4], on[4], of[4];
+        float tMin;
+        int signs;
+    };
+    enum Start { kMissed, kFloat, kDouble };
+
+    // The per-ray checks and float values of the walk: kDouble for a ray the float walk
+    // cannot carry (then only f.signs is set). kMissed: a float ray that surely misses the
+    // root node's boxes (b.rootF_, their union) on (tMin, limit] (issue 21: on the mesh
+    // bench, 55% of the eye rays miss the whole mesh's box, and their set-up and one node
+    // test were most of their cost). The test is the node test's, on the union box: its
+    // near planes are at or before every child's and its far planes at or after, and
+    // rounding is monotonic, so its entry is at most every child's entry and its exit at
+    // least every child's exit; a ray the node test would let into a child is never turned
+    // away here. Only for nearest hits (kRoot): any-hit rays (shadow feelers) start on a
+    // surface inside the box, where the test is ~20 instructions of waste (callgrind, mesh
+    // shadow rays: +2%).
     template <bool kRoot>
-    __attribute__((always_inline)) static bool initRay(RayData& r, const Bvh& b, const Ray& ray,
-                                                       double tMin, float limit) {
+    __attribute__((always_inline)) static Start startRay(FloatStart& f, const Bvh& b,
+                                                         const Ray& ray, double tMin, float limit) {
         const glm::dvec3 o = ray.origin;
         const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
         // Signs and the range check in SSE2 doubles, branch-free: this set-up is a good
         // part of a cheap ray's cost (a ray that misses the tree or meets one leaf).
         const __m128d dxy = _mm_loadu_pd(&ray.direction[0]), dz = _mm_load_sd(&ray.direction[2]);
-        const int signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-        const bool ok = om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1);
-        setRayData(r, signs, ok, ray);
-        if (ok) {
-            alignas(16) float inv[4], invFar[4], on[4], of[4];
-            floatRay(ray, om, inv, invFar, on, of);
-            const float ftMin = float(tMin);
-            const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
-            if constexpr (kRoot) {
-                // The root box in lanes x, y, z: near planes lo where d >= 0 (the sign bit of
-                // 1/d is d's: r.neg), far planes the other; then the node test's max/min
-                // chains (NaN, 0·inf, gives the accumulated operand: no limit).
-                const __m128 vinv = _mm_load_ps(inv);
+        f.signs = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+        if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) return kDouble;
+        floatRay(ray, om, f.inv, f.invFar, f.on, f.of);
+        const float ftMin = float(tMin);
+        const float lowered = ftMin - std::abs(ftMin) * 0x1p-20f;
+        f.tMin = lowered;
+        if constexpr (kRoot) {
+            // The root box in lanes x, y, z: near planes lo where d >= 0 (the sign bit of
+            // 1/d is d's), far planes the other; then the node test's max/min chains (NaN,
+            // 0·inf, gives the accumulated operand: no limit).
+            const __m128 vinv = _mm_load_ps(f.inv);
+            const __m128 lo = _mm_load_ps(b.rootF_[0]), hi = _mm_load_ps(b.rootF_[1]);
+            __m128 nearP, farP;
+            if constexpr (!std::is_same_v<L, Lanes4<0>>) {
+                // Every Lanes but the SSE2 file's is compiled for AVX2 or AVX-512: SSE4.1's
+                // blend by the sign bit (of 1/d, which is d's).
+                nearP = _mm_blendv_ps(lo, hi, vinv);
+                farP = _mm_blendv_ps(hi, lo, vinv);
+            } else {
                 const __m128 neg = _mm_castsi128_ps(_mm_srai_epi32(_mm_castps_si128(vinv), 31));
-                const __m128 lo = _mm_load_ps(b.rootF_[0]), hi = _mm_load_ps(b.rootF_[1]);
-                const __m128 nearP = _mm_or_ps(_mm_and_ps(neg, hi), _mm_andnot_ps(neg, lo));
-                const __m128 farP = _mm_or_ps(_mm_and_ps(neg, lo), _mm_andnot_ps(neg, hi));
-                const __m128 tn = _mm_mul_ps(_mm_sub_ps(nearP, _mm_load_ps(on)), vinv);
-                const __m128 tf =
-                    _mm_mul_ps(_mm_sub_ps(farP, _mm_load_ps(of)), _mm_load_ps(invFar));
-                __m128 t0 = _mm_max_ss(tn, _mm_set_ss(lowered));
-                __m128 t1 = _mm_min_ss(tf, _mm_set_ss(limit));
-                t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 1), t0);
-                t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 1), t1);
-                t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 2), t0);
-                t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 2), t1);
-                if (!_mm_comile_ss(t0, t1)) return false;
+                nearP = _mm_or_ps(_mm_and_ps(neg, hi), _mm_andnot_ps(neg, lo));
+                farP = _mm_or_ps(_mm_and_ps(neg, lo), _mm_andnot_ps(neg, hi));
             }
-            for (int a = 0; a < 3; ++a) {
-                r.on[a] = L::set1(on[a]);
-                r.of[a] = L::set1(of[a]);
-                r.inv[a] = L::set1(inv[a]);
-                r.invFar[a] = L::set1(invFar[a]);
-            }
-            r.tMin = L::set1(lowered);
-        } else {
-            r.invd = 1.0 / ray.direction;
+            const __m128 tn = _mm_mul_ps(_mm_sub_ps(nearP, _mm_load_ps(f.on)), vinv);
+            const __m128 tf =
+                _mm_mul_ps(_mm_sub_ps(farP, _mm_load_ps(f.of)), _mm_load_ps(f.invFar));
+            __m128 t0 = _mm_max_ss(tn, _mm_set_ss(lowered));
+            __m128 t1 = _mm_min_ss(tf, _mm_set_ss(limit));
+            t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 1), t0);
+            t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 1), t1);
+            t0 = _mm_max_ss(_mm_shuffle_ps(tn, tn, 2), t0);
+            t1 = _mm_min_ss(_mm_shuffle_ps(tf, tf, 2), t1);
+            if (!_mm_comile_ss(t0, t1)) return kMissed;
         }
+        return kFloat;
+    }
+
+    // A float ray's RayData from its start values: the node test's lanes, each broadcast
+    // from memory (one instruction a value).
+    __attribute__((always_inline)) static void fillRay(RayData& r, const FloatStart& f,
+                                                       const Ray& ray) {
+        setRayData(r, f.signs, true, ray);
+        for (int a = 0; a < 3; ++a) {
+            r.on[a] = L::set1(f.on[a]);
+            r.of[a] = L::set1(f.of[a]);
+            r.inv[a] = L::set1(f.inv[a]);
+            r.invFar[a] = L::set1(f.invFar[a]);
+        }
+        r.tMin = L::set1(f.tMin);
+    }
+
+    // The per-ray set-up of the walk (r.useFloat false: the double walk, r.invd set).
+    // False: the ray surely misses every box (startRay's kMissed).
+    template <bool kRoot>
+    __attribute__((always_inline)) static bool initRay(RayData& r, const Bvh& b, const Ray& ray,
+                                                       double tMin, float limit) {
+        FloatStart f;
+        switch (startRay<kRoot>(f, b, ray, tMin, limit)) {
+        case kMissed:
+            return false;
+        case kFloat:
+            fillRay(r, f, ray);
+            return true;
+        case kDouble:
+            break;
+        }
+        setRayData(r, f.signs, false, ray);
+        r.invd = 1.0 / ray.direction;
         return true;
     }
 
@@ -441,14 +485,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
     // tMax] may meet (after the leaves' float tests); leaf returns false to stop. Nearest hit
     // (kAnyHit false): leaf may lower tMax, nearest children first. Any hit: tMax fixed.
-    template <bool kAnyHit, class Leaf>
+    // `pre`: the ray's start values if the caller has already taken them (startRay gave
+    // kFloat for this tMin and tMax), else null.
+    // kFloatOnly: pre is given, the tree has nodes (no rootLeafCount_) and every box test is
+    // in float (no per-node check of useFloat).
+    template <bool kAnyHit, bool kFloatOnly = false, class Leaf>
     // Inlined into its one caller per instantiation (intersect, occluded, forEachHit,
     // forEachBlocker): one call and one prologue less per ray (issue 21).
     __attribute__((always_inline)) static void walk(const Bvh& b, const Ray& ray, double tMin,
-                                                    double& tMax, Leaf&& leaf) {
+                                                    double& tMax, Leaf&& leaf,
+                                                    const FloatStart* pre = nullptr) {
         using namespace bvh_detail;
-        if (b.stats_.primitives == 0) return;
-        if (b.rootLeafCount_ > 0) {
+        if (!kFloatOnly && b.stats_.primitives == 0) return;
+        if (!kFloatOnly && b.rootLeafCount_ > 0) {
             // A tree of one leaf (up to maxLeafSize primitives): the root box in double and
             // the exact tests, without the float set-up, which costs more than it saves.
             double t0 = tMin, t1 = tMax;
@@ -475,7 +524,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
         };
         float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         RayData r;
-        if (!initRay<!kAnyHit>(r, b, ray, tMin, flim)) return;
+        if (kFloatOnly || pre)
+            fillRay(r, *pre, ray);
+        else if (!initRay<!kAnyHit>(r, b, ray, tMin, flim))
+            return;
         const glm::dvec3 o = ray.origin;
         struct Entry {
             std::uint32_t child;
@@ -493,7 +545,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
             alignas(32) float t[W];
             int mask;
-            if (r.useFloat) {
+            if (kFloatOnly || r.useFloat) {
                 V t0 = r.tMin, t1 = L::set1(flim);
                 for (int a = 0; a < 3; ++a) {
                     const V nearP = planes(nd, r.off[a], a);
@@ -514,8 +566,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         continue; // empty slot
                     double t0 = tMin, t1 = lim;
                     for (int a = 0; a < 3; ++a) {
-                        const double nearP = r.neg[a] ? boxHi(nd, a, c) : boxLo(nd, a, c);
-                        const double farP = r.neg[a] ? boxLo(nd, a, c) : boxHi(nd, a, c);
+                        const double nearP = r.neg(a) ? boxHi(nd, a, c) : boxLo(nd, a, c);
+                        const double farP = r.neg(a) ? boxLo(nd, a, c) : boxHi(nd, a, c);
                         const double tn = (nearP - o[a]) * r.invd[a];
                         const double tf = (farP - o[a]) * r.invd[a] * kFarScale;
                         t0 = tn > t0 ? tn : t0;
@@ -1215,16 +1267,25 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return p.occluded(ray, tMin, tMax);
     }
 
-    static bool intersect(const Bvh& b, const Ray& ray, double tMin, double tMax, Hit& hit) {
+    // intersect()'s leaf visitor. Its state (the nearest so far, the limit) lives in its own
+    // members rather than in references to the caller's locals: with a lambda capturing
+    // them by reference GCC kept the closure in memory, stored ~10 pointers per ray and read
+    // each field through one (issue 21, seventh session: the per-ray set-up).
+    struct Nearest {
+        const Bvh& b;
+        const Ray& ray;
+        Hit& hit;
+        double tMin, tMax;
+        const Primitive* best = nullptr;
+        std::uint8_t bestKind = bvh_detail::kOther;
+        std::uint32_t bestIndex = 0;
+
         // Candidates write straight into `hit` (each is asked only for t <= the nearest so
         // far). On equal t the plain loop keeps the primitive later in the scene; when an
         // earlier one ties, the later one's record is restored by asking it again (the same
         // exact code gives the same bits). Exact ties are rare: records stay uncopied.
-        const Primitive* best = nullptr;
-        std::uint8_t bestKind = bvh_detail::kOther;
-        std::uint32_t bestIndex = 0;
-        auto offer = [&](const Primitive& p, std::uint8_t kind, std::uint32_t index,
-                         const RayData* r) {
+        __attribute__((always_inline)) void offer(const Primitive& p, std::uint8_t kind,
+                                                  std::uint32_t index, const RayData* r) {
             const double before = tMax;
             if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
             if (best && hit.t == before && index < bestIndex) {
@@ -1235,14 +1296,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
             bestKind = kind;
             bestIndex = index;
             tMax = hit.t;
-        };
-        for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
-            offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
-        walk<false>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
+        }
+        __attribute__((always_inline)) bool operator()(std::uint32_t i, const RayData* r) {
             offer(*b.order_[i], b.kind_[i], b.orderIndex_[i], r);
             return true;
-        });
-        return best != nullptr;
+        }
+    };
+    // The nearest-hit query, in two parts (issue 21, seventh session): this one, small
+    // (no callee-saved registers, no frame for the walk's stack), takes a float ray's start
+    // values and its root-box test, and returns at once for a ray that misses the root box
+    // (55% of the mesh bench's eye rays); the walk itself (nearestFrom) is out of line and
+    // starts from those values. Rays the float walk cannot carry, trees of one leaf and
+    // scenes with unbounded primitives go to nearestFrom whole, which sets them up itself.
+    static bool intersect(const Bvh& b, const Ray& ray, double tMin, double tMax, Hit& hit) {
+        if (b.unbounded_.empty() && b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
+            FloatStart f;
+            const Start k = startRay<true>(f, b, ray, tMin, limitOf(tMax));
+            if (k == kMissed) return false;
+            if (k == kFloat) return nearestFrom<true>(b, ray, tMin, tMax, hit, &f);
+        }
+        return nearestFrom<false>(b, ray, tMin, tMax, hit, nullptr);
+    }
+    // kFloatOnly (pre given): a walk of its own, without the checks intersect has made and
+    // without the double box test; else the general walk.
+    template <bool kFloatOnly>
+    __attribute__((noinline)) static bool nearestFrom(const Bvh& b, const Ray& ray, double tMin,
+                                                      double tMax, Hit& hit,
+                                                      const FloatStart* pre) {
+        Nearest s{b, ray, hit, tMin, tMax};
+        if constexpr (!kFloatOnly)
+            for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
+                s.offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
+        walk<false, kFloatOnly>(b, ray, tMin, s.tMax, s, pre);
+        return s.best != nullptr;
     }
 
     // `skip`: a flat primitive the feeler starts on (Aggregate::forEachBlocker), never asked;
