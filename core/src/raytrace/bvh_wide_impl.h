@@ -623,6 +623,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
         // The intervals over the packet's rays (lanes not in the packet excluded).
         float onLo[3], onHi[3], ofLo[3], ofHi[3], invLo[3], invHi[3], invFarLo[3], invFarHi[3];
+        // Per axis, the origin bound that gives the near plane's smallest difference n − on
+        // where d > 0 (onHi) and its largest where d < 0 (onLo); the far plane's largest
+        // f − of where d > 0 (ofLo), its smallest where d < 0 (ofHi). The packet's rays
+        // share their direction signs (joinPacket), so one bound serves every ray.
+        float onNear[3], ofFar[3];
         float tMinLo;
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
@@ -845,19 +850,25 @@ template <class L, bool Q> struct Bvh::WideWalk {
             }
             p.tMinLo = std::min(p.tMinLo, p.tMin[j]);
         }
+        for (int a = 0; a < 3; ++a) {
+            const bool neg = p.invLo[a] < 0; // every ray's 1/d has the same sign, none zero
+            p.onNear[a] = neg ? p.onLo[a] : p.onHi[a];
+            p.ofFar[a] = neg ? p.ofHi[a] : p.ofLo[a];
+        }
     }
 
-    // The smallest and largest of four products x·y, x in [x0, x1], y in [y0, y1], in
-    // lanes: rounding is monotonic, so every lane's rounded product of values inside the
-    // intervals lies between them.
-    static V minProduct(V x0, V x1, V y0, V y1) {
-        return L::min(L::min(L::mul(x0, y0), L::mul(x0, y1)),
-                      L::min(L::mul(x1, y0), L::mul(x1, y1)));
-    }
-    static V maxProduct(V x0, V x1, V y0, V y1) {
-        return L::max(L::max(L::mul(x0, y0), L::mul(x0, y1)),
-                      L::max(L::mul(x1, y0), L::mul(x1, y1)));
-    }
+    // The interval test's bounds of a ray's entry and exit on one axis. A ray's entry is
+    // fl(fl(n − on)·inv), n the near plane. Where d > 0 (inv > 0) it grows with n − on,
+    // and fl(n − on) >= x = fl(n − onHi) (rounding is monotonic); where d < 0 it shrinks
+    // with n − on, and fl(n − on) <= x = fl(n − onLo) (closePacket's onNear). So every
+    // ray's entry is at least fl(x·inv) for its own inv, and x·y, linear in y, takes its
+    // smallest value over [invLo, invHi] at an end: min(fl(x·invLo), fl(x·invHi)) bounds
+    // every ray's rounded entry from below. The exit, fl(fl(f − of)·invFar), the same way
+    // from above with x = fl(f − ofFar): max(fl(x·invFarLo), fl(x·invFarHi)). Two products
+    // where the sign of x is not known, not the four corner products of both intervals
+    // (issue 21: balls 4 eye packets, callgrind).
+    static V minProduct(V x, V y0, V y1) { return L::min(L::mul(x, y0), L::mul(x, y1)); }
+    static V maxProduct(V x, V y0, V y1) { return L::max(L::mul(x, y0), L::mul(x, y1)); }
 
     // Calls leaf(j, i, ray data) for ray j of `lanes` and the primitives i of every leaf
     // its segment may meet; tMax[j] as in walk() (nearest hit: the leaf may lower it and
@@ -871,17 +882,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
             if ((lanes >> j) & 1) p.lim[j] = limitOf(tMax[j]);
         closePacket(p, lanes);
         V on[3], of[3], inv[3], invFar[3];
-        V iaOnLo[3], iaOnHi[3], iaOfLo[3], iaOfHi[3], iaInvLo[3], iaInvHi[3], iaFarLo[3],
-            iaFarHi[3];
+        V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
             on[a] = L::load(p.on[a]);
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOnLo[a] = L::set1(p.onLo[a]);
-            iaOnHi[a] = L::set1(p.onHi[a]);
-            iaOfLo[a] = L::set1(p.ofLo[a]);
-            iaOfHi[a] = L::set1(p.ofHi[a]);
+            iaOn[a] = L::set1(p.onNear[a]);
+            iaOf[a] = L::set1(p.ofFar[a]);
             iaInvLo[a] = L::set1(p.invLo[a]);
             iaInvHi[a] = L::set1(p.invHi[a]);
             iaFarLo[a] = L::set1(p.invFarLo[a]);
@@ -1001,12 +1009,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
                     farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
                 }
-                t0 = L::max(
-                    minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a], iaInvHi[a]),
-                    t0);
-                t1 = L::min(
-                    maxProduct(L::sub(f, iaOfHi[a]), L::sub(f, iaOfLo[a]), iaFarLo[a], iaFarHi[a]),
-                    t1);
+                t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
+                t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
             }
             int cand = L::le(t0, t1) & validMask(nd);
             // Each candidate child against each ray (lane j: ray j's own test). A child's
