@@ -8,8 +8,10 @@
 // AVX2 on, so only the code below is compiled for AVX2 there.
 //
 // Lanes: W (4 or 8), V (the register), set1, load (aligned), sub, mul, min, max (NaN in
-// either operand gives the second), le (a movemask of a <= b, false for NaN), store, and
-// low (the first four lanes as __m128, for the leaf tests, which stay 4-wide).
+// either operand gives the second), le (a movemask of a <= b, false for NaN), store,
+// low (the first four lanes as __m128, for the leaf tests, which stay 4-wide), and for
+// the packets add, abs, ngt, lt, gt, hmin and hmax (the smallest/largest lane in every
+// lane; no lane NaN).
 //
 // 1. Per ray: the near/far planes picked by byte offsets from the direction's signs; the
 //    origin in float widened by |o|max·2^-21 per axis (its rounding is at most
@@ -67,6 +69,15 @@ template <int Tag> struct Lanes4 {
     static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
     static int lt(V a, V b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)); }   // false for NaN
     static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
+    // The smallest and largest lane, in every lane (the packets' intervals over their rays).
+    static V hmin(V a) {
+        a = _mm_min_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+        return _mm_min_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+    }
+    static V hmax(V a) {
+        a = _mm_max_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+        return _mm_max_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+    }
 };
 
 template <class L, bool Q> struct Bvh::WideWalk {
@@ -621,14 +632,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
     struct Packet {
         RayData r[W];
         alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
-        // The intervals over the packet's rays (lanes not in the packet excluded).
-        float onLo[3], onHi[3], ofLo[3], ofHi[3], invLo[3], invHi[3], invFarLo[3], invFarHi[3];
-        // Per axis, the origin bound that gives the near plane's smallest difference n − on
-        // where d > 0 (onHi) and its largest where d < 0 (onLo); the far plane's largest
-        // f − of where d > 0 (ofLo), its smallest where d < 0 (ofHi). The packet's rays
-        // share their direction signs (joinPacket), so one bound serves every ray.
-        float onNear[3], ofFar[3];
-        float tMinLo;
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
         // kind): RayData's fo, fd, om (spheres) and mo, md, mx, my, mz (triangles) of each
@@ -765,8 +768,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             tm[j] = tMin[j];
         }
         if (!joined) return 0;
-        // Lanes outside the packet compute the first ray's values (closePacket overwrites
-        // them; this only keeps their arithmetic on finite numbers).
+        // Lanes outside the packet compute the first ray's values: the intervals over all W
+        // lanes (walkPacket) are then those over the packet's rays.
         const int first = __builtin_ctz(joined);
         for (int j = 0; j < W; ++j) {
             if ((joined >> j) & 1) continue;
@@ -815,52 +818,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
         p.filled |= 1u << j;
     }
 
-    // The intervals over the rays of `lanes`; lanes outside it get the first ray's
-    // values and the limit −inf (no box is entered by them).
-    static void closePacket(Packet& p, unsigned lanes) {
-        const int first = __builtin_ctz(lanes);
-        for (int a = 0; a < 3; ++a) {
-            p.onLo[a] = p.onHi[a] = p.on[a][first];
-            p.ofLo[a] = p.ofHi[a] = p.of[a][first];
-            p.invLo[a] = p.invHi[a] = p.inv[a][first];
-            p.invFarLo[a] = p.invFarHi[a] = p.invFar[a][first];
-        }
-        p.tMinLo = p.tMin[first];
-        for (int j = 0; j < W; ++j) {
-            if (!((lanes >> j) & 1)) {
-                for (int a = 0; a < 3; ++a) {
-                    p.on[a][j] = p.on[a][first];
-                    p.of[a][j] = p.of[a][first];
-                    p.inv[a][j] = p.inv[a][first];
-                    p.invFar[a][j] = p.invFar[a][first];
-                }
-                p.tMin[j] = p.tMin[first];
-                p.lim[j] = -std::numeric_limits<float>::infinity();
-                continue;
-            }
-            for (int a = 0; a < 3; ++a) {
-                p.onLo[a] = std::min(p.onLo[a], p.on[a][j]);
-                p.onHi[a] = std::max(p.onHi[a], p.on[a][j]);
-                p.ofLo[a] = std::min(p.ofLo[a], p.of[a][j]);
-                p.ofHi[a] = std::max(p.ofHi[a], p.of[a][j]);
-                p.invLo[a] = std::min(p.invLo[a], p.inv[a][j]);
-                p.invHi[a] = std::max(p.invHi[a], p.inv[a][j]);
-                p.invFarLo[a] = std::min(p.invFarLo[a], p.invFar[a][j]);
-                p.invFarHi[a] = std::max(p.invFarHi[a], p.invFar[a][j]);
-            }
-            p.tMinLo = std::min(p.tMinLo, p.tMin[j]);
-        }
-        for (int a = 0; a < 3; ++a) {
-            const bool neg = p.invLo[a] < 0; // every ray's 1/d has the same sign, none zero
-            p.onNear[a] = neg ? p.onLo[a] : p.onHi[a];
-            p.ofFar[a] = neg ? p.ofHi[a] : p.ofLo[a];
-        }
-    }
-
     // The interval test's bounds of a ray's entry and exit on one axis. A ray's entry is
     // fl(fl(n − on)·inv), n the near plane. Where d > 0 (inv > 0) it grows with n − on,
     // and fl(n − on) >= x = fl(n − onHi) (rounding is monotonic); where d < 0 it shrinks
-    // with n − on, and fl(n − on) <= x = fl(n − onLo) (closePacket's onNear). So every
+    // with n − on, and fl(n − on) <= x = fl(n − onLo) (walkPacket's iaOn). So every
     // ray's entry is at least fl(x·inv) for its own inv, and x·y, linear in y, takes its
     // smallest value over [invLo, invHi] at an end: min(fl(x·invLo), fl(x·invHi)) bounds
     // every ray's rounded entry from below. The exit, fl(fl(f − of)·invFar), the same way
@@ -878,9 +839,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
     static void walkPacket(const Bvh& b, Packet& p, unsigned lanes, const double* tMax,
                            Leaf&& leaf) {
         const std::vector<Node>& nodes = nodesOf(b);
+        constexpr float kInfF = std::numeric_limits<float>::infinity();
+        // Lanes outside the packet: the limit −inf (no box is entered by them).
         for (int j = 0; j < W; ++j)
-            if ((lanes >> j) & 1) p.lim[j] = limitOf(tMax[j]);
-        closePacket(p, lanes);
+            p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        // The intervals over the packet's rays, in every lane (joinPacket gave the lanes
+        // outside the packet the first ray's values). The origin bound per axis: the near
+        // plane's smallest difference n − on where d > 0 (the largest on), its largest where
+        // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
+        // where d < 0. The packet's rays share their direction signs (joinPacket).
+        const int* neg = p.r[__builtin_ctz(lanes)].neg;
         V on[3], of[3], inv[3], invFar[3];
         V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
@@ -888,23 +856,22 @@ template <class L, bool Q> struct Bvh::WideWalk {
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = L::set1(p.onNear[a]);
-            iaOf[a] = L::set1(p.ofFar[a]);
-            iaInvLo[a] = L::set1(p.invLo[a]);
-            iaInvHi[a] = L::set1(p.invHi[a]);
-            iaFarLo[a] = L::set1(p.invFarLo[a]);
-            iaFarHi[a] = L::set1(p.invFarHi[a]);
+            iaOn[a] = neg[a] ? L::hmin(on[a]) : L::hmax(on[a]);
+            iaOf[a] = neg[a] ? L::hmax(of[a]) : L::hmin(of[a]);
+            iaInvLo[a] = L::hmin(inv[a]);
+            iaInvHi[a] = L::hmax(inv[a]);
+            iaFarLo[a] = L::hmin(invFar[a]);
+            iaFarHi[a] = L::hmax(invFar[a]);
         }
-        const V tMinV = L::load(p.tMin), iaTMin = L::set1(p.tMinLo);
+        // A NaN tMin (its lane never enters a box) counts as +inf, so it lowers no bound.
+        const V tMinV = L::load(p.tMin), iaTMin = L::hmin(L::min(tMinV, L::set1(kInfF)));
         V limV = L::load(p.lim);
         unsigned active = lanes;
-        auto maxLim = [&](unsigned m) {
-            float x = -std::numeric_limits<float>::infinity();
-            for (; m; m &= m - 1)
-                x = std::max(x, p.lim[__builtin_ctz(m)]);
-            return x;
-        };
-        float limHi = maxLim(active);
+        // The largest limit of the active rays, in every lane: the other lanes' limits are
+        // −inf (outside the packet, or done), and a NaN limit (its lane enters no box)
+        // counts as −inf.
+        auto maxLim = [&]() { return L::hmax(L::max(limV, L::set1(-kInfF))); };
+        V limHi = maxLim();
         // Visits a leaf for the rays of m; false when no ray is left (any hit).
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
             m &= active;
@@ -956,7 +923,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     for (unsigned k = entered; k; k &= k - 1)
                         p.lim[__builtin_ctz(k)] = limitOf(tMax[__builtin_ctz(k)]);
                 limV = L::load(p.lim);
-                limHi = maxLim(active);
+                limHi = maxLim();
                 return active != 0;
             }
             for (; m; m &= m - 1) {
@@ -975,7 +942,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
             }
             limV = L::load(p.lim);
-            limHi = maxLim(active);
+            limHi = maxLim();
             return active != 0;
         };
         struct Entry {
@@ -996,7 +963,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const float* nearP[3];
             const float* farP[3];
             // The interval test: the W children against the whole packet at once.
-            V t0 = iaTMin, t1 = L::set1(limHi);
+            V t0 = iaTMin, t1 = limHi;
             for (int a = 0; a < 3; ++a) {
                 const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
                 if constexpr (Q) {
@@ -1082,7 +1049,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 const unsigned m = e.rays & active;
                 if (!m) continue;
                 if constexpr (!kAnyHit) {
-                    if (e.t > maxLim(m)) continue;
+                    // Dropped when it lies beyond the limit of every ray of m (a NaN limit
+                    // keeps it: a wasted visit, never a lost one).
+                    if (!(L::ngt(L::set1(e.t), limV) & int(m))) continue;
                     if (e.count > 0) {
                         visitLeaves(e.child, e.count, m);
                         continue;
