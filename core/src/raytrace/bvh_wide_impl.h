@@ -639,6 +639,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // sphere, as their single walk does); triLanes: every lane of the packet (the
         // triangle filter has no per-ray axes).
         alignas(32) float sfo[3][W], sfd[3][W], som[W];
+        // The rays' origins and directions in double, lane by lane (joinPacket; lanes
+        // outside the packet hold the first ray's): sphereLanes' source.
+        alignas(32) double oo[3][W], dd[3][W];
         alignas(32) float tmo[3][W], tmd[3][W], tmx[W], tmy[W], tmz[W];
         unsigned sphLanes = 0, triLanes = 0;
         unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
@@ -651,18 +654,31 @@ template <class L, bool Q> struct Bvh::WideWalk {
     static float lane0(__m128 v) { return _mm_cvtss_f32(v); }
     // The transposed tests' values of the rays of `lanes` (the other lanes keep the first
     // ray's, never read: their results are masked).
+    // RayData::sphereSetup's values for all W lanes at once, from the packet's doubles: the
+    // same IEEE operations in the same order (float(o[a]) and float(d[a]) as _mm_cvtpd_ps,
+    // |o|₁ = (|x| + |y|) + |z| and d·d = (x·x + y·y) + z·z in double), so the same bits.
+    // The rays' own RayData keep theirs unset (sphereSetup fills them if they run their
+    // own leaf tests).
     static void sphereLanes(Packet& p, unsigned lanes) {
-        const int first = __builtin_ctz(lanes);
-        for (int j = 0; j < W; ++j) {
-            RayData& r = p.r[(lanes >> j) & 1 ? j : first];
-            if (!r.sphReady) r.sphereSetup();
-            if ((lanes >> j) & 1 && r.unitD) p.sphLanes |= 1u << j;
+        const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+        unsigned unit = 0;
+        for (int j = 0; j < W; j += 2) {
+            __m128d ol = _mm_setzero_pd(), dd = _mm_setzero_pd();
             for (int a = 0; a < 3; ++a) {
-                p.sfo[a][j] = lane0(r.fo[a]);
-                p.sfd[a][j] = lane0(r.fd[a]);
+                const __m128d o = _mm_load_pd(&p.oo[a][j]), d = _mm_load_pd(&p.dd[a][j]);
+                const __m128 fo = _mm_cvtpd_ps(o), fd = _mm_cvtpd_ps(d);
+                _mm_storel_pi(reinterpret_cast<__m64*>(&p.sfo[a][j]), fo);
+                _mm_storel_pi(reinterpret_cast<__m64*>(&p.sfd[a][j]), fd);
+                ol = a == 0 ? _mm_and_pd(o, absMask) : _mm_add_pd(ol, _mm_and_pd(o, absMask));
+                dd = a == 0 ? _mm_mul_pd(d, d) : _mm_add_pd(dd, _mm_mul_pd(d, d));
             }
-            p.som[j] = lane0(r.om);
+            const __m128 om =
+                _mm_mul_ps(_mm_cvtpd_ps(ol), _mm_set1_ps(bvh_detail::kSphereMargin));
+            _mm_storel_pi(reinterpret_cast<__m64*>(&p.som[j]), om);
+            const __m128d dev = _mm_and_pd(_mm_sub_pd(dd, _mm_set1_pd(1)), absMask);
+            unit |= unsigned(_mm_movemask_pd(_mm_cmplt_pd(dev, _mm_set1_pd(1e-6)))) << j;
         }
+        p.sphLanes = unit & lanes;
         p.sphSet = true;
     }
     static void triangleLanes(Packet& p, unsigned lanes) {
@@ -741,7 +757,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // float values are floatRay's operations, written out four rays at a time (one call per
     // ray would cost the division per ray this saves).
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
-        alignas(16) double dd[3][W], oo[3][W], omax[W], tm[W];
+        alignas(16) double omax[W], tm[W];
+        double(&oo)[3][W] = p.oo;
+        double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
         int signs = -1;
         for (unsigned m = lanes; m; m &= m - 1) {
