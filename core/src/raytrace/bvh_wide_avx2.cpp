@@ -55,17 +55,6 @@ struct L8 {
     static int ngt(V a, V b) { return _mm256_movemask_ps(_mm256_cmp_ps(a, b, _CMP_NGT_UQ)); }
     static int lt(V a, V b) { return _mm256_movemask_ps(_mm256_cmp_ps(a, b, _CMP_LT_OQ)); }
     static int gt(V a, V b) { return _mm256_movemask_ps(_mm256_cmp_ps(a, b, _CMP_GT_OQ)); }
-    // The smallest and largest lane, in every lane (the packets' intervals over their rays).
-    static V hmin(V a) {
-        a = _mm256_min_ps(a, _mm256_permute2f128_ps(a, a, 1));
-        a = _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
-        return _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
-    }
-    static V hmax(V a) {
-        a = _mm256_max_ps(a, _mm256_permute2f128_ps(a, a, 1));
-        a = _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
-        return _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
-    }
 };
 
 } // namespace wb::rt::avx2

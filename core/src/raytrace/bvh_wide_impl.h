@@ -10,8 +10,7 @@
 // Lanes: W (4 or 8), V (the register), set1, load (aligned), sub, mul, min, max (NaN in
 // either operand gives the second), le (a movemask of a <= b, false for NaN), store,
 // low (the first four lanes as __m128, for the leaf tests, which stay 4-wide), and for
-// the packets add, abs, ngt, lt, gt, hmin and hmax (the smallest/largest lane in every
-// lane; no lane NaN).
+// the packets add, abs, ngt, lt and gt.
 //
 // 1. Per ray: the near/far planes picked by byte offsets from the direction's signs; the
 //    origin in float widened by |o|max·2^-21 per axis (its rounding is at most
@@ -69,15 +68,6 @@ template <int Tag> struct Lanes4 {
     static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
     static int lt(V a, V b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)); }   // false for NaN
     static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
-    // The smallest and largest lane, in every lane (the packets' intervals over their rays).
-    static V hmin(V a) {
-        a = _mm_min_ps(a, _mm_shuffle_ps(a, a, 0x4E));
-        return _mm_min_ps(a, _mm_shuffle_ps(a, a, 0xB1));
-    }
-    static V hmax(V a) {
-        a = _mm_max_ps(a, _mm_shuffle_ps(a, a, 0x4E));
-        return _mm_max_ps(a, _mm_shuffle_ps(a, a, 0xB1));
-    }
 };
 
 template <class L, bool Q> struct Bvh::WideWalk {
@@ -651,6 +641,29 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurement).
     static constexpr int kTransposeLanes = 3;
 
+    // The smallest and largest lane, in every lane (the packets' intervals over their
+    // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
+    static V hmin(V a) {
+        if constexpr (W == 8) {
+            a = _mm256_min_ps(a, _mm256_permute2f128_ps(a, a, 1));
+            a = _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
+            return _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
+        } else {
+            a = _mm_min_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+            return _mm_min_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+        }
+    }
+    static V hmax(V a) {
+        if constexpr (W == 8) {
+            a = _mm256_max_ps(a, _mm256_permute2f128_ps(a, a, 1));
+            a = _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
+            return _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
+        } else {
+            a = _mm_max_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+            return _mm_max_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+        }
+    }
+
     static float lane0(__m128 v) { return _mm_cvtss_f32(v); }
     // The transposed tests' values of the rays of `lanes` (the other lanes keep the first
     // ray's, never read: their results are masked).
@@ -874,21 +887,21 @@ template <class L, bool Q> struct Bvh::WideWalk {
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = neg[a] ? L::hmin(on[a]) : L::hmax(on[a]);
-            iaOf[a] = neg[a] ? L::hmax(of[a]) : L::hmin(of[a]);
-            iaInvLo[a] = L::hmin(inv[a]);
-            iaInvHi[a] = L::hmax(inv[a]);
-            iaFarLo[a] = L::hmin(invFar[a]);
-            iaFarHi[a] = L::hmax(invFar[a]);
+            iaOn[a] = neg[a] ? hmin(on[a]) : hmax(on[a]);
+            iaOf[a] = neg[a] ? hmax(of[a]) : hmin(of[a]);
+            iaInvLo[a] = hmin(inv[a]);
+            iaInvHi[a] = hmax(inv[a]);
+            iaFarLo[a] = hmin(invFar[a]);
+            iaFarHi[a] = hmax(invFar[a]);
         }
         // A NaN tMin (its lane never enters a box) counts as +inf, so it lowers no bound.
-        const V tMinV = L::load(p.tMin), iaTMin = L::hmin(L::min(tMinV, L::set1(kInfF)));
+        const V tMinV = L::load(p.tMin), iaTMin = hmin(L::min(tMinV, L::set1(kInfF)));
         V limV = L::load(p.lim);
         unsigned active = lanes;
         // The largest limit of the active rays, in every lane: the other lanes' limits are
         // −inf (outside the packet, or done), and a NaN limit (its lane enters no box)
         // counts as −inf.
-        auto maxLim = [&]() { return L::hmax(L::max(limV, L::set1(-kInfF))); };
+        auto maxLim = [&]() { return hmax(L::max(limV, L::set1(-kInfF))); };
         V limHi = maxLim();
         // Visits a leaf for the rays of m; false when no ray is left (any hit).
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
