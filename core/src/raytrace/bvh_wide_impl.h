@@ -8,8 +8,9 @@
 // AVX2 on, so only the code below is compiled for AVX2 there.
 //
 // Lanes: W (4 or 8), V (the register), set1, load (aligned), sub, mul, min, max (NaN in
-// either operand gives the second), le (a movemask of a <= b, false for NaN), store, and
-// low (the first four lanes as __m128, for the leaf tests, which stay 4-wide).
+// either operand gives the second), le (a movemask of a <= b, false for NaN), store,
+// low (the first four lanes as __m128, for the leaf tests, which stay 4-wide), and for
+// the packets add, abs, ngt, lt and gt.
 //
 // 1. Per ray: the near/far planes picked by byte offsets from the direction's signs; the
 //    origin in float widened by |o|max·2^-21 per axis (its rounding is at most
@@ -673,9 +674,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
     struct Packet {
         RayData r[W];
         alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
-        // The intervals over the packet's rays (lanes not in the packet excluded).
-        float onLo[3], onHi[3], ofLo[3], ofHi[3], invLo[3], invHi[3], invFarLo[3], invFarHi[3];
-        float tMinLo;
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
         // kind): RayData's fo, fd, om (spheres) and mo, md, mx, my, mz (triangles) of each
@@ -683,6 +681,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // sphere, as their single walk does); triLanes: every lane of the packet (the
         // triangle filter has no per-ray axes).
         alignas(32) float sfo[3][W], sfd[3][W], som[W];
+        // The rays' origins and directions in double, lane by lane (joinPacket; lanes
+        // outside the packet hold the first ray's): sphereLanes' source.
+        alignas(32) double oo[3][W], dd[3][W];
         alignas(32) float tmo[3][W], tmd[3][W], tmx[W], tmy[W], tmz[W];
         unsigned sphLanes = 0, triLanes = 0;
         unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
@@ -692,21 +693,57 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurement).
     static constexpr int kTransposeLanes = 3;
 
+    // The smallest and largest lane, in every lane (the packets' intervals over their
+    // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
+    static V hmin(V a) {
+        if constexpr (W == 8) {
+            a = _mm256_min_ps(a, _mm256_permute2f128_ps(a, a, 1));
+            a = _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
+            return _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
+        } else {
+            a = _mm_min_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+            return _mm_min_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+        }
+    }
+    static V hmax(V a) {
+        if constexpr (W == 8) {
+            a = _mm256_max_ps(a, _mm256_permute2f128_ps(a, a, 1));
+            a = _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
+            return _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
+        } else {
+            a = _mm_max_ps(a, _mm_shuffle_ps(a, a, 0x4E));
+            return _mm_max_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+        }
+    }
+
     static float lane0(__m128 v) { return _mm_cvtss_f32(v); }
     // The transposed tests' values of the rays of `lanes` (the other lanes keep the first
     // ray's, never read: their results are masked).
+    // RayData::sphereSetup's values for all W lanes at once, from the packet's doubles: the
+    // same IEEE operations in the same order (float(o[a]) and float(d[a]) as _mm_cvtpd_ps,
+    // |o|₁ = (|x| + |y|) + |z| and d·d = (x·x + y·y) + z·z in double), so the same bits.
+    // The rays' own RayData keep theirs unset (sphereSetup fills them if they run their
+    // own leaf tests).
     static void sphereLanes(Packet& p, unsigned lanes) {
-        const int first = __builtin_ctz(lanes);
-        for (int j = 0; j < W; ++j) {
-            RayData& r = p.r[(lanes >> j) & 1 ? j : first];
-            if (!r.sphReady) r.sphereSetup();
-            if ((lanes >> j) & 1 && r.unitD) p.sphLanes |= 1u << j;
+        const __m128d absMask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffff));
+        unsigned unit = 0;
+        for (int j = 0; j < W; j += 2) {
+            __m128d ol = _mm_setzero_pd(), dd = _mm_setzero_pd();
             for (int a = 0; a < 3; ++a) {
-                p.sfo[a][j] = lane0(r.fo[a]);
-                p.sfd[a][j] = lane0(r.fd[a]);
+                const __m128d o = _mm_load_pd(&p.oo[a][j]), d = _mm_load_pd(&p.dd[a][j]);
+                const __m128 fo = _mm_cvtpd_ps(o), fd = _mm_cvtpd_ps(d);
+                _mm_storel_pi(reinterpret_cast<__m64*>(&p.sfo[a][j]), fo);
+                _mm_storel_pi(reinterpret_cast<__m64*>(&p.sfd[a][j]), fd);
+                ol = a == 0 ? _mm_and_pd(o, absMask) : _mm_add_pd(ol, _mm_and_pd(o, absMask));
+                dd = a == 0 ? _mm_mul_pd(d, d) : _mm_add_pd(dd, _mm_mul_pd(d, d));
             }
-            p.som[j] = lane0(r.om);
+            const __m128 om =
+                _mm_mul_ps(_mm_cvtpd_ps(ol), _mm_set1_ps(bvh_detail::kSphereMargin));
+            _mm_storel_pi(reinterpret_cast<__m64*>(&p.som[j]), om);
+            const __m128d dev = _mm_and_pd(_mm_sub_pd(dd, _mm_set1_pd(1)), absMask);
+            unit |= unsigned(_mm_movemask_pd(_mm_cmplt_pd(dev, _mm_set1_pd(1e-6)))) << j;
         }
+        p.sphLanes = unit & lanes;
         p.sphSet = true;
     }
     static void triangleLanes(Packet& p, unsigned lanes) {
@@ -785,7 +822,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // float values are floatRay's operations, written out four rays at a time (one call per
     // ray would cost the division per ray this saves).
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
-        alignas(16) double dd[3][W], oo[3][W], omax[W], tm[W];
+        alignas(16) double omax[W], tm[W];
+        double(&oo)[3][W] = p.oo;
+        double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
         int signs = -1;
         for (unsigned m = lanes; m; m &= m - 1) {
@@ -812,8 +851,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             tm[j] = tMin[j];
         }
         if (!joined) return 0;
-        // Lanes outside the packet compute the first ray's values (closePacket overwrites
-        // them; this only keeps their arithmetic on finite numbers).
+        // Lanes outside the packet compute the first ray's values: the intervals over all W
+        // lanes (walkPacket) are then those over the packet's rays.
         const int first = __builtin_ctz(joined);
         for (int j = 0; j < W; ++j) {
             if ((joined >> j) & 1) continue;
@@ -862,54 +901,18 @@ template <class L, bool Q> struct Bvh::WideWalk {
         p.filled |= 1u << j;
     }
 
-    // The intervals over the rays of `lanes`; lanes outside it get the first ray's
-    // values and the limit −inf (no box is entered by them).
-    static void closePacket(Packet& p, unsigned lanes) {
-        const int first = __builtin_ctz(lanes);
-        for (int a = 0; a < 3; ++a) {
-            p.onLo[a] = p.onHi[a] = p.on[a][first];
-            p.ofLo[a] = p.ofHi[a] = p.of[a][first];
-            p.invLo[a] = p.invHi[a] = p.inv[a][first];
-            p.invFarLo[a] = p.invFarHi[a] = p.invFar[a][first];
-        }
-        p.tMinLo = p.tMin[first];
-        for (int j = 0; j < W; ++j) {
-            if (!((lanes >> j) & 1)) {
-                for (int a = 0; a < 3; ++a) {
-                    p.on[a][j] = p.on[a][first];
-                    p.of[a][j] = p.of[a][first];
-                    p.inv[a][j] = p.inv[a][first];
-                    p.invFar[a][j] = p.invFar[a][first];
-                }
-                p.tMin[j] = p.tMin[first];
-                p.lim[j] = -std::numeric_limits<float>::infinity();
-                continue;
-            }
-            for (int a = 0; a < 3; ++a) {
-                p.onLo[a] = std::min(p.onLo[a], p.on[a][j]);
-                p.onHi[a] = std::max(p.onHi[a], p.on[a][j]);
-                p.ofLo[a] = std::min(p.ofLo[a], p.of[a][j]);
-                p.ofHi[a] = std::max(p.ofHi[a], p.of[a][j]);
-                p.invLo[a] = std::min(p.invLo[a], p.inv[a][j]);
-                p.invHi[a] = std::max(p.invHi[a], p.inv[a][j]);
-                p.invFarLo[a] = std::min(p.invFarLo[a], p.invFar[a][j]);
-                p.invFarHi[a] = std::max(p.invFarHi[a], p.invFar[a][j]);
-            }
-            p.tMinLo = std::min(p.tMinLo, p.tMin[j]);
-        }
-    }
-
-    // The smallest and largest of four products x·y, x in [x0, x1], y in [y0, y1], in
-    // lanes: rounding is monotonic, so every lane's rounded product of values inside the
-    // intervals lies between them.
-    static V minProduct(V x0, V x1, V y0, V y1) {
-        return L::min(L::min(L::mul(x0, y0), L::mul(x0, y1)),
-                      L::min(L::mul(x1, y0), L::mul(x1, y1)));
-    }
-    static V maxProduct(V x0, V x1, V y0, V y1) {
-        return L::max(L::max(L::mul(x0, y0), L::mul(x0, y1)),
-                      L::max(L::mul(x1, y0), L::mul(x1, y1)));
-    }
+    // The interval test's bounds of a ray's entry and exit on one axis. A ray's entry is
+    // fl(fl(n − on)·inv), n the near plane. Where d > 0 (inv > 0) it grows with n − on,
+    // and fl(n − on) >= x = fl(n − onHi) (rounding is monotonic); where d < 0 it shrinks
+    // with n − on, and fl(n − on) <= x = fl(n − onLo) (walkPacket's iaOn). So every
+    // ray's entry is at least fl(x·inv) for its own inv, and x·y, linear in y, takes its
+    // smallest value over [invLo, invHi] at an end: min(fl(x·invLo), fl(x·invHi)) bounds
+    // every ray's rounded entry from below. The exit, fl(fl(f − of)·invFar), the same way
+    // from above with x = fl(f − ofFar): max(fl(x·invFarLo), fl(x·invFarHi)). Two products
+    // where the sign of x is not known, not the four corner products of both intervals
+    // (issue 21: balls 4 eye packets, callgrind).
+    static V minProduct(V x, V y0, V y1) { return L::min(L::mul(x, y0), L::mul(x, y1)); }
+    static V maxProduct(V x, V y0, V y1) { return L::max(L::mul(x, y0), L::mul(x, y1)); }
 
     // Calls leaf(j, i, ray data) for ray j of `lanes` and the primitives i of every leaf
     // its segment may meet; tMax[j] as in walk() (nearest hit: the leaf may lower it and
@@ -919,36 +922,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
     static void walkPacket(const Bvh& b, Packet& p, unsigned lanes, const double* tMax,
                            Leaf&& leaf) {
         const std::vector<Node>& nodes = nodesOf(b);
+        constexpr float kInfF = std::numeric_limits<float>::infinity();
+        // Lanes outside the packet: the limit −inf (no box is entered by them).
         for (int j = 0; j < W; ++j)
-            if ((lanes >> j) & 1) p.lim[j] = limitOf(tMax[j]);
-        closePacket(p, lanes);
+            p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        // The intervals over the packet's rays, in every lane (joinPacket gave the lanes
+        // outside the packet the first ray's values). The origin bound per axis: the near
+        // plane's smallest difference n − on where d > 0 (the largest on), its largest where
+        // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
+        // where d < 0. The packet's rays share their direction signs (joinPacket).
+        const int* neg = p.r[__builtin_ctz(lanes)].neg;
         V on[3], of[3], inv[3], invFar[3];
-        V iaOnLo[3], iaOnHi[3], iaOfLo[3], iaOfHi[3], iaInvLo[3], iaInvHi[3], iaFarLo[3],
-            iaFarHi[3];
+        V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
             on[a] = L::load(p.on[a]);
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOnLo[a] = L::set1(p.onLo[a]);
-            iaOnHi[a] = L::set1(p.onHi[a]);
-            iaOfLo[a] = L::set1(p.ofLo[a]);
-            iaOfHi[a] = L::set1(p.ofHi[a]);
-            iaInvLo[a] = L::set1(p.invLo[a]);
-            iaInvHi[a] = L::set1(p.invHi[a]);
-            iaFarLo[a] = L::set1(p.invFarLo[a]);
-            iaFarHi[a] = L::set1(p.invFarHi[a]);
+            iaOn[a] = neg[a] ? hmin(on[a]) : hmax(on[a]);
+            iaOf[a] = neg[a] ? hmax(of[a]) : hmin(of[a]);
+            iaInvLo[a] = hmin(inv[a]);
+            iaInvHi[a] = hmax(inv[a]);
+            iaFarLo[a] = hmin(invFar[a]);
+            iaFarHi[a] = hmax(invFar[a]);
         }
-        const V tMinV = L::load(p.tMin), iaTMin = L::set1(p.tMinLo);
+        // A NaN tMin (its lane never enters a box) counts as +inf, so it lowers no bound.
+        const V tMinV = L::load(p.tMin), iaTMin = hmin(L::min(tMinV, L::set1(kInfF)));
         V limV = L::load(p.lim);
         unsigned active = lanes;
-        auto maxLim = [&](unsigned m) {
-            float x = -std::numeric_limits<float>::infinity();
-            for (; m; m &= m - 1)
-                x = std::max(x, p.lim[__builtin_ctz(m)]);
-            return x;
-        };
-        float limHi = maxLim(active);
+        // The largest limit of the active rays, in every lane: the other lanes' limits are
+        // −inf (outside the packet, or done), and a NaN limit (its lane enters no box)
+        // counts as −inf.
+        auto maxLim = [&]() { return hmax(L::max(limV, L::set1(-kInfF))); };
+        V limHi = maxLim();
         // Visits a leaf for the rays of m; false when no ray is left (any hit).
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
             m &= active;
@@ -1000,7 +1006,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     for (unsigned k = entered; k; k &= k - 1)
                         p.lim[__builtin_ctz(k)] = limitOf(tMax[__builtin_ctz(k)]);
                 limV = L::load(p.lim);
-                limHi = maxLim(active);
+                limHi = maxLim();
                 return active != 0;
             }
             for (; m; m &= m - 1) {
@@ -1019,7 +1025,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
             }
             limV = L::load(p.lim);
-            limHi = maxLim(active);
+            limHi = maxLim();
             return active != 0;
         };
         struct Entry {
@@ -1040,7 +1046,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const float* nearP[3];
             const float* farP[3];
             // The interval test: the W children against the whole packet at once.
-            V t0 = iaTMin, t1 = L::set1(limHi);
+            V t0 = iaTMin, t1 = limHi;
             for (int a = 0; a < 3; ++a) {
                 const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
                 if constexpr (Q) {
@@ -1053,12 +1059,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
                     farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
                 }
-                t0 = L::max(
-                    minProduct(L::sub(n, iaOnHi[a]), L::sub(n, iaOnLo[a]), iaInvLo[a], iaInvHi[a]),
-                    t0);
-                t1 = L::min(
-                    maxProduct(L::sub(f, iaOfHi[a]), L::sub(f, iaOfLo[a]), iaFarLo[a], iaFarHi[a]),
-                    t1);
+                t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
+                t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
             }
             int cand = L::le(t0, t1) & validMask(nd);
             // Each candidate child against each ray (lane j: ray j's own test). A child's
@@ -1130,7 +1132,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 const unsigned m = e.rays & active;
                 if (!m) continue;
                 if constexpr (!kAnyHit) {
-                    if (e.t > maxLim(m)) continue;
+                    // Dropped when it lies beyond the limit of every ray of m (a NaN limit
+                    // keeps it: a wasted visit, never a lost one).
+                    if (!(L::ngt(L::set1(e.t), limV) & int(m))) continue;
                     if (e.count > 0) {
                         visitLeaves(e.child, e.count, m);
                         continue;

@@ -432,6 +432,52 @@ TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][pac
     }
 }
 
+TEST_CASE("packets: transposed sphere lanes keep grazing hits from far origins", "[bvh][packet]") {
+    // The sphere lanes' margin has a term for the ray's origin, |o|₁·kSphereMargin
+    // (sphereLanes builds it for all lanes at once from the packet's doubles): rays from
+    // origins 10^4 times farther out than the spheres, tangent to them, in packets of 8
+    // from one origin (the transposed path). The origin's float rounding is then larger
+    // than the spheres' own margin, so a lane test without the origin term loses grazing
+    // hits (set som to 0 in sphereLanes and this test goes red).
+    std::mt19937_64 g(2107);
+    for (double s : {1.0, 1e-30, 1e25}) {
+        INFO("scale " << s);
+        Scene sc;
+        std::vector<std::pair<glm::dvec3, double>> balls;
+        for (int i = 0; i < 200; ++i) {
+            const glm::dvec3 c = rnd3(g, -10 * s, 10 * s);
+            const double r = std::uniform_real_distribution<double>(0.05 * s, 0.6 * s)(g);
+            sc.add(Sphere(c, r), 0);
+            balls.emplace_back(c, r);
+        }
+        const Trees t(sc);
+        PacketCounts n;
+        for (int i = 0; i < 300; ++i) {
+            Ray rays[kMaxPacket];
+            double tMin[kMaxPacket], tMax[kMaxPacket];
+            const glm::dvec3 o = 1e5 * s * glm::normalize(rnd3(g, -1, 1));
+            const auto& [c, r] = balls[g() % balls.size()];
+            const glm::dvec3 w = glm::normalize(c - o);
+            const glm::dvec3 a = glm::normalize(glm::cross(w, glm::dvec3(0.3, 0.5, 0.7)));
+            const glm::dvec3 b = glm::cross(w, a);
+            const double d = glm::length(c - o);
+            const double back = r * r / d, rad = r * std::sqrt(1 - (r / d) * (r / d));
+            for (int j = 0; j < kMaxPacket; ++j) {
+                const double phi = 0.1 * j + 0.01 * double(i % 7);
+                const glm::dvec3 target =
+                    c - back * w + rad * (std::cos(phi) * a + std::sin(phi) * b);
+                rays[j].origin = o;
+                rays[j].direction = glm::normalize(target - o);
+                tMin[j] = 0;
+                tMax[j] = kInf;
+            }
+            comparePacket(t, rays, tMin, tMax, i % 5 == 4 ? 0x7Fu : 0xFFu, n);
+        }
+        INFO(n.lanes << " lanes, " << n.hits << " hits");
+        REQUIRE(n.hits > n.lanes / 4);
+    }
+}
+
 // The packet path's shadow cache (Tracer::traceFrom: each light's last opaque blocker, one
 // level per depth, asked first by its exact test). A floor under rows of opaque spheres
 // (shadow edges along every packet row), transparent spheres in front of them (a feeler
