@@ -931,7 +931,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // plane's smallest difference n − on where d > 0 (the largest on), its largest where
         // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
         // where d < 0. The packet's rays share their direction signs (joinPacket).
-        const int* neg = p.r[__builtin_ctz(lanes)].neg;
+        const RayData& lead = p.r[__builtin_ctz(lanes)]; // its signs are every ray's
         V on[3], of[3], inv[3], invFar[3];
         V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
@@ -939,8 +939,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = neg[a] ? hmin(on[a]) : hmax(on[a]);
-            iaOf[a] = neg[a] ? hmax(of[a]) : hmin(of[a]);
+            iaOn[a] = lead.neg(a) ? hmin(on[a]) : hmax(on[a]);
+            iaOf[a] = lead.neg(a) ? hmax(of[a]) : hmin(of[a]);
             iaInvLo[a] = hmin(inv[a]);
             iaInvHi[a] = hmax(inv[a]);
             iaFarLo[a] = hmin(invFar[a]);
