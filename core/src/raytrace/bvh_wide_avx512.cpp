@@ -55,11 +55,12 @@ struct L8 {
     static int le(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_LE_OQ)); }
     static void store(float* p, V v) { _mm256_store_ps(p, v); }
     static __m128 low(V v) { return _mm256_castps256_ps128(v); }
-    // The packets' transposed leaf tests (bvh_wide_impl.h's Lanes4): SSE's cmpngt, cmplt, cmpgt.
+    // The packets' transposed leaf tests (bvh_wide_impl.h's Lanes4): SSE's cmpngt, cmplt and cmpgt.
     static V abs(V a) { return _mm256_and_ps(a, _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff))); }
     static int ngt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_NGT_UQ)); }
-    static int lt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_LT_OQ)); }
-    static int gt(V a, V b) { return int(_mm256_cmp_ps_mask(a, b, _CMP_GT_OQ)); }
+    static int ltGt(V a, V b, V c, V d) { // a < b and c > d (false for NaN)
+        return int(_mm256_cmp_ps_mask(a, b, _CMP_LT_OQ) & _mm256_cmp_ps_mask(c, d, _CMP_GT_OQ));
+    }
 };
 
 } // namespace wb::rt::avx512

@@ -47,27 +47,36 @@
 
 namespace wb::rt {
 
-// Four lanes: SSE2 in bvh_wide.cpp, the same code VEX-encoded in bvh_wide_avx2.cpp; the
-// tag (0 and 1) keeps each file's instantiations its own.
-template <int Tag> struct Lanes4 {
-    static constexpr int W = 4;
+// SSE's arithmetic in four lanes, for Lanes4 and the single walk's leaf tests (each
+// instance's Tag a type of its own file or walk, so no instance compiled for AVX2 can stand
+// in for an SSE2 one at link time).
+template <class Tag> struct Sse4 {
     using V = __m128;
     static V set1(float x) { return _mm_set1_ps(x); }
-    static V load(const float* p) { return _mm_load_ps(p); }
+    static V add(V a, V b) { return _mm_add_ps(a, b); }
     static V sub(V a, V b) { return _mm_sub_ps(a, b); }
     static V mul(V a, V b) { return _mm_mul_ps(a, b); }
     static V min(V a, V b) { return _mm_min_ps(a, b); }
     static V max(V a, V b) { return _mm_max_ps(a, b); }
+    // a < b and c > d in each lane (false for NaN), as a movemask.
+    static int ltGt(V a, V b, V c, V d) {
+        return _mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(a, b), _mm_cmpgt_ps(c, d)));
+    }
+};
+
+// Four lanes: SSE2 in bvh_wide.cpp, the same code VEX-encoded in bvh_wide_avx2.cpp; the
+// tag (0 and 1) keeps each file's instantiations its own.
+template <int Tag> struct Lanes4 : Sse4<std::integral_constant<int, Tag>> {
+    static constexpr int W = 4;
+    using V = __m128;
+    static V load(const float* p) { return _mm_load_ps(p); }
     static int le(V a, V b) { return _mm_movemask_ps(_mm_cmple_ps(a, b)); }
     static void store(float* p, V v) { _mm_store_ps(p, v); }
     static __m128 low(V v) { return v; }
     // The packets' transposed leaf tests (one primitive against the lanes): the same
     // operations as the single ray's 4-wide leaf tests, lane by lane.
-    static V add(V a, V b) { return _mm_add_ps(a, b); }
     static V abs(V a) { return _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff))); }
     static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
-    static int lt(V a, V b) { return _mm_movemask_ps(_mm_cmplt_ps(a, b)); }   // false for NaN
-    static int gt(V a, V b) { return _mm_movemask_ps(_mm_cmpgt_ps(a, b)); }   // false for NaN
 };
 
 template <class L, bool Q> struct Bvh::WideWalk {
@@ -225,6 +234,51 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return b.wnodes8_;
     }
 
+    // Four lanes of SSE for the single walk's leaf tests, whatever L is.
+    using Quad = Sse4<WideWalk>;
+
+    // The triangle filter on the edges precomputed at the build (Möller–Trumbore's
+    // quantities), written once for the single walk (S = Quad: four triangles against one
+    // ray) and the packets' transposed leaves (S = L: one triangle against the packet's
+    // rays): the edge functions F1 = R·e2, F2 = R·(−e1), F0 = n·d − F1 − F2 with
+    // R = (v0 − o) × d, a lane rejected only when one is below −B and another above B, B
+    // their written-down error bound (bvh_wide_kinds.h) from the ray's parts x, y, z and the
+    // triangle's tp_. tri(a) gives the triangle values of the array a in the lanes (loads of
+    // four triangles, or one triangle's broadcast); o, d, x, y, z the ray values in the
+    // lanes. The same operations in the same order for every S: a lane's verdict is its
+    // ray's and triangle's, whichever walk asks. Returns the rejected lanes' mask.
+    template <class S, class Tri>
+    __attribute__((always_inline)) static int
+    triangleRejects(const Bvh& b, Tri&& tri, const typename S::V* o, const typename S::V* d,
+                    typename S::V x, typename S::V y, typename S::V z) {
+        using SV = typename S::V;
+        const SV ax = S::sub(tri(b.tv_[0].data()), o[0]);
+        const SV ay = S::sub(tri(b.tv_[1].data()), o[1]);
+        const SV az = S::sub(tri(b.tv_[2].data()), o[2]);
+        const SV rx = S::sub(S::mul(ay, d[2]), S::mul(az, d[1]));
+        const SV ry = S::sub(S::mul(az, d[0]), S::mul(ax, d[2]));
+        const SV rz = S::sub(S::mul(ax, d[1]), S::mul(ay, d[0]));
+        auto dot = [&](int e) __attribute__((always_inline)) {
+            return S::add(
+                S::add(S::mul(rx, tri(b.te_[e].data())), S::mul(ry, tri(b.te_[e + 1].data()))),
+                S::mul(rz, tri(b.te_[e + 2].data())));
+        };
+        // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for bit, and
+        // F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
+        const SV f1 = dot(3), f2 = dot(0);
+        const SV nd =
+            S::add(S::add(S::mul(tri(b.te_[6].data()), d[0]), S::mul(tri(b.te_[7].data()), d[1])),
+                   S::mul(tri(b.te_[8].data()), d[2]));
+        const SV f0 = S::sub(S::sub(nd, f1), f2);
+        const SV bound =
+            S::add(S::add(S::mul(x, tri(b.tp_[0].data())), S::mul(y, tri(b.tp_[1].data()))), z);
+        // Some F below −B and another above B. min/max drop a NaN operand, but no F is NaN
+        // or infinite where B is finite (bvh_wide_kinds.h: the ranges), and a NaN or
+        // infinite B rejects nothing (its compares are false).
+        const SV lo = S::min(S::min(f0, f1), f2), hi = S::max(S::max(f0, f1), f2);
+        return S::ltGt(lo, S::sub(S::set1(0.0f), bound), hi, bound);
+    }
+
     // Runs the leaf's float tests and calls visit(i, r) for every candidate i (an index into
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
@@ -269,43 +323,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
                 } else if (runKind == kRunTriangle) {
                     if (!r.mtReady) r.mtSetup();
-                    // Möller–Trumbore's quantities on the edges precomputed at the build: the
-                    // edge functions F1 = R·e2, F2 = R·(−e1), F0 = n·d − F1 − F2 with
-                    // R = (v0 − o) × d, rejected only when one is below −B and another above
-                    // B, B their written-down error bound (bvh_wide_kinds.h). Issue 21: the
-                    // watertight shear filter took ~122 instructions a run and a per-ray shear.
-                    const __m128 ax = _mm_sub_ps(_mm_loadu_ps(&b.tv_[0][i]), r.mo[0]);
-                    const __m128 ay = _mm_sub_ps(_mm_loadu_ps(&b.tv_[1][i]), r.mo[1]);
-                    const __m128 az = _mm_sub_ps(_mm_loadu_ps(&b.tv_[2][i]), r.mo[2]);
-                    const __m128 rx = _mm_sub_ps(_mm_mul_ps(ay, r.md[2]), _mm_mul_ps(az, r.md[1]));
-                    const __m128 ry = _mm_sub_ps(_mm_mul_ps(az, r.md[0]), _mm_mul_ps(ax, r.md[2]));
-                    const __m128 rz = _mm_sub_ps(_mm_mul_ps(ax, r.md[1]), _mm_mul_ps(ay, r.md[0]));
-                    auto dot = [&](int e) __attribute__((always_inline)) {
-                        return _mm_add_ps(
-                            _mm_add_ps(_mm_mul_ps(rx, _mm_loadu_ps(&b.te_[e][i])),
-                                       _mm_mul_ps(ry, _mm_loadu_ps(&b.te_[e + 1][i]))),
-                            _mm_mul_ps(rz, _mm_loadu_ps(&b.te_[e + 2][i])));
+                    // The filter on the edges precomputed at the build (triangleRejects), four
+                    // triangles against this ray. Issue 21: the watertight shear filter took
+                    // ~122 instructions a run and a per-ray shear.
+                    auto tri = [&](const float* a) __attribute__((always_inline)) {
+                        return _mm_loadu_ps(a + i);
                     };
-                    // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for
-                    // bit, and F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
-                    const __m128 f1 = dot(3), f2 = dot(0);
-                    const __m128 nd =
-                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_loadu_ps(&b.te_[6][i]), r.md[0]),
-                                              _mm_mul_ps(_mm_loadu_ps(&b.te_[7][i]), r.md[1])),
-                                   _mm_mul_ps(_mm_loadu_ps(&b.te_[8][i]), r.md[2]));
-                    const __m128 f0 = _mm_sub_ps(_mm_sub_ps(nd, f1), f2);
-                    const __m128 bound =
-                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(r.mx, _mm_loadu_ps(&b.tp_[0][i])),
-                                              _mm_mul_ps(r.my, _mm_loadu_ps(&b.tp_[1][i]))),
-                                   r.mz);
-                    // Some F below −B and another above B. min/max drop a NaN operand, but no
-                    // F is NaN or infinite where B is finite (bvh_wide_kinds.h: the ranges),
-                    // and a NaN or infinite B rejects nothing.
-                    const __m128 lo = _mm_min_ps(_mm_min_ps(f0, f1), f2);
-                    const __m128 hi = _mm_max_ps(_mm_max_ps(f0, f1), f2);
-                    mask = 0xF & ~_mm_movemask_ps(_mm_and_ps(
-                                     _mm_cmplt_ps(lo, _mm_sub_ps(_mm_setzero_ps(), bound)),
-                                     _mm_cmpgt_ps(hi, bound)));
+                    mask = 0xF & ~triangleRejects<Quad>(b, tri, r.mo, r.md, r.mx, r.my, r.mz);
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
@@ -781,33 +805,17 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const V rm = L::add(L::set1(b.sr_[i]), L::add(L::load(p.som), L::set1(b.sm_[i])));
         return unsigned(L::ngt(ll, L::mul(rm, rm)));
     }
-    // Triangle i against the lanes of triLanes: visitLeaf's filter on the precomputed edges
-    // with ray j's float origin, direction and bound parts in lane j (the same operations in
-    // the same order: ray j's single-walk verdict).
+    // Triangle i against the lanes of triLanes: triangleRejects with ray j's float origin,
+    // direction and bound parts in lane j (ray j's single-walk verdict: the same function).
     __attribute__((always_inline)) static unsigned triangleLanesTest(const Bvh& b, const Packet& p,
                                                                      std::uint32_t i) {
-        const V d0 = L::load(p.tmd[0]), d1 = L::load(p.tmd[1]), d2 = L::load(p.tmd[2]);
-        const V ax = L::sub(L::set1(b.tv_[0][i]), L::load(p.tmo[0]));
-        const V ay = L::sub(L::set1(b.tv_[1][i]), L::load(p.tmo[1]));
-        const V az = L::sub(L::set1(b.tv_[2][i]), L::load(p.tmo[2]));
-        const V rx = L::sub(L::mul(ay, d2), L::mul(az, d1));
-        const V ry = L::sub(L::mul(az, d0), L::mul(ax, d2));
-        const V rz = L::sub(L::mul(ax, d1), L::mul(ay, d0));
-        auto dot = [&](int e) __attribute__((always_inline)) {
-            return L::add(
-                L::add(L::mul(rx, L::set1(b.te_[e][i])), L::mul(ry, L::set1(b.te_[e + 1][i]))),
-                L::mul(rz, L::set1(b.te_[e + 2][i])));
+        const V o[3] = {L::load(p.tmo[0]), L::load(p.tmo[1]), L::load(p.tmo[2])};
+        const V d[3] = {L::load(p.tmd[0]), L::load(p.tmd[1]), L::load(p.tmd[2])};
+        auto tri = [&](const float* a) __attribute__((always_inline)) {
+            return L::set1(a[i]);
         };
-        const V f1 = dot(3), f2 = dot(0);
-        const V nd =
-            L::add(L::add(L::mul(L::set1(b.te_[6][i]), d0), L::mul(L::set1(b.te_[7][i]), d1)),
-                   L::mul(L::set1(b.te_[8][i]), d2));
-        const V f0 = L::sub(L::sub(nd, f1), f2);
-        const V bound = L::add(L::add(L::mul(L::load(p.tmx), L::set1(b.tp_[0][i])),
-                                      L::mul(L::load(p.tmy), L::set1(b.tp_[1][i]))),
-                               L::load(p.tmz));
-        const V lo = L::min(L::min(f0, f1), f2), hi = L::max(L::max(f0, f1), f2);
-        const int reject = L::lt(lo, L::sub(L::set1(0.0f), bound)) & L::gt(hi, bound);
+        const int reject =
+            triangleRejects<L>(b, tri, o, d, L::load(p.tmx), L::load(p.tmy), L::load(p.tmz));
         return ~unsigned(reject) & ((1u << W) - 1);
     }
 
