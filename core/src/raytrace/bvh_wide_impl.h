@@ -382,13 +382,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         _mm_store_ps(of, _mm_sub_ps(fo, sgnEps));
     }
 
-    // The range check of two doubles, branch-free: bit i set when lane i is 0 or
+    // The range check of two doubles, branch-free: bit i set when lane i is 0 (if kZero) or
     // 1e-30 <= |v| <= 1e30 (false for NaN).
-    __attribute__((always_inline)) static int inRange(__m128d v) {
+    template <bool kZero = true> __attribute__((always_inline)) static int inRange(__m128d v) {
         const __m128d av = _mm_andnot_pd(_mm_set1_pd(-0.0), v);
-        return _mm_movemask_pd(_mm_or_pd(
-            _mm_cmpeq_pd(av, _mm_setzero_pd()),
-            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)))));
+        const __m128d in =
+            _mm_and_pd(_mm_cmpge_pd(av, _mm_set1_pd(1e-30)), _mm_cmple_pd(av, _mm_set1_pd(1e30)));
+        if constexpr (kZero)
+            return _mm_movemask_pd(_mm_or_pd(_mm_cmpeq_pd(av, _mm_setzero_pd()), in));
+        return _mm_movemask_pd(in);
     }
 
     // A ray's RayData fields that initRay and the packets' joinPacket both set: the plane
@@ -839,13 +841,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const int j = __builtin_ctz(m);
             const Ray& ray = rays[j];
             const glm::dvec3 o = ray.origin, d = ray.direction;
-            if (d.x == 0 || d.y == 0 || d.z == 0) continue;
             const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
                           dz = _mm_load_sd(&ray.direction[2]);
             const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
             if (signs >= 0 && sg != signs) continue;
             const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-            if (!(om < 1e30 && inRange(dxy) == 3 && (inRange(dz) & 1))) continue;
+            // initRay's range check with a zero direction component refused too.
+            if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
             signs = sg;
             joined |= 1u << j;
             setRayData(p.r[j], sg, true, ray);
