@@ -358,16 +358,23 @@ struct CeilingLoops {
             const std::size_t at = k * kCeilingBlock, len = std::min(kCeilingBlock, n - at);
             partitionBlock(a.data() + at, b.data() + at, len);
         };
-        for (std::size_t p = 0; p < passes; ++p) {
-            if (threads == 1) {
-                for (std::size_t k = 0; k < blocks; ++k)
-                    pass(k);
-            } else {
-                tbb::task_arena(threads).execute(
-                    [&] { tbb::parallel_for(std::size_t(0), blocks, pass); });
+        // One arena for all passes: made per pass, its start-up alone (not memory) held the
+        // small rows' 2-thread loop below 1.
+        auto passes1 = [&] {
+            for (std::size_t p = 0; p < passes; ++p) {
+                if (threads == 1) {
+                    for (std::size_t k = 0; k < blocks; ++k)
+                        pass(k);
+                } else {
+                    tbb::parallel_for(std::size_t(0), blocks, pass);
+                }
+                a.swap(b);
             }
-            a.swap(b);
-        }
+        };
+        if (threads == 1)
+            passes1();
+        else
+            tbb::task_arena(threads).execute(passes1);
         sink += double(a[n / 2].lo[0]);
     }
     // Sizes both loops to about half the 1-thread build's CPU time `target`.
@@ -418,10 +425,9 @@ static std::string buildRateSection(bool quick) {
        << " threads: the parallel build (nodes over 16,384 primitives binned and partitioned "
           "in blocks by TBB tasks, subtrees over 2048 primitives split into TBB tasks), "
           "wall time. "
-          "Median of 5 builds each, alternated. Ceilings (issue 21): beside each "
-       << threads
-       << "-thread build, alternately just before and just after it, two loops with no serial "
-          "part run the same way (1 thread: CPU time; "
+          "Median of 5 builds each, alternated. Ceilings (issue 21): right after a row's "
+          "builds (run between them, they moved the builds' own times), two loops with no "
+          "serial part run the same way (1 thread: CPU time; "
        << threads
        << " threads: wall time in a task arena of that many threads, as the build): 64 blocks "
           "of multiply-add chains in registers (compute), and partition-like passes over an "
@@ -429,8 +435,7 @@ static std::string buildRateSection(bool quick) {
           "of 4096 read once and written to both ends of its place in a second array); each "
           "about half a 1-thread build long. A ceiling is that loop's speed-up, median of 5: "
           "what this machine gave two threads at that minute. Speed-up over a ceiling: the "
-          "median over the 5 rounds of each round's build speed-up over that round's "
-          "ceiling. SAH cost: BvhStats::sahCost of the binary tree "
+          "build's speed-up over that ceiling. SAH cost: BvhStats::sahCost of the binary tree "
           "as built (root area 1; the same tree for any thread count; since issue 21 the wide "
           "build stops at the subtrees the collapse makes one leaf, so binary nodes and SAH "
           "cost are of that shorter tree: the wide tree is the same, see --build-embree).\n\n"
@@ -445,16 +450,8 @@ static std::string buildRateSection(bool quick) {
           "nodes | depth | SAH cost |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     auto row = [&](const std::string& name, const std::vector<std::unique_ptr<Primitive>>& prims) {
-        std::vector<double> t1, tn, tc, tp, cc, cm, fc, fm;
+        std::vector<double> t1, tn, tc, tp, cc, cm;
         BvhStats st;
-        CeilingLoops loops(prims.size());
-        {
-            BvhOptions one;
-            one.buildThreads = 1;
-            const double c0 = threadCpu();
-            Bvh warm(prims, one); // sizes the loops (and the build's kept mappings are made)
-            loops.calibrate(threadCpu() - c0);
-        }
         for (int r = 0; r < 5; ++r) {
             BvhOptions one;
             one.buildThreads = 1;
@@ -466,11 +463,6 @@ static std::string buildRateSection(bool quick) {
             const double c1 = threadCpu();
             Bvh b2(prims, two);
             tc.push_back(threadCpu() - c1);
-            // One ceiling just before the build, the other just after, swapped each round.
-            const bool computeFirst = r % 2 == 0;
-            (computeFirst ? cc : cm)
-                .push_back(computeFirst ? loops.computeSpeedUp(threads)
-                                        : loops.memorySpeedUp(threads));
             BvhOptions all;
             all.buildThreads = threads;
             const double p0 = processCpu();
@@ -478,11 +470,20 @@ static std::string buildRateSection(bool quick) {
             tp.push_back(processCpu() - p0);
             tn.push_back(bn.stats().buildSeconds);
             st = bn.stats();
-            (computeFirst ? cm : cc)
-                .push_back(computeFirst ? loops.memorySpeedUp(threads)
-                                        : loops.computeSpeedUp(threads));
-            fc.push_back(t1.back() / tn.back() / cc.back());
-            fm.push_back(t1.back() / tn.back() / cm.back());
+        }
+        // The ceilings right after the builds, not between them: their arrays and arenas
+        // beside each build changed what the build met (glibc's mappings, a woken worker) and
+        // moved its own times (balls 6's 1-thread build 150 -> 300-420 ms on a quiet machine).
+        CeilingLoops loops(prims.size());
+        loops.calibrate(median(t1));
+        for (int r = 0; r < 5; ++r) {
+            const bool computeFirst = r % 2 == 0;
+            for (int k = 0; k < 2; ++k) {
+                if ((k == 0) == computeFirst)
+                    cc.push_back(loops.computeSpeedUp(threads));
+                else
+                    cm.push_back(loops.memorySpeedUp(threads));
+            }
         }
         if (loops.sink == 12345.678) std::puts(""); // keep the loops observable
         const double m1 = median(t1), mn = median(tn), n = double(st.primitives);
@@ -491,8 +492,8 @@ static std::string buildRateSection(bool quick) {
            << fmt("%.1f", median(tc) * 1e3) << " | " << fmt("%.1f", mn * 1e3) << " | "
            << fmt("%.2f", n / mn / 1e6) << " | " << fmt("%.2f", m1 / mn) << " | "
            << fmt("%.2f", threads * m1 / median(tp)) << " | " << fmt("%.2f", median(cc)) << " | "
-           << fmt("%.2f", median(cm)) << " | " << fmt("%.3f", median(fc)) << " | "
-           << fmt("%.3f", median(fm)) << " | " << st.nodes << " | " << st.wideNodes << " | "
+           << fmt("%.2f", median(cm)) << " | " << fmt("%.3f", m1 / mn / median(cc)) << " | "
+           << fmt("%.3f", m1 / mn / median(cm)) << " | " << st.nodes << " | " << st.wideNodes << " | "
            << st.maxDepth << " | " << fmt("%.4f", st.sahCost) << " |\n";
     };
     for (int sf : {5, 6}) {
