@@ -713,11 +713,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         alignas(32) float tmo[3][W], tmd[3][W], tmx[W], tmy[W], tmz[W];
         unsigned sphLanes = 0, triLanes = 0;
         unsigned filled = 0; // lanes whose RayData registers are set (fillLane)
-        // The rays and their direction signs: a lane's RayData fields besides the registers
-        // (setRayData) are set when first read (rayLane), unless joinPacket set them.
-        const Ray* rays = nullptr;
-        int signs = 0;
-        unsigned raySet = 0;
         bool sphSet = false, triSet = false;
     };
     // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
@@ -780,7 +775,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
     static void triangleLanes(Packet& p, unsigned lanes) {
         const int first = __builtin_ctz(lanes);
         for (int j = 0; j < W; ++j) {
-            RayData& r = rayLane(p, (lanes >> j) & 1 ? j : first);
+            RayData& r = p.r[(lanes >> j) & 1 ? j : first];
             if (!r.mtReady) r.mtSetup();
             for (int a = 0; a < 3; ++a) {
                 p.tmo[a][j] = lane0(r.mo[a]);
@@ -836,10 +831,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
     // float values are floatRay's operations, written out four rays at a time (one call per
     // ray would cost the division per ray this saves).
-    // kLazy: each ray's RayData fields besides the registers (setRayData) left to rayLane (eye
-    // rays: 77% of the mesh's meet no leaf; callgrind, mesh eye packets −2.7%); else set
-    // here (shadow rays all start in a leaf's box: +1.9% when left to rayLane).
-    template <bool kLazy>
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
         alignas(16) double omax[W], tm[W];
         double(&oo)[3][W] = p.oo;
@@ -859,7 +850,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
             signs = sg;
             joined |= 1u << j;
-            if constexpr (!kLazy) setRayData(p.r[j], sg, true, ray);
+            setRayData(p.r[j], sg, true, ray);
             const double* op = &o.x;
             const double* dp = &d.x;
             for (int a = 0; a < 3; ++a) {
@@ -882,10 +873,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             omax[j] = omax[first];
             tm[j] = tm[first];
         }
-        p.off = kOffsets.v[signs];
-        p.rays = rays;
-        p.signs = signs;
-        p.raySet = kLazy ? 0 : joined;
+        p.off = p.r[first].off;
         auto toFloat = [](const double* x) { // four doubles rounded to float, as _mm_cvtpd_ps
             return _mm_movelh_ps(_mm_cvtpd_ps(_mm_load_pd(x)), _mm_cvtpd_ps(_mm_load_pd(x + 2)));
         };
@@ -908,20 +896,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         return joined;
     }
-    // Lane j's RayData with the fields initRay sets besides the registers (setRayData), set
-    // at the first call.
-    static RayData& rayLane(Packet& p, int j) {
-        if (!((p.raySet >> j) & 1)) {
-            setRayData(p.r[j], p.signs, true, p.rays[j]);
-            p.raySet |= 1u << j;
-        }
-        return p.r[j];
-    }
     // Ray j's RayData registers as initRay sets them, from the packet's lanes (before the
     // ray's own leaf tests).
     static void fillLane(Packet& p, int j) {
         if ((p.filled >> j) & 1) return;
-        RayData& r = rayLane(p, j);
+        RayData& r = p.r[j];
         for (int a = 0; a < 3; ++a) {
             r.on[a] = L::set1(p.on[a][j]);
             r.of[a] = L::set1(p.of[a][j]);
@@ -962,6 +941,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // plane's smallest difference n − on where d > 0 (the largest on), its largest where
         // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
         // where d < 0. The packet's rays share their direction signs (joinPacket).
+        const RayData& lead = p.r[__builtin_ctz(lanes)]; // its signs are every ray's
         V on[3], of[3], inv[3], invFar[3];
         V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
@@ -969,8 +949,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             of[a] = L::load(p.of[a]);
             inv[a] = L::load(p.inv[a]);
             invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = (p.signs >> a) & 1 ? hmin(on[a]) : hmax(on[a]);
-            iaOf[a] = (p.signs >> a) & 1 ? hmax(of[a]) : hmin(of[a]);
+            iaOn[a] = lead.neg(a) ? hmin(on[a]) : hmax(on[a]);
+            iaOf[a] = lead.neg(a) ? hmax(of[a]) : hmin(of[a]);
             iaInvLo[a] = hmin(inv[a]);
             iaInvHi[a] = hmax(inv[a]);
             iaFarLo[a] = hmin(invFar[a]);
@@ -1024,7 +1004,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                                                     : triangleLanesTest(b, p, i));
                         for (; cand; cand &= cand - 1) {
                             const int j = __builtin_ctz(cand);
-                            if (!leaf(j, i, &rayLane(p, j)) && kAnyHit) {
+                            if (!leaf(j, i, &p.r[j]) && kAnyHit) {
                                 done(j);
                                 mt &= ~(1u << j);
                             }
@@ -1194,7 +1174,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const Primitive* best[W];
         std::uint8_t bestKind[W];
         std::uint32_t bestIndex[W];
-        const unsigned packet = joinPacket<true>(p, rays, tMin, lanes);
+        const unsigned packet = joinPacket(p, rays, tMin, lanes);
         for (unsigned m = lanes & ~packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
@@ -1257,7 +1237,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     break;
                 }
         }
-        const unsigned packet = joinPacket<false>(p, rays, tMin, lanes & ~blocked);
+        const unsigned packet = joinPacket(p, rays, tMin, lanes & ~blocked);
         for (unsigned m = lanes & ~blocked & ~packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
