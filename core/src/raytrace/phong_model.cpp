@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <typeinfo>
 
 namespace wb::rt {
 
@@ -58,6 +59,10 @@ Color PhongModel::direct(const Scene& scene, const Ray& view, const Hit& hit, co
 
 using namespace sse2lanes;
 
+bool PhongModel::isExactly(const ShadingModel& model) {
+    return typeid(model) == typeid(PhongModel);
+}
+
 bool PhongModel::lanesApply(const Scene& scene) {
     for (const Light& l : scene.lights)
         if (l.kind != Light::Kind::Point || l.spotCutoff != 180.0) return false;
@@ -65,7 +70,7 @@ bool PhongModel::lanesApply(const Scene& scene) {
 }
 
 void PhongModel::directLanes(const Scene& scene, const Ray* views, const Hit* hits, unsigned lanes,
-                             const double* transmittance, Color* out) const {
+                             const double* transmittance, Color* out) {
     // Lanes 2i+1 (low half) and 2i (high half): _mm_set_pd takes the high lane first.
     for (int i = 0; i + 1 < kMaxPacket; i += 2) {
         const unsigned pairMask = (lanes >> i) & 3u;

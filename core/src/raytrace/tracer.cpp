@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <typeinfo>
 
 namespace wb::rt {
 
@@ -317,7 +316,7 @@ using namespace sse2lanes;
 void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts& counts,
                              const Primitive** lastBlockers, Color* out) const {
     // Only the phong model itself (a subclass may shade otherwise) has lanes.
-    const bool phong = typeid(model_) == typeid(PhongModel) && PhongModel::lanesApply(scene_);
+    const bool phong = PhongModel::isExactly(model_) && PhongModel::lanesApply(scene_);
     unsigned lanes = 0;
     for (int j = 0; j < n; ++j) {
         const Hit& h = hits[j];
@@ -394,8 +393,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         }
     }
     Color direct[kMaxPacket];
-    static_cast<const PhongModel&>(model_).directLanes(scene_, rays, hits, lanes,
-                                                       transmittance.data(), direct);
+    PhongModel::directLanes(scene_, rays, hits, lanes, transmittance.data(), direct);
     for (int j = 0; j < n; ++j) {
         if (!((lanes >> j) & 1u)) continue;
         long budget = settings_.maxRaysPerSample;

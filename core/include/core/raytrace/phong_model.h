@@ -24,10 +24,17 @@ class PhongModel : public ShadingModel {
     // by their transmittances alone, transmittance[li * kMaxPacket + j] for scene light li;
     // every scene light must be a point light without a spot cone and no hit's material
     // textured (lanesApply() says whether a scene qualifies). Other lanes are not read.
-    void directLanes(const Scene& scene, const Ray* views, const Hit* hits, unsigned lanes,
-                     const double* transmittance, Color* out) const;
+    // Static (the model has no state): a call through a PhongModel reference in the tracer
+    // made UBSan's vptr check refer to this class's type info (see isExactly).
+    static void directLanes(const Scene& scene, const Ray* views, const Hit* hits, unsigned lanes,
+                            const double* transmittance, Color* out);
     // Whether directLanes() may stand in for direct() on this scene's untextured hits.
     static bool lanesApply(const Scene& scene);
+    // Whether `model` is a PhongModel itself (a subclass may shade otherwise). Out of line:
+    // a typeid(PhongModel) in the tracer put a reference to this class's type info into the
+    // tracer's object, which a student's exercise object loaded by dlopen (the handout
+    // test's cheats, in the sanitizer build) could not resolve.
+    static bool isExactly(const ShadingModel& model);
 };
 
 } // namespace wb::rt
