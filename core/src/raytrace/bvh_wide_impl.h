@@ -721,26 +721,24 @@ template <class L, bool Q> struct Bvh::WideWalk {
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
-    static V hmin(V a) {
+    template <bool kMax> static V op(V x, V y) {
+        if constexpr (kMax)
+            return L::max(x, y);
+        else
+            return L::min(x, y);
+    }
+    template <bool kMax> static V reduceLanes(V a) {
         if constexpr (W == 8) {
-            a = _mm256_min_ps(a, _mm256_permute2f128_ps(a, a, 1));
-            a = _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
-            return _mm256_min_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
+            a = op<kMax>(a, _mm256_permute2f128_ps(a, a, 1));
+            a = op<kMax>(a, _mm256_shuffle_ps(a, a, 0x4E));
+            return op<kMax>(a, _mm256_shuffle_ps(a, a, 0xB1));
         } else {
-            a = _mm_min_ps(a, _mm_shuffle_ps(a, a, 0x4E));
-            return _mm_min_ps(a, _mm_shuffle_ps(a, a, 0xB1));
+            a = op<kMax>(a, _mm_shuffle_ps(a, a, 0x4E));
+            return op<kMax>(a, _mm_shuffle_ps(a, a, 0xB1));
         }
     }
-    static V hmax(V a) {
-        if constexpr (W == 8) {
-            a = _mm256_max_ps(a, _mm256_permute2f128_ps(a, a, 1));
-            a = _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0x4E));
-            return _mm256_max_ps(a, _mm256_shuffle_ps(a, a, 0xB1));
-        } else {
-            a = _mm_max_ps(a, _mm_shuffle_ps(a, a, 0x4E));
-            return _mm_max_ps(a, _mm_shuffle_ps(a, a, 0xB1));
-        }
-    }
+    static V hmin(V a) { return reduceLanes<false>(a); }
+    static V hmax(V a) { return reduceLanes<true>(a); }
 
     static float lane0(__m128 v) { return _mm_cvtss_f32(v); }
     // The transposed tests' values of the rays of `lanes` (the other lanes keep the first
@@ -763,8 +761,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 ol = a == 0 ? _mm_and_pd(o, absMask) : _mm_add_pd(ol, _mm_and_pd(o, absMask));
                 dd = a == 0 ? _mm_mul_pd(d, d) : _mm_add_pd(dd, _mm_mul_pd(d, d));
             }
-            const __m128 om =
-                _mm_mul_ps(_mm_cvtpd_ps(ol), _mm_set1_ps(bvh_detail::kSphereMargin));
+            const __m128 om = _mm_mul_ps(_mm_cvtpd_ps(ol), _mm_set1_ps(bvh_detail::kSphereMargin));
             _mm_storel_pi(reinterpret_cast<__m64*>(&p.som[j]), om);
             const __m128d dev = _mm_and_pd(_mm_sub_pd(dd, _mm_set1_pd(1)), absMask);
             unit |= unsigned(_mm_movemask_pd(_mm_cmplt_pd(dev, _mm_set1_pd(1e-6)))) << j;
