@@ -364,18 +364,16 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const V2 toLight = select(_mm_cmpgt_pd(d.v, _mm_setzero_pd()), v / d, normal);
             const D2 c = dot(toLight, normal);
             const D2 start = pair(eps[a], eps[b]) / maxOf(c, splat(1e-3)); // feelerStartAt
-            _mm_storel_pd(&dist[i + 1], d.v);
-            _mm_storeh_pd(&dist[i], d.v);
-            _mm_storel_pd(&cosL[i + 1], c.v);
-            _mm_storeh_pd(&cosL[i], c.v);
-            _mm_storel_pd(&t0[i + 1], start.v);
-            _mm_storeh_pd(&t0[i], start.v);
-            _mm_storel_pd(&dx[i + 1], toLight.x.v);
-            _mm_storeh_pd(&dx[i], toLight.x.v);
-            _mm_storel_pd(&dy[i + 1], toLight.y.v);
-            _mm_storeh_pd(&dy[i], toLight.y.v);
-            _mm_storel_pd(&dz[i + 1], toLight.z.v);
-            _mm_storeh_pd(&dz[i], toLight.z.v);
+            auto store = [i](double* to, __m128d x) { // back to lanes i (high), i + 1 (low)
+                _mm_storel_pd(&to[i + 1], x);
+                _mm_storeh_pd(&to[i], x);
+            };
+            store(dist, d.v);
+            store(cosL, c.v);
+            store(t0, start.v);
+            store(dx, toLight.x.v);
+            store(dy, toLight.y.v);
+            store(dz, toLight.z.v);
         }
         const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
         for (int j = 0; j < n; ++j) {
