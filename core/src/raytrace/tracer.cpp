@@ -66,6 +66,17 @@ namespace {
 double feelerStartAt(double eps, const glm::dvec3& n, const glm::dvec3& dir) {
     return eps / std::max(glm::dot(dir, n), 1e-3);
 }
+
+// Per hit, not per light (sampleLightsFrom and traceFromPacket): the feelers' start distance
+// at normal incidence and the primitive they must not count (a virtual call).
+struct FeelerBase {
+    double eps;            // |offsetOrigin − point|, feelerStartAt's eps
+    const Primitive* self; // the hit's primitive when flat (a feeler cannot meet it again)
+};
+FeelerBase feelerBase(const Hit& hit, const glm::dvec3& offsetOrigin) {
+    return {glm::length(offsetOrigin - hit.point),
+            hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr};
+}
 } // namespace
 
 double feelerStart(const glm::dvec3& p, const glm::dvec3& n, const glm::dvec3& dir) {
@@ -110,10 +121,7 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                               const Primitive** lastBlockers) const {
     out.clear();
     out.reserve(scene_.lights.size());
-    // Per hit, not per light: the feelers' start distance at normal incidence and the
-    // primitive they must not count (a virtual call).
-    const double eps = glm::length(offsetOrigin - hit.point);
-    const Primitive* self = hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr;
+    const auto [eps, self] = feelerBase(hit, offsetOrigin);
     for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& l = scene_.lights[li];
         LightSample s;
@@ -334,15 +342,12 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     thread_local std::vector<double> transmittance;
     transmittance.resize(nLights * kMaxPacket);
     glm::dvec3 offsetOrigin[kMaxPacket];
-    double eps[kMaxPacket];
-    const Primitive* self[kMaxPacket];
+    FeelerBase base[kMaxPacket];
     for (int j = 0; j < n; ++j) {
         if (!((lanes >> j) & 1u)) continue;
         ++counts.primary;
         offsetOrigin[j] = offsetRayOrigin(hits[j].point, hits[j].normal);
-        // sampleLightsFrom's per-hit values.
-        eps[j] = glm::length(offsetOrigin[j] - hits[j].point);
-        self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
+        base[j] = feelerBase(hits[j], offsetOrigin[j]); // as sampleLightsFrom
     }
     // sampleLightsFrom's samples, light by light (each light's feelers in row order, as
     // its shadow cache entry sees them from traceFrom): the unit vector to the point light,
@@ -363,7 +368,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             // The light exactly at the point: the normal.
             const V2 toLight = select(_mm_cmpgt_pd(d.v, _mm_setzero_pd()), v / d, normal);
             const D2 c = dot(toLight, normal);
-            const D2 start = pair(eps[a], eps[b]) / maxOf(c, splat(1e-3)); // feelerStartAt
+            const D2 start = pair(base[a].eps, base[b].eps) / maxOf(c, splat(1e-3)); // feelerStartAt
             auto store = [i](double* to, __m128d x) { // back to lanes i (high), i + 1 (low)
                 _mm_storel_pd(&to[i + 1], x);
                 _mm_storeh_pd(&to[i], x);
@@ -386,7 +391,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             } else {
                 ++counts.shadow;
                 tr = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
-                                  self[j], entry);
+                                  base[j].self, entry);
             }
         }
     }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-# Splits a callgrind profile of shots/frame_driver by stage (self instructions, M).
+# Splits a callgrind profile of frame_driver (this folder) by stage (self instructions, M).
 import re, subprocess, sys
 stages = [
     ("shadow feelers", r"forEachBlocker|::occluded\(|feelerTransmittance|cachedFeeler"),

@@ -1,6 +1,9 @@
-// Scratch driver (not built by CMake): one frame of a bench scene, packets or single rays.
-// frame_driver "balls 4" p|s [size] -> prints the image's FNV hash and the time.
-#include "../tests/bench/bench_scenes.h"
+// Profiling driver (not built by CMake; build_driver.sh builds it against build/core/libcore.a):
+// one frame of a bench scene, packets or single rays, for callgrind and stage_split.py.
+// frame_driver "balls 4" p|s [size] [repeats] -> prints the image's FNV hash and the time.
+// The 9k OBJ is the one raytrace_scale_bench writes (build-bench/bench-out/mesh.obj); another
+// path can be given in WB_BENCH_OBJ.
+#include "../../../tests/bench/bench_scenes.h"
 #include "core/raytrace/bvh.h"
 #include "core/raytrace/parallel_render.h"
 #include "core/raytrace/phong_model.h"
@@ -14,7 +17,8 @@ int main(int argc, char** argv) {
     const bool packets = argv[2][0] == 'p';
     const int size = argc > 3 ? std::atoi(argv[3]) : 512;
     const int reps = argc > 4 ? std::atoi(argv[4]) : 1;
-    for (const auto& bs : benchScenes("/work/wt/rtframe4/build/bench-out/mesh.obj")) {
+    const char* obj = std::getenv("WB_BENCH_OBJ");
+    for (const auto& bs : benchScenes(obj ? obj : "build-bench/bench-out/mesh.obj")) {
         if (bs.name != name) continue;
         SceneFile sf = bs.make();
         auto bvh = makeAggregate(*sf.scene);
