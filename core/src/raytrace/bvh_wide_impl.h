@@ -675,14 +675,17 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
                 while (true) {
                     if (sp == 0) return;
-                    const Entry e = stack[--sp];
+                    // The entry's fields read in place: a copy of the whole Entry went
+                    // through the stack frame (a 12-byte store, then t loaded back from it).
+                    const Entry& e = stack[--sp];
                     if (e.t > flim) continue;
-                    if (e.count > 0) {
-                        if (!visitLeaf<kLeafFloat>(b, r, e.child, e.count, flim, leaf)) return;
+                    const std::uint32_t child = e.child, count = e.count;
+                    if (count > 0) {
+                        if (!visitLeaf<kLeafFloat>(b, r, child, count, flim, leaf)) return;
                         flim = limitF();
                         continue;
                     }
-                    cur = e.child;
+                    cur = child;
                     break;
                 }
             }
