@@ -570,6 +570,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         int sp = 0;
         std::uint32_t cur = 0;
         while (true) {
+            // The ray's node-test values are read from RayData in memory at every node (an
+            // empty asm that "may change" them): GCC had kept them in registers and, as the
+            // leaves' exact tests are calls, reloaded all twelve and the six plane offsets
+            // (~30 instructions) on every way back into this loop, which costs more than their
+            // memory operands in the node test (issue 21, eighth session: callgrind, eye rays,
+            // balls 4 1098.8 -> 1078.2, mesh 477.0 -> 467.0, jacks 4 1378.8 -> 1339.8
+            // instructions a ray). The any-hit walk's node test reads them from memory already.
+            if constexpr (kFloatOnly && !kAnyHit)
+                asm("" : "+m"(r.on), "+m"(r.of), "+m"(r.inv), "+m"(r.invFar), "+m"(r.tMin));
             const Node& nd = nodes[cur];
             // The links (the fourth cache line of an 8-wide node) are read only after the
             // box test: fetch them alongside the boxes.
