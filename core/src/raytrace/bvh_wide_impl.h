@@ -282,7 +282,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // Runs the leaf's float tests and calls visit(i, r) for every candidate i (an index into
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
-    template <class Visit>
+    // kFloatOnly: r.useFloat is known to be true (the float-only walks), so not tested.
+    template <bool kFloatOnly = false, class Visit>
     // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
     // no change with SSE2 (driver, alternated medians).
     __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
@@ -294,7 +295,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const std::uint32_t rEnd = run + b.run_[run];
             const std::uint8_t runKind = runOf(b.kind_[run]);
             if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
-            if (runKind == kRunSphere ? !r.unitD : !r.useFloat) {
+            if (runKind == kRunSphere ? !r.unitD : !(kFloatOnly || r.useFloat)) {
                 for (std::uint32_t i = run; i < rEnd; ++i)
                     if (!visit(i, &r)) return false;
                 run = rEnd;
@@ -543,6 +544,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return;
         }
         const std::vector<Node>& nodes = nodesOf(b);
+        // The leaves' useFloat test left out only in the any-hit walks: in the nearest-hit
+        // walk GCC then laid the loop out worse (callgrind, eye rays: mesh 481 -> 487, balls
+        // 4 1108 -> 1120 instructions a ray; issue 21, eighth session).
+        constexpr bool kLeafFloat = kAnyHit && kFloatOnly;
         // The current limit: entries farther than the nearest hit (widened) are dropped.
         auto limitF = [&]() {
             const double lim = tMax * kFarScale;
@@ -565,6 +570,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
         int sp = 0;
         std::uint32_t cur = 0;
         while (true) {
+            // The ray's node-test values are read from RayData in memory at every node (an
+            // empty asm that "may change" them): GCC had kept them in registers and, as the
+            // leaves' exact tests are calls, reloaded all twelve and the six plane offsets
+            // (~30 instructions) on every way back into this loop, which costs more than their
+            // memory operands in the node test (issue 21, eighth session: callgrind, eye rays,
+            // balls 4 1098.8 -> 1078.2, mesh 477.0 -> 467.0, jacks 4 1378.8 -> 1339.8
+            // instructions a ray). The any-hit walk's node test reads them from memory already.
+            if constexpr (kFloatOnly && !kAnyHit)
+                asm("" : "+m"(r.on), "+m"(r.of), "+m"(r.inv), "+m"(r.invFar), "+m"(r.tMin));
             const Node& nd = nodes[cur];
             // The links (the fourth cache line of an 8-wide node) are read only after the
             // box test: fetch them alongside the boxes.
@@ -615,7 +629,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const int c = __builtin_ctz(unsigned(mask));
                     mask &= mask - 1;
                     if (nd.count[c] > 0) {
-                        if (!visitLeaf(b, r, nd.child[c], nd.count[c], flim, leaf)) return;
+                        if (!visitLeaf<kLeafFloat>(b, r, nd.child[c], nd.count[c], flim, leaf))
+                            return;
                     } else {
                         if (haveNext) stack[sp++] = {cur, 0, 0.0f};
                         cur = nd.child[c];
@@ -663,19 +678,23 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf(b, r, nd.child[next], nd.count[next], flim, leaf)) return;
+                    if (!visitLeaf<kLeafFloat>(b, r, nd.child[next], nd.count[next], flim, leaf))
+                        return;
                     flim = limitF();
                 }
                 while (true) {
                     if (sp == 0) return;
-                    const Entry e = stack[--sp];
+                    // The entry's fields read in place: a copy of the whole Entry went
+                    // through the stack frame (a 12-byte store, then t loaded back from it).
+                    const Entry& e = stack[--sp];
                     if (e.t > flim) continue;
-                    if (e.count > 0) {
-                        if (!visitLeaf(b, r, e.child, e.count, flim, leaf)) return;
+                    const std::uint32_t child = e.child, count = e.count;
+                    if (count > 0) {
+                        if (!visitLeaf<kLeafFloat>(b, r, child, count, flim, leaf)) return;
                         flim = limitF();
                         continue;
                     }
-                    cur = e.child;
+                    cur = child;
                     break;
                 }
             }
@@ -1348,12 +1367,30 @@ template <class L, bool Q> struct Bvh::WideWalk {
                          const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
             if (p != skip && p->occluded(ray, tMin, tMax)) return true;
+        if (b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
+            FloatStart f;
+            // No root-box test (kRoot false): feelers start inside the box; the limit is unused.
+            if (startRay<false>(f, b, ray, tMin, 0.0f) == kFloat)
+                return blockedFrom<true>(b, ray, tMin, tMax, skip, &f);
+        }
+        return blockedFrom<false>(b, ray, tMin, tMax, skip, nullptr);
+    }
+    // occluded's walk. kFloatOnly (pre given, as nearestFrom<true>): without the checks
+    // occluded has made, the double box test and the per-node test of useFloat (issue 21,
+    // eighth session); else the general walk. Both instances are inlined into occluded.
+    template <bool kFloatOnly>
+    __attribute__((always_inline)) static bool
+    blockedFrom(const Bvh& b, const Ray& ray, double tMin, double tMax, const Primitive* skip,
+                const FloatStart* pre) {
         bool any = false;
-        walk<true>(b, ray, tMin, tMax, [&](std::uint32_t i, const RayData* r) {
-            const Primitive* p = b.order_[i];
-            any = p != skip && exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax);
-            return !any;
-        });
+        walk<true, kFloatOnly>(
+            b, ray, tMin, tMax,
+            [&](std::uint32_t i, const RayData* r) {
+                const Primitive* p = b.order_[i];
+                any = p != skip && exactOccluded(*p, b.kind_[i], r, ray, tMin, tMax);
+                return !any;
+            },
+            pre);
         return any;
     }
 
