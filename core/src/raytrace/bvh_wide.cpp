@@ -450,7 +450,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     // the tasks, the 14 arrays of a million triangles (56 MB, faulted in again whenever
     // malloc had given their pages back) took longer than the tasks themselves, and the
     // other thread waited: the two-thread build's serial part on that row.
-    std::vector<std::vector<float>*> zeroed;
+    std::vector<Floats*> zeroed;
     if (has[kRunSphere])
         for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
             zeroed.push_back(v);
