@@ -735,8 +735,12 @@ constexpr std::size_t kHuge = std::size_t(2) << 20;
 // the node array of 110 MiB, the collapse's buffer of 84 MiB); with 256 the node array,
 // freed last, was unmapped, and every such build mapped it afresh and zeroed its 53 huge
 // pages (perf: the kernel ~8% of a one-thread build, under buildSubtree and buildTop).
+// Issue 21: 48 mappings (was 8): the Bvh's leaf arrays are bigAlloc memory too (bvh.h,
+// KeptAlloc), 14 of them for triangles; raytrace_scale_bench's build table frees two
+// trees' arrays and a build's four scratch arrays at once (32 mappings of a million
+// triangles, about 450 MiB with each mapping's rounding to 2 MiB and its 2 MiB of room).
 struct KeptMappings {
-    static constexpr int kKept = 8;
+    static constexpr int kKept = 48;
     static constexpr std::size_t kKeptBytes = std::size_t(512) << 20;
     std::mutex lock;
     void* base[kKept] = {};

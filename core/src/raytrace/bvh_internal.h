@@ -94,10 +94,9 @@ struct BuildNode {
 // BuildNode::size saturates here: the collapse compares it with a few thousand only.
 constexpr std::uint32_t kSizeCap = 65535;
 
-// Large build arrays (bvh.cpp): 2 MiB pages where whole, and mappings a build freed kept
+// Large build arrays: bigAlloc and bigFree (declared in bvh.h, for the leaf arrays'
+// allocator; defined in bvh.cpp): 2 MiB pages where whole, and mappings a build freed kept
 // for the next build (no page faults and zeroing after the first); malloc below 2 MiB.
-void* bigAlloc(std::size_t bytes);
-void bigFree(void* p, std::size_t bytes) noexcept;
 
 constexpr int kMaxDepth = 128; // binary traversal stack size (the build keeps the depth below)
 

@@ -20,12 +20,32 @@
 // an AVX-512 (F + VL) 8-wide walk is chosen where the CPU has it.
 #include "core/raytrace/scene.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
 
 namespace wb::rt {
+
+namespace bvh_detail {
+void* bigAlloc(std::size_t bytes); // bvh.cpp: kept mappings from 2 MiB, malloc below
+void bigFree(void* p, std::size_t bytes) noexcept;
+// Issue 21: the leaf arrays in bigAlloc memory. Through malloc, a million triangles' 14
+// arrays (56 MB) were faulted and zeroed by the kernel again whenever glibc had given
+// their pages back (20,304 faults, 30 ms of system time in a one-thread build; which
+// build paid changed from run to run); a freed Bvh's arrays are now kept for the next.
+template <class T> struct KeptAlloc {
+    using value_type = T;
+    KeptAlloc() = default;
+    template <class U> KeptAlloc(const KeptAlloc<U>&) noexcept {}
+    T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
+    void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
+    template <class U> bool operator==(const KeptAlloc<U>&) const noexcept { return true; }
+    template <class U> bool operator!=(const KeptAlloc<U>&) const noexcept { return false; }
+};
+template <class T> using KeptVector = std::vector<T, KeptAlloc<T>>;
+} // namespace bvh_detail
 
 // Which SIMD instructions the wide traversal uses (BvhOptions::simd).
 enum class BvhSimd {
@@ -240,12 +260,13 @@ class Bvh : public Aggregate {
     std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
     std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
     std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
-    std::vector<float> sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
-                                                // radius, their part of the float test's margin
+    using Floats = bvh_detail::KeptVector<float>;
+    Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
+                                    // radius, their part of the float test's margin
     // Triangles at their order_ index (issue 21: the filter on precomputed edges): float
     // v0, v0 − v1, v2 − v0 and the normal (axis-major), the filter bound's two parts.
-    std::vector<float> tv_[3], te_[9], tp_[2];
-    std::vector<float> ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
+    Floats tv_[3], te_[9], tp_[2];
+    Floats ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
 
