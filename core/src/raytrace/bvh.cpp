@@ -834,13 +834,11 @@ void bigFree(void* p, std::size_t bytes) noexcept {
 
 namespace {
 
-// The node array (not zeroed on resize: every node is written), in bigAlloc memory.
-template <class T> struct NoInit {
-    using value_type = T;
+// The node array (not zeroed on resize: every node is written), in bigAlloc memory
+// (KeptAlloc's allocate and deallocate).
+template <class T> struct NoInit : bvh_detail::KeptAlloc<T> {
     NoInit() = default;
     template <class U> NoInit(const NoInit<U>&) noexcept {}
-    T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
-    void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
     template <class U>
     void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
         ::new (static_cast<void*>(p)) U;
