@@ -1168,9 +1168,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         Packet p;
         double tMax[W];
-        const Primitive* best[W];
-        std::uint8_t bestKind[W];
-        std::uint32_t bestIndex[W];
+        Best best[W];
         const unsigned packet = joinPacket(p, rays, tMin, lanes);
         for (unsigned m = lanes & ~packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
@@ -1180,21 +1178,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         for (unsigned m = packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             tMax[j] = tMaxIn[j];
-            best[j] = nullptr;
+            best[j].p = nullptr;
         }
-        // intersect()'s offer, per ray (ties: the primitive later in the scene wins).
+        // intersect()'s offer, per ray (offerNearest: its rule for ties too).
         auto offer = [&](int j, const Primitive& q, std::uint8_t kind, std::uint32_t index,
                          const RayData* r) {
-            const double before = tMax[j];
-            if (!exactIntersect(q, kind, r, rays[j], tMin[j], tMax[j], hits[j])) return;
-            if (best[j] && hits[j].t == before && index < bestIndex[j]) {
-                exactIntersect(*best[j], bestKind[j], r, rays[j], tMin[j], before, hits[j]);
-                return;
-            }
-            best[j] = &q;
-            bestKind[j] = kind;
-            bestIndex[j] = index;
-            tMax[j] = hits[j].t;
+            offerNearest(q, kind, index, r, rays[j], tMin[j], tMax[j], hits[j], best[j]);
         };
         for (unsigned m = packet; m; m &= m - 1)
             for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
@@ -1206,7 +1195,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         });
         for (unsigned m = packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            if (best[j]) found |= 1u << j;
+            if (best[j].p) found |= 1u << j;
         }
         return found;
     }
@@ -1278,6 +1267,36 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return p.occluded(ray, tMin, tMax);
     }
 
+    // The nearest-hit rule of intersect() and intersectPacket() (one per ray): primitive p
+    // (`index`: its place in the scene) offered to a ray whose nearest so far is `best` at
+    // tMax. Candidates write straight into `hit` (each is asked only for t <= the nearest so
+    // far). On equal t the plain loop keeps the primitive later in the scene; when an
+    // earlier one ties, the later one's record is restored by asking it again (the same
+    // exact code gives the same bits). Exact ties are rare: records stay uncopied.
+    // Inlined into both callers: the state stays in the caller's registers or arrays.
+    // A ray's nearest so far (p null: none yet). No member initialisers: the packets'
+    // arrays of them set p alone, for their rays only.
+    struct Best {
+        const Primitive* p;
+        std::uint8_t kind;
+        std::uint32_t index;
+    };
+    __attribute__((always_inline)) static void offerNearest(const Primitive& p, std::uint8_t kind,
+                                                            std::uint32_t index, const RayData* r,
+                                                            const Ray& ray, double tMin,
+                                                            double& tMax, Hit& hit, Best& best) {
+        const double before = tMax;
+        if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
+        if (best.p && hit.t == before && index < best.index) {
+            exactIntersect(*best.p, best.kind, r, ray, tMin, before, hit);
+            return;
+        }
+        best.p = &p;
+        best.kind = kind;
+        best.index = index;
+        tMax = hit.t;
+    }
+
     // intersect()'s leaf visitor. Its state (the nearest so far, the limit) lives in its own
     // members rather than in references to the caller's locals: with a lambda capturing
     // them by reference GCC kept the closure in memory, stored ~10 pointers per ray and read
@@ -1287,26 +1306,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const Ray& ray;
         Hit& hit;
         double tMin, tMax;
-        const Primitive* best = nullptr;
-        std::uint8_t bestKind = bvh_detail::kOther;
-        std::uint32_t bestIndex = 0;
+        Best best{nullptr, bvh_detail::kOther, 0};
 
-        // Candidates write straight into `hit` (each is asked only for t <= the nearest so
-        // far). On equal t the plain loop keeps the primitive later in the scene; when an
-        // earlier one ties, the later one's record is restored by asking it again (the same
-        // exact code gives the same bits). Exact ties are rare: records stay uncopied.
         __attribute__((always_inline)) void offer(const Primitive& p, std::uint8_t kind,
                                                   std::uint32_t index, const RayData* r) {
-            const double before = tMax;
-            if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
-            if (best && hit.t == before && index < bestIndex) {
-                exactIntersect(*best, bestKind, r, ray, tMin, before, hit);
-                return;
-            }
-            best = &p;
-            bestKind = kind;
-            bestIndex = index;
-            tMax = hit.t;
+            offerNearest(p, kind, index, r, ray, tMin, tMax, hit, best);
         }
         __attribute__((always_inline)) bool operator()(std::uint32_t i, const RayData* r) {
             offer(*b.order_[i], b.kind_[i], b.orderIndex_[i], r);
@@ -1339,7 +1343,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
                 s.offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
         walk<false, kFloatOnly>(b, ray, tMin, s.tMax, s, pre);
-        return s.best != nullptr;
+        return s.best.p != nullptr;
     }
 
     // `skip`: a flat primitive the feeler starts on (Aggregate::forEachBlocker), never asked;
