@@ -828,40 +828,107 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
     // float values are floatRay's operations, written out four rays at a time (one call per
     // ray would cost the division per ray this saves).
+    // joinPacket's per-ray part for 8 lanes, four rays at a time: each ray's origin and
+    // direction loaded as two rows of four doubles and transposed into the packet's lanes
+    // (oo, dd), then initRay's checks for four rays in one (|d| in [1e-30, 1e30] on every
+    // axis, the origin's largest |component| below 1e30) and the direction signs as three
+    // movemasks. The same decisions as the ray-by-ray loop: std::max(a, b) is (a < b ? b :
+    // a), which is _mm256_max_pd(b, a) also for a NaN operand. Lanes outside `lanes` load
+    // the first ray of `lanes` (rays[j] may not exist there). Returns the joined rays and
+    // sets their RayData; omax and tm are set in every lane.
+    static unsigned joinChecks(Packet& p, const Ray* rays, const double* tMin, unsigned lanes,
+                               double* omax, double* tm) {
+        const int firstLane = __builtin_ctz(lanes);
+        const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
+        const __m256d lo = _mm256_set1_pd(1e-30), hi = _mm256_set1_pd(1e30);
+        unsigned valid = 0, sx = 0, sy = 0, sz = 0;
+        for (int j = 0; j < W; j += 4) {
+            __m256d a[4], d[4];
+            for (int k = 0; k < 4; ++k) {
+                const int src = (lanes >> (j + k)) & 1 ? j + k : firstLane;
+                a[k] = _mm256_loadu_pd(&rays[src].origin.x);    // ox oy oz dx
+                d[k] = _mm256_loadu_pd(&rays[src].direction.x); // dx dy dz (weight)
+                tm[j + k] = tMin[src];
+            }
+            const __m256d t0 = _mm256_unpacklo_pd(a[0], a[1]), t1 = _mm256_unpackhi_pd(a[0], a[1]);
+            const __m256d t2 = _mm256_unpacklo_pd(a[2], a[3]), t3 = _mm256_unpackhi_pd(a[2], a[3]);
+            const __m256d u0 = _mm256_unpacklo_pd(d[0], d[1]), u1 = _mm256_unpackhi_pd(d[0], d[1]);
+            const __m256d u2 = _mm256_unpacklo_pd(d[2], d[3]), u3 = _mm256_unpackhi_pd(d[2], d[3]);
+            const __m256d o[3] = {_mm256_permute2f128_pd(t0, t2, 0x20),
+                                  _mm256_permute2f128_pd(t1, t3, 0x20),
+                                  _mm256_permute2f128_pd(t0, t2, 0x31)};
+            const __m256d dir[3] = {_mm256_permute2f128_pd(t1, t3, 0x31),
+                                    _mm256_permute2f128_pd(u1, u3, 0x20),
+                                    _mm256_permute2f128_pd(u0, u2, 0x31)};
+            const __m256d om = _mm256_max_pd(
+                _mm256_max_pd(_mm256_and_pd(o[2], absMask), _mm256_and_pd(o[1], absMask)),
+                _mm256_and_pd(o[0], absMask));
+            __m256d ok = _mm256_cmp_pd(om, hi, _CMP_LT_OQ);
+            _mm256_store_pd(omax + j, om);
+            for (int c = 0; c < 3; ++c) {
+                _mm256_store_pd(&p.oo[c][j], o[c]);
+                _mm256_store_pd(&p.dd[c][j], dir[c]);
+                const __m256d ad = _mm256_and_pd(dir[c], absMask);
+                ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ad, lo, _CMP_GE_OQ),
+                                                     _mm256_cmp_pd(ad, hi, _CMP_LE_OQ)));
+            }
+            valid |= unsigned(_mm256_movemask_pd(ok)) << j;
+            sx |= unsigned(_mm256_movemask_pd(dir[0])) << j;
+            sy |= unsigned(_mm256_movemask_pd(dir[1])) << j;
+            sz |= unsigned(_mm256_movemask_pd(dir[2])) << j;
+        }
+        valid &= lanes;
+        if (!valid) return 0;
+        // The first ray that passes sets the signs; the others must share them.
+        const int f = __builtin_ctz(valid);
+        const int signs = int(((sx >> f) & 1) | (((sy >> f) & 1) << 1) | (((sz >> f) & 1) << 2));
+        const unsigned joined =
+            valid & (signs & 1 ? sx : ~sx) & (signs & 2 ? sy : ~sy) & (signs & 4 ? sz : ~sz);
+        for (unsigned m = joined; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            setRayData(p.r[j], signs, true, rays[j]);
+        }
+        return joined;
+    }
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
-        alignas(16) double omax[W], tm[W];
+        alignas(32) double omax[W], tm[W];
         double(&oo)[3][W] = p.oo;
         double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
-        int signs = -1;
-        for (unsigned m = lanes; m; m &= m - 1) {
-            const int j = __builtin_ctz(m);
-            const Ray& ray = rays[j];
-            const glm::dvec3 o = ray.origin, d = ray.direction;
-            const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
-                          dz = _mm_load_sd(&ray.direction[2]);
-            const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-            if (signs >= 0 && sg != signs) continue;
-            const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-            // initRay's range check with a zero direction component refused too.
-            if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
-            signs = sg;
-            joined |= 1u << j;
-            setRayData(p.r[j], sg, true, ray);
-            const double* op = &o.x;
-            const double* dp = &d.x;
-            for (int a = 0; a < 3; ++a) {
-                oo[a][j] = op[a];
-                dd[a][j] = dp[a];
+        if constexpr (W == 8) {
+            joined = joinChecks(p, rays, tMin, lanes, omax, tm);
+        } else {
+            int signs = -1;
+            for (unsigned m = lanes; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                const Ray& ray = rays[j];
+                const glm::dvec3 o = ray.origin, d = ray.direction;
+                const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
+                              dz = _mm_load_sd(&ray.direction[2]);
+                const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+                if (signs >= 0 && sg != signs) continue;
+                const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+                // initRay's range check with a zero direction component refused too.
+                if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
+                signs = sg;
+                joined |= 1u << j;
+                setRayData(p.r[j], sg, true, ray);
+                const double* op = &o.x;
+                const double* dp = &d.x;
+                for (int a = 0; a < 3; ++a) {
+                    oo[a][j] = op[a];
+                    dd[a][j] = dp[a];
+                }
+                omax[j] = om;
+                tm[j] = tMin[j];
             }
-            omax[j] = om;
-            tm[j] = tMin[j];
         }
         if (!joined) return 0;
         // Lanes outside the packet compute the first ray's values: the intervals over all W
-        // lanes (walkPacket) are then those over the packet's rays.
+        // lanes (walkPacket) are then those over the packet's rays. (joinChecks filled the
+        // lanes outside `lanes` with them already: copied only when a ray was refused.)
         const int first = __builtin_ctz(joined);
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < W && (W != 8 || joined != lanes); ++j) {
             if ((joined >> j) & 1) continue;
             for (int a = 0; a < 3; ++a) {
                 oo[a][j] = oo[a][first];
