@@ -890,6 +890,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         return joined;
     }
+    // Eight doubles rounded to float (joinPacket, 8 lanes). V, not __m256, as the return
+    // type: the SSE2 file never instantiates it (an __m256 return there is an ABI warning).
+    template <class T = V> static T toFloat8(const double* x) {
+        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_load_pd(x))),
+                                    _mm256_cvtpd_ps(_mm256_load_pd(x + 4)), 1);
+    }
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
         alignas(32) double omax[W], tm[W];
         double(&oo)[3][W] = p.oo;
@@ -938,6 +944,26 @@ template <class L, bool Q> struct Bvh::WideWalk {
             tm[j] = tm[first];
         }
         p.off = p.r[first].off;
+        if constexpr (W == 8) {
+            // The same operations in eight lanes at once (AVX: the L8 files only).
+            const __m256 eps = _mm256_mul_ps(toFloat8(omax), _mm256_set1_ps(0x1p-21f));
+            for (int a = 0; a < 3; ++a) {
+                const __m256 fd = toFloat8(dd[a]), fo = toFloat8(oo[a]);
+                const __m256 finv = _mm256_div_ps(_mm256_set1_ps(1.0f), fd);
+                const __m256 sgnEps = _mm256_xor_ps(eps, _mm256_and_ps(fd, _mm256_set1_ps(-0.0f)));
+                _mm256_store_ps(p.inv[a], finv);
+                _mm256_store_ps(p.invFar[a],
+                                _mm256_mul_ps(finv, _mm256_set1_ps(bvh_detail::kInvFarScaleF)));
+                _mm256_store_ps(p.on[a], _mm256_add_ps(fo, sgnEps));
+                _mm256_store_ps(p.of[a], _mm256_sub_ps(fo, sgnEps));
+            }
+            const __m256 ftMin = toFloat8(tm);
+            const __m256 absT =
+                _mm256_and_ps(ftMin, _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff)));
+            _mm256_store_ps(p.tMin,
+                            _mm256_sub_ps(ftMin, _mm256_mul_ps(absT, _mm256_set1_ps(0x1p-20f))));
+            return joined;
+        }
         auto toFloat = [](const double* x) { // four doubles rounded to float, as _mm_cvtpd_ps
             return _mm_movelh_ps(_mm_cvtpd_ps(_mm_load_pd(x)), _mm_cvtpd_ps(_mm_load_pd(x + 2)));
         };
