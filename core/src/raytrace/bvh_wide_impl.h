@@ -770,6 +770,46 @@ template <class L, bool Q> struct Bvh::WideWalk {
         p.sphSet = true;
     }
     static void triangleLanes(Packet& p, unsigned lanes) {
+        if constexpr (W == 8) {
+            // RayData::mtSetup's values four lanes at a time from the packet's doubles (the
+            // lanes outside the packet hold its first ray's): the same IEEE operations in
+            // the same order (float(o[a]), float(d[a]); |o|₁ = (|x| + |y|) + |z|; the
+            // largest |d[a]| as std::max's, which is _mm256_max_pd(b, a) for std::max(a,
+            // b); the bound's products in double, then rounded to float), so the same bits.
+            // The rays' own RayData keep theirs unset (mtSetup fills them if they run their
+            // own leaf tests).
+            using namespace bvh_detail;
+            constexpr double kUp = 1 + 0x1p-20; // mtSetup's
+            const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
+            for (int j = 0; j < W; j += 4) {
+                __m256d ao[3], ad[3];
+                for (int a = 0; a < 3; ++a) {
+                    const __m256d o = _mm256_load_pd(&p.oo[a][j]), d = _mm256_load_pd(&p.dd[a][j]);
+                    _mm_store_ps(&p.tmo[a][j], _mm256_cvtpd_ps(o));
+                    _mm_store_ps(&p.tmd[a][j], _mm256_cvtpd_ps(d));
+                    ao[a] = _mm256_and_pd(o, absMask);
+                    ad[a] = _mm256_and_pd(d, absMask);
+                }
+                const __m256d ol = _mm256_add_pd(_mm256_add_pd(ao[0], ao[1]), ao[2]);
+                const __m256d dm = _mm256_max_pd(_mm256_max_pd(ad[2], ad[1]), ad[0]);
+                const __m256d ok =
+                    _mm256_and_pd(_mm256_cmp_pd(ol, _mm256_set1_pd(kMtMaxCoord), _CMP_LE_OQ),
+                                  _mm256_cmp_pd(dm, _mm256_set1_pd(kMtMaxDir), _CMP_LE_OQ));
+                const __m256d x = _mm256_mul_pd(dm, ol), up = _mm256_set1_pd(kUp);
+                const __m256d inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+                _mm_store_ps(&p.tmx[j],
+                             _mm256_cvtpd_ps(_mm256_blendv_pd(inf, _mm256_mul_pd(x, up), ok)));
+                _mm_store_ps(&p.tmy[j],
+                             _mm256_cvtpd_ps(_mm256_blendv_pd(inf, _mm256_mul_pd(dm, up), ok)));
+                const __m256d z =
+                    _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(kMtDoubleMargin * kUp), x), ol);
+                _mm_store_ps(&p.tmz[j],
+                             _mm256_cvtpd_ps(_mm256_add_pd(z, _mm256_set1_pd(kMtFloor))));
+            }
+            p.triLanes = lanes;
+            p.triSet = true;
+            return;
+        }
         const int first = __builtin_ctz(lanes);
         for (int j = 0; j < W; ++j) {
             RayData& r = p.r[(lanes >> j) & 1 ? j : first];
