@@ -876,6 +876,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // a), which is _mm256_max_pd(b, a) also for a NaN operand. Lanes outside `lanes` load
     // the first ray of `lanes` (rays[j] may not exist there). Returns the joined rays and
     // sets their RayData; omax and tm are set in every lane.
+    // kFull: every lane in the packet (lanes == 0xFF, most of a picture's packets), each
+    // lane loading its own ray without the choice.
+    template <bool kFull>
     static unsigned joinChecks(Packet& p, const Ray* rays, const double* tMin, unsigned lanes,
                                double* omax, double* tm) {
         const int firstLane = __builtin_ctz(lanes);
@@ -885,7 +888,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         for (int j = 0; j < W; j += 4) {
             __m256d a[4], d[4];
             for (int k = 0; k < 4; ++k) {
-                const int src = (lanes >> (j + k)) & 1 ? j + k : firstLane;
+                const int src = kFull || (lanes >> (j + k)) & 1 ? j + k : firstLane;
                 a[k] = _mm256_loadu_pd(&rays[src].origin.x);    // ox oy oz dx
                 d[k] = _mm256_loadu_pd(&rays[src].direction.x); // dx dy dz (weight)
                 tm[j + k] = tMin[src];
@@ -942,7 +945,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
         if constexpr (W == 8) {
-            joined = joinChecks(p, rays, tMin, lanes, omax, tm);
+            joined = lanes == 0xFFu ? joinChecks<true>(p, rays, tMin, lanes, omax, tm)
+                                    : joinChecks<false>(p, rays, tMin, lanes, omax, tm);
         } else {
             int signs = -1;
             for (unsigned m = lanes; m; m &= m - 1) {
