@@ -1087,8 +1087,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
             iaOf[a] = lead.neg(a) ? hmax(of[a]) : hmin(of[a]);
             iaInvLo[a] = hmin(inv[a]);
             iaInvHi[a] = hmax(inv[a]);
-            iaFarLo[a] = hmin(invFar[a]);
-            iaFarHi[a] = hmax(invFar[a]);
+            // invFar = fl(inv·s) lane by lane (joinPacket), s > 0: rounding is monotonic, so
+            // the smallest and largest invFar are those of the smallest and largest inv,
+            // the same bits as their own reductions (no lane NaN: the rays' |d| are in
+            // range).
+            const V s = L::set1(bvh_detail::kInvFarScaleF);
+            iaFarLo[a] = L::mul(iaInvLo[a], s);
+            iaFarHi[a] = L::mul(iaInvHi[a], s);
         }
         // A NaN tMin (its lane never enters a box) counts as +inf, so it lowers no bound.
         const V tMinV = L::load(p.tMin), iaTMin = hmin(L::min(tMinV, L::set1(kInfF)));
