@@ -1068,8 +1068,28 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const std::vector<Node>& nodes = nodesOf(b);
         constexpr float kInfF = std::numeric_limits<float>::infinity();
         // Lanes outside the packet: the limit −inf (no box is entered by them).
-        for (int j = 0; j < W; ++j)
-            p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        if constexpr (W == 8) {
+            // limitOf four lanes at a time: the same double product, compare and rounding
+            // (an infinite limit where limitOf gives one). tMax is read in the packet's
+            // lanes only (a masked load: the caller's array may end before lane 8).
+            const __m128i bits = _mm_setr_epi32(1, 2, 4, 8);
+            for (int h = 0; h < W; h += 4) {
+                const __m128i in =
+                    _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(lanes >> h)), bits), bits);
+                const __m256d lim =
+                    _mm256_mul_pd(_mm256_maskload_pd(tMax + h, _mm256_cvtepi32_epi64(in)),
+                                  _mm256_set1_pd(bvh_detail::kFarScale));
+                const __m256d capped =
+                    _mm256_blendv_pd(lim, _mm256_set1_pd(std::numeric_limits<double>::infinity()),
+                                     _mm256_cmp_pd(lim, _mm256_set1_pd(3e38), _CMP_GT_OQ));
+                const __m128 f = _mm_mul_ps(_mm256_cvtpd_ps(capped), _mm_set1_ps(1 + 0x1p-20f));
+                _mm_store_ps(&p.lim[h],
+                             _mm_blendv_ps(_mm_set1_ps(-kInfF), f, _mm_castsi128_ps(in)));
+            }
+        } else {
+            for (int j = 0; j < W; ++j)
+                p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        }
         // The intervals over the packet's rays, in every lane (joinPacket gave the lanes
         // outside the packet the first ray's values). The origin bound per axis: the near
         // plane's smallest difference n − on where d > 0 (the largest on), its largest where
