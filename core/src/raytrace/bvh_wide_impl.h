@@ -1096,17 +1096,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
         // where d < 0. The packet's rays share their direction signs (joinPacket).
         const RayData& lead = p.r[__builtin_ctz(lanes)]; // its signs are every ray's
-        V on[3], of[3], inv[3], invFar[3];
         V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
-            on[a] = L::load(p.on[a]);
-            of[a] = L::load(p.of[a]);
-            inv[a] = L::load(p.inv[a]);
-            invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = lead.neg(a) ? hmin(on[a]) : hmax(on[a]);
-            iaOf[a] = lead.neg(a) ? hmax(of[a]) : hmin(of[a]);
-            iaInvLo[a] = hmin(inv[a]);
-            iaInvHi[a] = hmax(inv[a]);
+            const V on = L::load(p.on[a]), of = L::load(p.of[a]), inv = L::load(p.inv[a]);
+            iaOn[a] = lead.neg(a) ? hmin(on) : hmax(on);
+            iaOf[a] = lead.neg(a) ? hmax(of) : hmin(of);
+            iaInvLo[a] = hmin(inv);
+            iaInvHi[a] = hmax(inv);
             // invFar = fl(inv·s) lane by lane (joinPacket), s > 0: rounding is monotonic, so
             // the smallest and largest invFar are those of the smallest and largest inv,
             // the same bits as their own reductions (no lane NaN: the rays' |d| are in
@@ -1248,8 +1244,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 cand &= cand - 1;
                 V r0 = tMinV, r1 = limV;
                 for (int a = 0; a < 3; ++a) {
-                    r0 = L::max(L::mul(L::sub(L::set1(nearP[a][c]), on[a]), inv[a]), r0);
-                    r1 = L::min(L::mul(L::sub(L::set1(farP[a][c]), of[a]), invFar[a]), r1);
+                    // The packet's lanes read from p at each use (memory operands): held in
+                    // locals, GCC copied all twelve vectors to its stack at every packet's
+                    // start (~50 moves; issue 21, eighth session).
+                    r0 = L::max(
+                        L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])), L::load(p.inv[a])),
+                        r0);
+                    r1 = L::min(
+                        L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])), L::load(p.invFar[a])),
+                        r1);
                 }
                 const unsigned m = unsigned(L::le(r0, r1)) & curRays;
                 if (!m) continue;
