@@ -1343,20 +1343,26 @@ template <class L, bool Q> struct Bvh::WideWalk {
             found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
         }
         if (!packet) return found;
-        for (unsigned m = packet; m; m &= m - 1) {
-            const int j = __builtin_ctz(m);
-            tMax[j] = tMaxIn[j];
+        // Every lane's best cleared (W stores, no loop over the packet's bits); tMax copied
+        // whole when the packet holds all W lanes (then tMaxIn has W entries).
+        for (int j = 0; j < W; ++j)
             best[j].p = nullptr;
+        if (packet == (1u << W) - 1) {
+            std::memcpy(tMax, tMaxIn, sizeof tMax);
+        } else {
+            for (unsigned m = packet; m; m &= m - 1)
+                tMax[__builtin_ctz(m)] = tMaxIn[__builtin_ctz(m)];
         }
         // intersect()'s offer, per ray (offerNearest: its rule for ties too).
         auto offer = [&](int j, const Primitive& q, std::uint8_t kind, std::uint32_t index,
                          const RayData* r) {
             offerNearest(q, kind, index, r, rays[j], tMin[j], tMax[j], hits[j], best[j]);
         };
-        for (unsigned m = packet; m; m &= m - 1)
-            for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
-                offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i],
-                      nullptr);
+        if (!b.unbounded_.empty())
+            for (unsigned m = packet; m; m &= m - 1)
+                for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
+                    offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther,
+                          b.unboundedIndex_[i], nullptr);
         walkPacket<false>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
             offer(j, *b.order_[i], b.kind_[i], b.orderIndex_[i], r);
             return true;
