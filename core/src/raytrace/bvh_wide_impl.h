@@ -716,8 +716,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         bool sphSet = false, triSet = false;
     };
     // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
-    // docs/raytrace-scale.md has the measurement).
-    static constexpr int kTransposeLanes = 3;
+    // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
+    // transposed triangle set-up became cheap; 1 measured worse on every scene).
+    static constexpr int kTransposeLanes = 2;
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
