@@ -1390,7 +1390,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return blocked;
         }
         Packet p;
-        for (unsigned m = lanes; m; m &= m - 1) {
+        for (unsigned m = b.unbounded_.empty() ? 0 : lanes; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             for (const Primitive* q : b.unbounded_)
                 if (q != skipOf(j) && q->occluded(rays[j], tMin[j], tMax[j])) {
