@@ -735,8 +735,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         bool sphSet = false, triSet = false;
     };
     // Rays entering a leaf from which its runs are tested transposed (fewer: one by one;
-    // docs/raytrace-scale.md has the measurement).
-    static constexpr int kTransposeLanes = 3;
+    // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
+    // transposed triangle set-up became cheap; 1 measured worse on every scene).
+    static constexpr int kTransposeLanes = 2;
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
@@ -789,6 +790,46 @@ template <class L, bool Q> struct Bvh::WideWalk {
         p.sphSet = true;
     }
     static void triangleLanes(Packet& p, unsigned lanes) {
+        if constexpr (W == 8) {
+            // RayData::mtSetup's values four lanes at a time from the packet's doubles (the
+            // lanes outside the packet hold its first ray's): the same IEEE operations in
+            // the same order (float(o[a]), float(d[a]); |o|₁ = (|x| + |y|) + |z|; the
+            // largest |d[a]| as std::max's, which is _mm256_max_pd(b, a) for std::max(a,
+            // b); the bound's products in double, then rounded to float), so the same bits.
+            // The rays' own RayData keep theirs unset (mtSetup fills them if they run their
+            // own leaf tests).
+            using namespace bvh_detail;
+            constexpr double kUp = 1 + 0x1p-20; // mtSetup's
+            const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
+            for (int j = 0; j < W; j += 4) {
+                __m256d ao[3], ad[3];
+                for (int a = 0; a < 3; ++a) {
+                    const __m256d o = _mm256_load_pd(&p.oo[a][j]), d = _mm256_load_pd(&p.dd[a][j]);
+                    _mm_store_ps(&p.tmo[a][j], _mm256_cvtpd_ps(o));
+                    _mm_store_ps(&p.tmd[a][j], _mm256_cvtpd_ps(d));
+                    ao[a] = _mm256_and_pd(o, absMask);
+                    ad[a] = _mm256_and_pd(d, absMask);
+                }
+                const __m256d ol = _mm256_add_pd(_mm256_add_pd(ao[0], ao[1]), ao[2]);
+                const __m256d dm = _mm256_max_pd(_mm256_max_pd(ad[2], ad[1]), ad[0]);
+                const __m256d ok =
+                    _mm256_and_pd(_mm256_cmp_pd(ol, _mm256_set1_pd(kMtMaxCoord), _CMP_LE_OQ),
+                                  _mm256_cmp_pd(dm, _mm256_set1_pd(kMtMaxDir), _CMP_LE_OQ));
+                const __m256d x = _mm256_mul_pd(dm, ol), up = _mm256_set1_pd(kUp);
+                const __m256d inf = _mm256_set1_pd(std::numeric_limits<double>::infinity());
+                _mm_store_ps(&p.tmx[j],
+                             _mm256_cvtpd_ps(_mm256_blendv_pd(inf, _mm256_mul_pd(x, up), ok)));
+                _mm_store_ps(&p.tmy[j],
+                             _mm256_cvtpd_ps(_mm256_blendv_pd(inf, _mm256_mul_pd(dm, up), ok)));
+                const __m256d z =
+                    _mm256_mul_pd(_mm256_mul_pd(_mm256_set1_pd(kMtDoubleMargin * kUp), x), ol);
+                _mm_store_ps(&p.tmz[j],
+                             _mm256_cvtpd_ps(_mm256_add_pd(z, _mm256_set1_pd(kMtFloor))));
+            }
+            p.triLanes = lanes;
+            p.triSet = true;
+            return;
+        }
         const int first = __builtin_ctz(lanes);
         for (int j = 0; j < W; ++j) {
             RayData& r = p.r[(lanes >> j) & 1 ? j : first];
@@ -847,40 +888,117 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
     // float values are floatRay's operations, written out four rays at a time (one call per
     // ray would cost the division per ray this saves).
+    // joinPacket's per-ray part for 8 lanes, four rays at a time: each ray's origin and
+    // direction loaded as two rows of four doubles and transposed into the packet's lanes
+    // (oo, dd), then initRay's checks for four rays in one (|d| in [1e-30, 1e30] on every
+    // axis, the origin's largest |component| below 1e30) and the direction signs as three
+    // movemasks. The same decisions as the ray-by-ray loop: std::max(a, b) is (a < b ? b :
+    // a), which is _mm256_max_pd(b, a) also for a NaN operand. Lanes outside `lanes` load
+    // the first ray of `lanes` (rays[j] may not exist there). Returns the joined rays and
+    // sets their RayData; omax and tm are set in every lane.
+    // kFull: every lane in the packet (lanes == 0xFF, most of a picture's packets), each
+    // lane loading its own ray without the choice.
+    template <bool kFull>
+    static unsigned joinChecks(Packet& p, const Ray* rays, const double* tMin, unsigned lanes,
+                               double* omax, double* tm) {
+        const int firstLane = __builtin_ctz(lanes);
+        const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
+        const __m256d lo = _mm256_set1_pd(1e-30), hi = _mm256_set1_pd(1e30);
+        unsigned valid = 0, sx = 0, sy = 0, sz = 0;
+        for (int j = 0; j < W; j += 4) {
+            __m256d a[4], d[4];
+            for (int k = 0; k < 4; ++k) {
+                const int src = kFull || (lanes >> (j + k)) & 1 ? j + k : firstLane;
+                a[k] = _mm256_loadu_pd(&rays[src].origin.x);    // ox oy oz dx
+                d[k] = _mm256_loadu_pd(&rays[src].direction.x); // dx dy dz (weight)
+                tm[j + k] = tMin[src];
+            }
+            const __m256d t0 = _mm256_unpacklo_pd(a[0], a[1]), t1 = _mm256_unpackhi_pd(a[0], a[1]);
+            const __m256d t2 = _mm256_unpacklo_pd(a[2], a[3]), t3 = _mm256_unpackhi_pd(a[2], a[3]);
+            const __m256d u0 = _mm256_unpacklo_pd(d[0], d[1]), u1 = _mm256_unpackhi_pd(d[0], d[1]);
+            const __m256d u2 = _mm256_unpacklo_pd(d[2], d[3]), u3 = _mm256_unpackhi_pd(d[2], d[3]);
+            const __m256d o[3] = {_mm256_permute2f128_pd(t0, t2, 0x20),
+                                  _mm256_permute2f128_pd(t1, t3, 0x20),
+                                  _mm256_permute2f128_pd(t0, t2, 0x31)};
+            const __m256d dir[3] = {_mm256_permute2f128_pd(t1, t3, 0x31),
+                                    _mm256_permute2f128_pd(u1, u3, 0x20),
+                                    _mm256_permute2f128_pd(u0, u2, 0x31)};
+            const __m256d om = _mm256_max_pd(
+                _mm256_max_pd(_mm256_and_pd(o[2], absMask), _mm256_and_pd(o[1], absMask)),
+                _mm256_and_pd(o[0], absMask));
+            __m256d ok = _mm256_cmp_pd(om, hi, _CMP_LT_OQ);
+            _mm256_store_pd(omax + j, om);
+            for (int c = 0; c < 3; ++c) {
+                _mm256_store_pd(&p.oo[c][j], o[c]);
+                _mm256_store_pd(&p.dd[c][j], dir[c]);
+                const __m256d ad = _mm256_and_pd(dir[c], absMask);
+                ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(ad, lo, _CMP_GE_OQ),
+                                                     _mm256_cmp_pd(ad, hi, _CMP_LE_OQ)));
+            }
+            valid |= unsigned(_mm256_movemask_pd(ok)) << j;
+            sx |= unsigned(_mm256_movemask_pd(dir[0])) << j;
+            sy |= unsigned(_mm256_movemask_pd(dir[1])) << j;
+            sz |= unsigned(_mm256_movemask_pd(dir[2])) << j;
+        }
+        valid &= lanes;
+        if (!valid) return 0;
+        // The first ray that passes sets the signs; the others must share them.
+        const int f = __builtin_ctz(valid);
+        const int signs = int(((sx >> f) & 1) | (((sy >> f) & 1) << 1) | (((sz >> f) & 1) << 2));
+        const unsigned joined =
+            valid & (signs & 1 ? sx : ~sx) & (signs & 2 ? sy : ~sy) & (signs & 4 ? sz : ~sz);
+        for (unsigned m = joined; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            setRayData(p.r[j], signs, true, rays[j]);
+        }
+        return joined;
+    }
+    // Eight doubles rounded to float (joinPacket, 8 lanes). V, not __m256, as the return
+    // type: the SSE2 file never instantiates it (an __m256 return there is an ABI warning).
+    template <class T = V> static T toFloat8(const double* x) {
+        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_load_pd(x))),
+                                    _mm256_cvtpd_ps(_mm256_load_pd(x + 4)), 1);
+    }
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
-        alignas(16) double omax[W], tm[W];
+        alignas(32) double omax[W], tm[W];
         double(&oo)[3][W] = p.oo;
         double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
-        int signs = -1;
-        for (unsigned m = lanes; m; m &= m - 1) {
-            const int j = __builtin_ctz(m);
-            const Ray& ray = rays[j];
-            const glm::dvec3 o = ray.origin, d = ray.direction;
-            const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
-                          dz = _mm_load_sd(&ray.direction[2]);
-            const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
-            if (signs >= 0 && sg != signs) continue;
-            const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
-            // initRay's range check with a zero direction component refused too.
-            if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
-            signs = sg;
-            joined |= 1u << j;
-            setRayData(p.r[j], sg, true, ray);
-            const double* op = &o.x;
-            const double* dp = &d.x;
-            for (int a = 0; a < 3; ++a) {
-                oo[a][j] = op[a];
-                dd[a][j] = dp[a];
+        if constexpr (W == 8) {
+            joined = lanes == 0xFFu ? joinChecks<true>(p, rays, tMin, lanes, omax, tm)
+                                    : joinChecks<false>(p, rays, tMin, lanes, omax, tm);
+        } else {
+            int signs = -1;
+            for (unsigned m = lanes; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                const Ray& ray = rays[j];
+                const glm::dvec3 o = ray.origin, d = ray.direction;
+                const __m128d dxy = _mm_loadu_pd(&ray.direction[0]),
+                              dz = _mm_load_sd(&ray.direction[2]);
+                const int sg = _mm_movemask_pd(dxy) | (_mm_movemask_pd(dz) << 2);
+                if (signs >= 0 && sg != signs) continue;
+                const double om = std::max(std::abs(o.x), std::max(std::abs(o.y), std::abs(o.z)));
+                // initRay's range check with a zero direction component refused too.
+                if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
+                signs = sg;
+                joined |= 1u << j;
+                setRayData(p.r[j], sg, true, ray);
+                const double* op = &o.x;
+                const double* dp = &d.x;
+                for (int a = 0; a < 3; ++a) {
+                    oo[a][j] = op[a];
+                    dd[a][j] = dp[a];
+                }
+                omax[j] = om;
+                tm[j] = tMin[j];
             }
-            omax[j] = om;
-            tm[j] = tMin[j];
         }
         if (!joined) return 0;
         // Lanes outside the packet compute the first ray's values: the intervals over all W
-        // lanes (walkPacket) are then those over the packet's rays.
+        // lanes (walkPacket) are then those over the packet's rays. (joinChecks filled the
+        // lanes outside `lanes` with them already: copied only when a ray was refused.)
         const int first = __builtin_ctz(joined);
-        for (int j = 0; j < W; ++j) {
+        for (int j = 0; j < W && (W != 8 || joined != lanes); ++j) {
             if ((joined >> j) & 1) continue;
             for (int a = 0; a < 3; ++a) {
                 oo[a][j] = oo[a][first];
@@ -890,6 +1008,26 @@ template <class L, bool Q> struct Bvh::WideWalk {
             tm[j] = tm[first];
         }
         p.off = p.r[first].off;
+        if constexpr (W == 8) {
+            // The same operations in eight lanes at once (AVX: the L8 files only).
+            const __m256 eps = _mm256_mul_ps(toFloat8(omax), _mm256_set1_ps(0x1p-21f));
+            for (int a = 0; a < 3; ++a) {
+                const __m256 fd = toFloat8(dd[a]), fo = toFloat8(oo[a]);
+                const __m256 finv = _mm256_div_ps(_mm256_set1_ps(1.0f), fd);
+                const __m256 sgnEps = _mm256_xor_ps(eps, _mm256_and_ps(fd, _mm256_set1_ps(-0.0f)));
+                _mm256_store_ps(p.inv[a], finv);
+                _mm256_store_ps(p.invFar[a],
+                                _mm256_mul_ps(finv, _mm256_set1_ps(bvh_detail::kInvFarScaleF)));
+                _mm256_store_ps(p.on[a], _mm256_add_ps(fo, sgnEps));
+                _mm256_store_ps(p.of[a], _mm256_sub_ps(fo, sgnEps));
+            }
+            const __m256 ftMin = toFloat8(tm);
+            const __m256 absT =
+                _mm256_and_ps(ftMin, _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff)));
+            _mm256_store_ps(p.tMin,
+                            _mm256_sub_ps(ftMin, _mm256_mul_ps(absT, _mm256_set1_ps(0x1p-20f))));
+            return joined;
+        }
         auto toFloat = [](const double* x) { // four doubles rounded to float, as _mm_cvtpd_ps
             return _mm_movelh_ps(_mm_cvtpd_ps(_mm_load_pd(x)), _mm_cvtpd_ps(_mm_load_pd(x + 2)));
         };
@@ -950,27 +1088,48 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const std::vector<Node>& nodes = nodesOf(b);
         constexpr float kInfF = std::numeric_limits<float>::infinity();
         // Lanes outside the packet: the limit −inf (no box is entered by them).
-        for (int j = 0; j < W; ++j)
-            p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        if constexpr (W == 8) {
+            // limitOf four lanes at a time: the same double product, compare and rounding
+            // (an infinite limit where limitOf gives one). tMax is read in the packet's
+            // lanes only (a masked load: the caller's array may end before lane 8).
+            const __m128i bits = _mm_setr_epi32(1, 2, 4, 8);
+            for (int h = 0; h < W; h += 4) {
+                const __m128i in =
+                    _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(int(lanes >> h)), bits), bits);
+                const __m256d lim =
+                    _mm256_mul_pd(_mm256_maskload_pd(tMax + h, _mm256_cvtepi32_epi64(in)),
+                                  _mm256_set1_pd(bvh_detail::kFarScale));
+                const __m256d capped =
+                    _mm256_blendv_pd(lim, _mm256_set1_pd(std::numeric_limits<double>::infinity()),
+                                     _mm256_cmp_pd(lim, _mm256_set1_pd(3e38), _CMP_GT_OQ));
+                const __m128 f = _mm_mul_ps(_mm256_cvtpd_ps(capped), _mm_set1_ps(1 + 0x1p-20f));
+                _mm_store_ps(&p.lim[h],
+                             _mm_blendv_ps(_mm_set1_ps(-kInfF), f, _mm_castsi128_ps(in)));
+            }
+        } else {
+            for (int j = 0; j < W; ++j)
+                p.lim[j] = (lanes >> j) & 1 ? limitOf(tMax[j]) : -kInfF;
+        }
         // The intervals over the packet's rays, in every lane (joinPacket gave the lanes
         // outside the packet the first ray's values). The origin bound per axis: the near
         // plane's smallest difference n − on where d > 0 (the largest on), its largest where
         // d < 0; the far plane's largest f − of where d > 0 (the smallest of), its smallest
         // where d < 0. The packet's rays share their direction signs (joinPacket).
         const RayData& lead = p.r[__builtin_ctz(lanes)]; // its signs are every ray's
-        V on[3], of[3], inv[3], invFar[3];
         V iaOn[3], iaOf[3], iaInvLo[3], iaInvHi[3], iaFarLo[3], iaFarHi[3];
         for (int a = 0; a < 3; ++a) {
-            on[a] = L::load(p.on[a]);
-            of[a] = L::load(p.of[a]);
-            inv[a] = L::load(p.inv[a]);
-            invFar[a] = L::load(p.invFar[a]);
-            iaOn[a] = lead.neg(a) ? hmin(on[a]) : hmax(on[a]);
-            iaOf[a] = lead.neg(a) ? hmax(of[a]) : hmin(of[a]);
-            iaInvLo[a] = hmin(inv[a]);
-            iaInvHi[a] = hmax(inv[a]);
-            iaFarLo[a] = hmin(invFar[a]);
-            iaFarHi[a] = hmax(invFar[a]);
+            const V on = L::load(p.on[a]), of = L::load(p.of[a]), inv = L::load(p.inv[a]);
+            iaOn[a] = lead.neg(a) ? hmin(on) : hmax(on);
+            iaOf[a] = lead.neg(a) ? hmax(of) : hmin(of);
+            iaInvLo[a] = hmin(inv);
+            iaInvHi[a] = hmax(inv);
+            // invFar = fl(inv·s) lane by lane (joinPacket), s > 0: rounding is monotonic, so
+            // the smallest and largest invFar are those of the smallest and largest inv,
+            // the same bits as their own reductions (no lane NaN: the rays' |d| are in
+            // range).
+            const V s = L::set1(bvh_detail::kInvFarScaleF);
+            iaFarLo[a] = L::mul(iaInvLo[a], s);
+            iaFarHi[a] = L::mul(iaInvHi[a], s);
         }
         // A NaN tMin (its lane never enters a box) counts as +inf, so it lowers no bound.
         const V tMinV = L::load(p.tMin), iaTMin = hmin(L::min(tMinV, L::set1(kInfF)));
@@ -981,8 +1140,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // counts as −inf.
         auto maxLim = [&]() { return hmax(L::max(limV, L::set1(-kInfF))); };
         V limHi = maxLim();
-        // Visits a leaf for the rays of m; false when no ray is left (any hit).
-        auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m) {
+        // Visits a leaf for the rays of m; false when no ray is left (any hit). Inlined
+        // into its three calls: out of line, its entry and exit (saved registers, the
+        // captured state reloaded) were ~60 instructions a leaf (issue 21, eighth session).
+        auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m)
+            __attribute__((always_inline)) {
             m &= active;
             if (__builtin_popcount(m) >= kTransposeLanes) {
                 using namespace bvh_detail;
@@ -1102,8 +1264,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 cand &= cand - 1;
                 V r0 = tMinV, r1 = limV;
                 for (int a = 0; a < 3; ++a) {
-                    r0 = L::max(L::mul(L::sub(L::set1(nearP[a][c]), on[a]), inv[a]), r0);
-                    r1 = L::min(L::mul(L::sub(L::set1(farP[a][c]), of[a]), invFar[a]), r1);
+                    // The packet's lanes read from p at each use (memory operands): held in
+                    // locals, GCC copied all twelve vectors to its stack at every packet's
+                    // start (~50 moves; issue 21, eighth session).
+                    r0 = L::max(
+                        L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])), L::load(p.inv[a])),
+                        r0);
+                    r1 = L::min(
+                        L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])), L::load(p.invFar[a])),
+                        r1);
                 }
                 const unsigned m = unsigned(L::le(r0, r1)) & curRays;
                 if (!m) continue;
@@ -1187,45 +1356,40 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         Packet p;
         double tMax[W];
-        const Primitive* best[W];
-        std::uint8_t bestKind[W];
-        std::uint32_t bestIndex[W];
+        Best best[W];
         const unsigned packet = joinPacket(p, rays, tMin, lanes);
         for (unsigned m = lanes & ~packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             found |= unsigned(intersect(b, rays[j], tMin[j], tMaxIn[j], hits[j])) << j;
         }
         if (!packet) return found;
-        for (unsigned m = packet; m; m &= m - 1) {
-            const int j = __builtin_ctz(m);
-            tMax[j] = tMaxIn[j];
-            best[j] = nullptr;
+        // Every lane's best cleared (W stores, no loop over the packet's bits); tMax copied
+        // whole when the packet holds all W lanes (then tMaxIn has W entries).
+        for (int j = 0; j < W; ++j)
+            best[j].p = nullptr;
+        if (packet == (1u << W) - 1) {
+            std::memcpy(tMax, tMaxIn, sizeof tMax);
+        } else {
+            for (unsigned m = packet; m; m &= m - 1)
+                tMax[__builtin_ctz(m)] = tMaxIn[__builtin_ctz(m)];
         }
-        // intersect()'s offer, per ray (ties: the primitive later in the scene wins).
+        // intersect()'s offer, per ray (offerNearest: its rule for ties too).
         auto offer = [&](int j, const Primitive& q, std::uint8_t kind, std::uint32_t index,
                          const RayData* r) {
-            const double before = tMax[j];
-            if (!exactIntersect(q, kind, r, rays[j], tMin[j], tMax[j], hits[j])) return;
-            if (best[j] && hits[j].t == before && index < bestIndex[j]) {
-                exactIntersect(*best[j], bestKind[j], r, rays[j], tMin[j], before, hits[j]);
-                return;
-            }
-            best[j] = &q;
-            bestKind[j] = kind;
-            bestIndex[j] = index;
-            tMax[j] = hits[j].t;
+            offerNearest(q, kind, index, r, rays[j], tMin[j], tMax[j], hits[j], best[j]);
         };
-        for (unsigned m = packet; m; m &= m - 1)
-            for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
-                offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i],
-                      nullptr);
+        if (!b.unbounded_.empty())
+            for (unsigned m = packet; m; m &= m - 1)
+                for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
+                    offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther,
+                          b.unboundedIndex_[i], nullptr);
         walkPacket<false>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
             offer(j, *b.order_[i], b.kind_[i], b.orderIndex_[i], r);
             return true;
         });
         for (unsigned m = packet; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            if (best[j]) found |= 1u << j;
+            if (best[j].p) found |= 1u << j;
         }
         return found;
     }
@@ -1245,7 +1409,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return blocked;
         }
         Packet p;
-        for (unsigned m = lanes; m; m &= m - 1) {
+        for (unsigned m = b.unbounded_.empty() ? 0 : lanes; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             for (const Primitive* q : b.unbounded_)
                 if (q != skipOf(j) && q->occluded(rays[j], tMin[j], tMax[j])) {
@@ -1297,6 +1461,36 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return p.occluded(ray, tMin, tMax);
     }
 
+    // The nearest-hit rule of intersect() and intersectPacket() (one per ray): primitive p
+    // (`index`: its place in the scene) offered to a ray whose nearest so far is `best` at
+    // tMax. Candidates write straight into `hit` (each is asked only for t <= the nearest so
+    // far). On equal t the plain loop keeps the primitive later in the scene; when an
+    // earlier one ties, the later one's record is restored by asking it again (the same
+    // exact code gives the same bits). Exact ties are rare: records stay uncopied.
+    // Inlined into both callers: the state stays in the caller's registers or arrays.
+    // A ray's nearest so far (p null: none yet). No member initialisers: the packets'
+    // arrays of them set p alone, for their rays only.
+    struct Best {
+        const Primitive* p;
+        std::uint8_t kind;
+        std::uint32_t index;
+    };
+    __attribute__((always_inline)) static void offerNearest(const Primitive& p, std::uint8_t kind,
+                                                            std::uint32_t index, const RayData* r,
+                                                            const Ray& ray, double tMin,
+                                                            double& tMax, Hit& hit, Best& best) {
+        const double before = tMax;
+        if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
+        if (best.p && hit.t == before && index < best.index) {
+            exactIntersect(*best.p, best.kind, r, ray, tMin, before, hit);
+            return;
+        }
+        best.p = &p;
+        best.kind = kind;
+        best.index = index;
+        tMax = hit.t;
+    }
+
     // intersect()'s leaf visitor. Its state (the nearest so far, the limit) lives in its own
     // members rather than in references to the caller's locals: with a lambda capturing
     // them by reference GCC kept the closure in memory, stored ~10 pointers per ray and read
@@ -1306,26 +1500,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const Ray& ray;
         Hit& hit;
         double tMin, tMax;
-        const Primitive* best = nullptr;
-        std::uint8_t bestKind = bvh_detail::kOther;
-        std::uint32_t bestIndex = 0;
+        Best best{nullptr, bvh_detail::kOther, 0};
 
-        // Candidates write straight into `hit` (each is asked only for t <= the nearest so
-        // far). On equal t the plain loop keeps the primitive later in the scene; when an
-        // earlier one ties, the later one's record is restored by asking it again (the same
-        // exact code gives the same bits). Exact ties are rare: records stay uncopied.
         __attribute__((always_inline)) void offer(const Primitive& p, std::uint8_t kind,
                                                   std::uint32_t index, const RayData* r) {
-            const double before = tMax;
-            if (!exactIntersect(p, kind, r, ray, tMin, tMax, hit)) return;
-            if (best && hit.t == before && index < bestIndex) {
-                exactIntersect(*best, bestKind, r, ray, tMin, before, hit);
-                return;
-            }
-            best = &p;
-            bestKind = kind;
-            bestIndex = index;
-            tMax = hit.t;
+            offerNearest(p, kind, index, r, ray, tMin, tMax, hit, best);
         }
         __attribute__((always_inline)) bool operator()(std::uint32_t i, const RayData* r) {
             offer(*b.order_[i], b.kind_[i], b.orderIndex_[i], r);
@@ -1358,7 +1537,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
                 s.offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
         walk<false, kFloatOnly>(b, ray, tMin, s.tMax, s, pre);
-        return s.best != nullptr;
+        return s.best.p != nullptr;
     }
 
     // `skip`: a flat primitive the feeler starts on (Aggregate::forEachBlocker), never asked;
