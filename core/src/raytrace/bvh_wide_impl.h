@@ -947,6 +947,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int signs = int(((sx >> f) & 1) | (((sy >> f) & 1) << 1) | (((sz >> f) & 1) << 2));
         const unsigned joined =
             valid & (signs & 1 ? sx : ~sx) & (signs & 2 ? sy : ~sy) & (signs & 4 ? sz : ~sz);
+        // Every lane joined (most packets of a picture): the eight lanes unrolled at fixed
+        // offsets, no loop over the bits (17 instructions a lane to ~5; issue 21, eighth
+        // session).
+        if (kFull && joined == (1u << W) - 1) {
+            for (int j = 0; j < W; ++j)
+                setRayData(p.r[j], signs, true, rays[j]);
+            return joined;
+        }
         for (unsigned m = joined; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
             setRayData(p.r[j], signs, true, rays[j]);
