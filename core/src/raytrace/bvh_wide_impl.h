@@ -911,8 +911,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 const int src = kFull || (lanes >> (j + k)) & 1 ? j + k : firstLane;
                 a[k] = _mm256_loadu_pd(&rays[src].origin.x);    // ox oy oz dx
                 d[k] = _mm256_loadu_pd(&rays[src].direction.x); // dx dy dz (weight)
-                tm[j + k] = tMin[src];
+                if constexpr (!kFull) tm[j + k] = tMin[src];
             }
+            if constexpr (kFull) _mm256_store_pd(tm + j, _mm256_loadu_pd(tMin + j));
             const __m256d t0 = _mm256_unpacklo_pd(a[0], a[1]), t1 = _mm256_unpackhi_pd(a[0], a[1]);
             const __m256d t2 = _mm256_unpacklo_pd(a[2], a[3]), t3 = _mm256_unpackhi_pd(a[2], a[3]);
             const __m256d u0 = _mm256_unpacklo_pd(d[0], d[1]), u1 = _mm256_unpackhi_pd(d[0], d[1]);
@@ -943,10 +944,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
         valid &= lanes;
         if (!valid) return 0;
         // The first ray that passes sets the signs; the others must share them.
+        // Each axis's sign of the first ray as all ones or zero, the rays that differ from it
+        // by an xor (no branch or select per axis).
         const int f = __builtin_ctz(valid);
-        const int signs = int(((sx >> f) & 1) | (((sy >> f) & 1) << 1) | (((sz >> f) & 1) << 2));
-        const unsigned joined =
-            valid & (signs & 1 ? sx : ~sx) & (signs & 2 ? sy : ~sy) & (signs & 4 ? sz : ~sz);
+        const unsigned bx = 0u - ((sx >> f) & 1), by = 0u - ((sy >> f) & 1),
+                       bz = 0u - ((sz >> f) & 1);
+        const int signs = int((bx & 1) | (by & 2) | (bz & 4));
+        const unsigned joined = valid & ~((sx ^ bx) | (sy ^ by) | (sz ^ bz));
         // Every lane joined (most packets of a picture): the eight lanes unrolled at fixed
         // offsets, no loop over the bits (17 instructions a lane to ~5; issue 21, eighth
         // session).
@@ -1407,7 +1411,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 const __m256i* q = reinterpret_cast<const __m256i*>(&best[j]);
                 const __m256i ps = _mm256_permute4x64_epi64(
                     _mm256_unpacklo_epi64(_mm256_loadu_si256(q), _mm256_loadu_si256(q + 1)), 0xD8);
-                return unsigned(_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(ps, zero))));
+                return unsigned(
+                    _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(ps, zero))));
             };
             return found | (~(nulls(0) | nulls(4) << 4) & 0xFFu);
         }
