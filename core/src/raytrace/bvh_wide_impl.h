@@ -717,7 +717,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // the single walk's verdict, with its written-down margins), then each candidate's
     // exact code. So every hit is the one its single walk finds.
     struct Packet {
-        RayData r[W];
+        // Without RayData's default initializers (W·5 flag stores a packet): joinLane sets
+        // what a joined lane's walk and set-ups read (issue 21, eighth session).
+        union {
+            RayData r[W];
+        };
+        Packet() {}
         alignas(32) float on[3][W], of[3][W], inv[3][W], invFar[3][W], tMin[W], lim[W];
         const std::size_t* off;
         // The transposed leaf tests' per-lane values (set up at the first run of their
@@ -956,14 +961,22 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // session).
         if (kFull && joined == (1u << W) - 1) {
             for (int j = 0; j < W; ++j)
-                setRayData(p.r[j], signs, true, rays[j]);
+                joinLane(p.r[j], signs, rays[j]);
             return joined;
         }
         for (unsigned m = joined; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            setRayData(p.r[j], signs, true, rays[j]);
+            joinLane(p.r[j], signs, rays[j]);
         }
         return joined;
+    }
+    // A joined ray's RayData: setRayData's fields and the set-up flags RayData's
+    // initializers would clear (Packet::r has none run).
+    __attribute__((always_inline)) static void joinLane(RayData& r, int signs, const Ray& ray) {
+        setRayData(r, signs, true, ray);
+        r.sphReady = false;
+        r.shReady = false;
+        r.mtReady = false;
     }
     // Eight doubles rounded to float (joinPacket, 8 lanes). V, not __m256, as the return
     // type: the SSE2 file never instantiates it (an __m256 return there is an ABI warning).
@@ -994,7 +1007,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 if (!(om < 1e30 && inRange<false>(dxy) == 3 && (inRange<false>(dz) & 1))) continue;
                 signs = sg;
                 joined |= 1u << j;
-                setRayData(p.r[j], sg, true, ray);
+                joinLane(p.r[j], sg, ray);
                 const double* op = &o.x;
                 const double* dp = &d.x;
                 for (int a = 0; a < 3; ++a) {
