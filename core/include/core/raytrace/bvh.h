@@ -179,8 +179,8 @@ class Bvh : public Aggregate {
     };
     // The wide nodes of the tree traversed (empty for width 2, for the other width and
     // for a tree of one leaf): the tests aim rays at their boxes' corners, edges and faces.
-    const std::vector<WideNode>& wideNodes() const { return wnodes_; }
-    const std::vector<WideNode8>& wideNodes8() const { return wnodes8_; }
+    const bvh_detail::KeptVector<WideNode>& wideNodes() const { return wnodes_; }
+    const bvh_detail::KeptVector<WideNode8>& wideNodes8() const { return wnodes8_; }
     // The quantised nodes (empty unless BvhStats::quantised), and the same nodes with
     // their boxes decoded as the walk decodes them (for the tests: rays at their corners).
     const std::vector<QuantNode8>& quantNodes8() const { return qnodes8_; }
@@ -217,7 +217,7 @@ class Bvh : public Aggregate {
     // besideTasks and besideAppend: the caller's work run beside the collapse's parallel
     // tasks and beside their serial append (bvh_wide.cpp).
     template <int W>
-    void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
+    void collapseInto(const void* buildNodes, bvh_detail::KeptVector<WideNodeT<W>>& out,
                       const std::function<void()>& besideTasks,
                       const std::function<void()>& besideAppend);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
@@ -251,8 +251,10 @@ class Bvh : public Aggregate {
     std::vector<const Primitive*> unbounded_; // tested for every ray
     // Wide trees only:
     const WidePath* path_ = nullptr;            // the SIMD path and width traversed
-    std::vector<WideNode> wnodes_;              // width 4
-    std::vector<WideNode8> wnodes8_;            // width 8
+    // Issue 21: kept memory (bvh_detail::KeptAlloc), as the leaf arrays: through malloc a
+    // million triangles' 27 MB of nodes were faulted afresh by every build (6,633 faults).
+    bvh_detail::KeptVector<WideNode> wnodes_;   // width 4
+    bvh_detail::KeptVector<WideNode8> wnodes8_; // width 8
     std::vector<QuantNode8> qnodes8_;           // width 8, quantised (wnodes8_ then empty)
     std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
