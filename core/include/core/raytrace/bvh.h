@@ -247,7 +247,11 @@ class Bvh : public Aggregate {
     // Wide trees: the union of the root node's float child boxes (lo x, y, z, hi x, y, z),
     // tested by the walk before a ray's lanes are set up (bvh_wide_impl.h, initRay).
     alignas(16) float rootF_[2][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}};
-    std::vector<const Primitive*> order_;     // primitives in leaf order
+    // Issue 21: the per-primitive arrays (order_, orderIndex_, kind_, run_) in kept memory
+    // too: malloc'd, a million triangles' 15 MB came back as fresh pages in every
+    // two-thread build once the wide nodes no longer left a freed chunk for them (3,636
+    // faults).
+    bvh_detail::KeptVector<const Primitive*> order_; // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     // Wide trees only:
     const WidePath* path_ = nullptr;            // the SIMD path and width traversed
@@ -256,12 +260,15 @@ class Bvh : public Aggregate {
     bvh_detail::KeptVector<WideNode> wnodes_;   // width 4
     bvh_detail::KeptVector<WideNode8> wnodes8_; // width 8
     std::vector<QuantNode8> qnodes8_;           // width 8, quantised (wnodes8_ then empty)
-    std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
+    bvh_detail::KeptVector<std::uint32_t> orderIndex_; // scene index of order_[i] (ties:
+                                                       // later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
-    std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
+    // Of order_[i]: the exact code to call (bvh_wide.cpp kinds).
+    bvh_detail::KeptVector<std::uint8_t> kind_;
     std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
-    std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
+    // At the first of a run of one float test: its length.
+    bvh_detail::KeptVector<std::uint16_t> run_;
     using Floats = bvh_detail::KeptVector<float>;
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
