@@ -812,7 +812,9 @@ void* bigAlloc(std::size_t bytes) {
         return p;
     }
 #endif
-    void* p = std::malloc(bytes ? bytes : 1);
+    // 64-byte aligned: the wide nodes (alignas(64), the walk's aligned loads) are kept
+    // memory too, and malloc aligns to 16 only.
+    void* p = std::aligned_alloc(64, (bytes + 63) / 64 * 64 + (bytes ? 0 : 64));
     if (!p) throw std::bad_alloc();
     return p;
 }

@@ -164,7 +164,7 @@ void Bvh::fillLeafData(std::uint32_t i) {
 }
 
 template <int W>
-void Bvh::collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
+void Bvh::collapseInto(const void* buildNodes, bvh_detail::KeptVector<WideNodeT<W>>& out,
                        const std::function<void()>& besideTasks,
                        const std::function<void()>& besideAppend) {
     const auto* build = static_cast<const BuildNode*>(buildNodes);
@@ -582,7 +582,7 @@ bool Bvh::quantiseNodes() {
         }
     }
     qnodes8_ = std::move(out);
-    std::vector<WideNode8>().swap(wnodes8_);
+    bvh_detail::KeptVector<WideNode8>().swap(wnodes8_);
     return true;
 }
 

@@ -225,7 +225,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             return nd.hi[a][c];
     }
 
-    static const std::vector<Node>& nodesOf(const Bvh& b) {
+    static const auto& nodesOf(const Bvh& b) {
         if constexpr (Q)
             return b.qnodes8_;
         else if constexpr (W == 4)
@@ -543,7 +543,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 if (!leaf(i, nullptr)) return; // no ray data: the exact tests set up their own
             return;
         }
-        const std::vector<Node>& nodes = nodesOf(b);
+        const auto& nodes = nodesOf(b);
         // The leaves' useFloat test left out only in the any-hit walks: in the nearest-hit
         // walk GCC then laid the loop out worse (callgrind, eye rays: mesh 481 -> 487, balls
         // 4 1108 -> 1120 instructions a ray; issue 21, eighth session).
@@ -1110,7 +1110,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
     template <bool kAnyHit, class Leaf>
     static void walkPacket(const Bvh& b, Packet& p, unsigned lanes, const double* tMax,
                            Leaf&& leaf) {
-        const std::vector<Node>& nodes = nodesOf(b);
+        const auto& nodes = nodesOf(b);
         constexpr float kInfF = std::numeric_limits<float>::infinity();
         // Lanes outside the packet: the limit −inf (no box is entered by them).
         if constexpr (W == 8) {

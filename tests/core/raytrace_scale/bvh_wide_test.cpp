@@ -186,8 +186,8 @@ bool compareRayOn(const Refs& r, const Bvh& wide, const Ray& ray, double tMin, d
 }
 
 // Rays aimed at corners, along edges and from faces of the wide nodes' child boxes.
-template <class Node>
-int adversarialRaysOf(const Refs& r, const std::vector<Node>& nodes, std::mt19937_64& g, int count,
+template <class Node, class A>
+int adversarialRaysOf(const Refs& r, const std::vector<Node, A>& nodes, std::mt19937_64& g, int count,
                       double scale) {
     REQUIRE_FALSE(nodes.empty());
     constexpr int kW = int(sizeof(Node::count) / sizeof(Node::count[0]));

@@ -224,8 +224,8 @@ void randomPackets(const Scene& sc, double s, std::mt19937_64& g, int count, Pac
 
 // Packets aimed at the corners of one wide node's child box: from one origin outside the
 // box's lower corner (all directions in one octant), and from points on its faces.
-template <class Node>
-void cornerPackets(const Trees& t, const std::vector<Node>& nodes, std::mt19937_64& g, int count,
+template <class Node, class A>
+void cornerPackets(const Trees& t, const std::vector<Node, A>& nodes, std::mt19937_64& g, int count,
                    double s, PacketCounts& n) {
     REQUIRE_FALSE(nodes.empty());
     constexpr int kW = int(sizeof(Node::count) / sizeof(Node::count[0]));

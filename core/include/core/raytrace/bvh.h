@@ -179,8 +179,8 @@ class Bvh : public Aggregate {
     };
     // The wide nodes of the tree traversed (empty for width 2, for the other width and
     // for a tree of one leaf): the tests aim rays at their boxes' corners, edges and faces.
-    const std::vector<WideNode>& wideNodes() const { return wnodes_; }
-    const std::vector<WideNode8>& wideNodes8() const { return wnodes8_; }
+    const bvh_detail::KeptVector<WideNode>& wideNodes() const { return wnodes_; }
+    const bvh_detail::KeptVector<WideNode8>& wideNodes8() const { return wnodes8_; }
     // The quantised nodes (empty unless BvhStats::quantised), and the same nodes with
     // their boxes decoded as the walk decodes them (for the tests: rays at their corners).
     const std::vector<QuantNode8>& quantNodes8() const { return qnodes8_; }
@@ -217,7 +217,7 @@ class Bvh : public Aggregate {
     // besideTasks and besideAppend: the caller's work run beside the collapse's parallel
     // tasks and beside their serial append (bvh_wide.cpp).
     template <int W>
-    void collapseInto(const void* buildNodes, std::vector<WideNodeT<W>>& out,
+    void collapseInto(const void* buildNodes, bvh_detail::KeptVector<WideNodeT<W>>& out,
                       const std::function<void()>& besideTasks,
                       const std::function<void()>& besideAppend);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
@@ -247,19 +247,28 @@ class Bvh : public Aggregate {
     // Wide trees: the union of the root node's float child boxes (lo x, y, z, hi x, y, z),
     // tested by the walk before a ray's lanes are set up (bvh_wide_impl.h, initRay).
     alignas(16) float rootF_[2][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}};
-    std::vector<const Primitive*> order_;     // primitives in leaf order
+    // Issue 21: the per-primitive arrays (order_, orderIndex_, kind_, run_) in kept memory
+    // too: malloc'd, a million triangles' 15 MB came back as fresh pages in every
+    // two-thread build once the wide nodes no longer left a freed chunk for them (3,636
+    // faults).
+    bvh_detail::KeptVector<const Primitive*> order_; // primitives in leaf order
     std::vector<const Primitive*> unbounded_; // tested for every ray
     // Wide trees only:
     const WidePath* path_ = nullptr;            // the SIMD path and width traversed
-    std::vector<WideNode> wnodes_;              // width 4
-    std::vector<WideNode8> wnodes8_;            // width 8
+    // Issue 21: kept memory (bvh_detail::KeptAlloc), as the leaf arrays: through malloc a
+    // million triangles' 27 MB of nodes were faulted afresh by every build (6,633 faults).
+    bvh_detail::KeptVector<WideNode> wnodes_;   // width 4
+    bvh_detail::KeptVector<WideNode8> wnodes8_; // width 8
     std::vector<QuantNode8> qnodes8_;           // width 8, quantised (wnodes8_ then empty)
-    std::vector<std::uint32_t> orderIndex_;     // scene index of order_[i] (ties: later wins)
+    bvh_detail::KeptVector<std::uint32_t> orderIndex_; // scene index of order_[i] (ties:
+                                                       // later wins)
     std::vector<std::uint32_t> unboundedIndex_; // scene index of unbounded_[i]
     // Leaves are sorted into runs: spheres, then triangles, then the rest.
-    std::vector<std::uint8_t> kind_; // of order_[i]: exact code to call (bvh_wide.cpp kinds)
+    // Of order_[i]: the exact code to call (bvh_wide.cpp kinds).
+    bvh_detail::KeptVector<std::uint8_t> kind_;
     std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
-    std::vector<std::uint16_t> run_; // at the first of a run of one float test: its length
+    // At the first of a run of one float test: its length.
+    bvh_detail::KeptVector<std::uint16_t> run_;
     using Floats = bvh_detail::KeptVector<float>;
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
