@@ -989,6 +989,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         double(&oo)[3][W] = p.oo;
         double(&dd)[3][W] = p.dd;
         unsigned joined = 0;
+        // No lane asked (occludedPacket's lanes all blocked already): joinChecks takes its
+        // first lane's ray for the lanes outside the packet, and there is none.
+        if (!lanes) return 0;
         if constexpr (W == 8) {
             joined = lanes == 0xFFu ? joinChecks<true>(p, rays, tMin, lanes, omax, tm)
                                     : joinChecks<false>(p, rays, tMin, lanes, omax, tm);
