@@ -141,7 +141,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             // The bound's parts, each raised by 2^-20 over its double value (float's rounding
             // to nearest takes at most 2^-24 of it; an underflow at most 2^-150, which
             // kMtFloor covers); beyond the ranges X = Y = +inf: no rejection.
-            constexpr double kUp = 1 + 0x1p-20;
+            constexpr double kUp = bvh_detail::kMtUp;
             const bool ok = ol <= bvh_detail::kMtMaxCoord && dm <= bvh_detail::kMtMaxDir;
             const double x = dm * ol;
             constexpr float kInfF = std::numeric_limits<float>::infinity();
@@ -505,9 +505,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
     }
 
     // The walk's limit in float for a nearest hit so far at tMax (widened).
+    // A limit beyond kLimitCap is infinite in float; a finite one is raised by kLimitUp over
+    // its rounding (limitOf, and walkPacket's lanes).
+    static constexpr double kLimitCap = 3e38;
+    static constexpr float kLimitUp = 1 + 0x1p-20f;
     static float limitOf(double tMax) {
         const double lim = tMax * bvh_detail::kFarScale;
-        return lim > 3e38 ? std::numeric_limits<float>::infinity() : float(lim) * (1 + 0x1p-20f);
+        return lim > kLimitCap ? std::numeric_limits<float>::infinity() : float(lim) * kLimitUp;
     }
 
     // Calls leaf(i, ray data or nullptr) for the primitives of every leaf the ray's segment (tMin,
@@ -804,7 +808,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             // The rays' own RayData keep theirs unset (mtSetup fills them if they run their
             // own leaf tests).
             using namespace bvh_detail;
-            constexpr double kUp = 1 + 0x1p-20; // mtSetup's
+            constexpr double kUp = kMtUp;
             const __m256d absMask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffff));
             for (int j = 0; j < W; j += 4) {
                 __m256d ao[3], ad[3];
@@ -883,16 +887,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return ~unsigned(reject) & ((1u << W) - 1);
     }
 
-    // Sets up the rays of `lanes` that can join the packet and returns their mask; the others
-    // (double walk, a zero direction component, or other signs than the first joining
-    // ray's) are traced one by one. initRay's checks per ray; then initRay's float values
-    // (the same IEEE operations lane by lane: conversions, 1/d, products, sums, so the same
-    // bits) four rays at a time, stored straight into the packet's lanes: one division for
-    // four rays instead of one a ray (issue 21: the per-ray set-up was a fifth of a mesh
-    // packet's instructions). The ray's own RayData registers are filled when it first
-    // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
-    // float values are floatRay's operations, written out four rays at a time (one call per
-    // ray would cost the division per ray this saves).
     // joinPacket's per-ray part for 8 lanes, four rays at a time: each ray's origin and
     // direction loaded as two rows of four doubles and transposed into the packet's lanes
     // (oo, dd), then initRay's checks for four rays in one (|d| in [1e-30, 1e30] on every
@@ -984,6 +978,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm256_cvtpd_ps(_mm256_load_pd(x))),
                                     _mm256_cvtpd_ps(_mm256_load_pd(x + 4)), 1);
     }
+    // Sets up the rays of `lanes` that can join the packet and returns their mask; the others
+    // (double walk, a zero direction component, or other signs than the first joining
+    // ray's) are traced one by one. initRay's checks per ray; then initRay's float values
+    // (the same IEEE operations lane by lane: conversions, 1/d, products, sums, so the same
+    // bits) four rays at a time, stored straight into the packet's lanes: one division for
+    // four rays instead of one a ray (issue 21: the per-ray set-up was a fifth of a mesh
+    // packet's instructions). The ray's own RayData registers are filled when it first
+    // runs its own leaf tests (fillLane). The range checks are initRay's (inRange); the
+    // float values are floatRay's operations, written out four rays at a time (one call per
+    // ray would cost the division per ray this saves).
     static unsigned joinPacket(Packet& p, const Ray* rays, const double* tMin, unsigned lanes) {
         alignas(32) double omax[W], tm[W];
         double(&oo)[3][W] = p.oo;
@@ -1129,8 +1133,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                   _mm256_set1_pd(bvh_detail::kFarScale));
                 const __m256d capped =
                     _mm256_blendv_pd(lim, _mm256_set1_pd(std::numeric_limits<double>::infinity()),
-                                     _mm256_cmp_pd(lim, _mm256_set1_pd(3e38), _CMP_GT_OQ));
-                const __m128 f = _mm_mul_ps(_mm256_cvtpd_ps(capped), _mm_set1_ps(1 + 0x1p-20f));
+                                     _mm256_cmp_pd(lim, _mm256_set1_pd(kLimitCap), _CMP_GT_OQ));
+                const __m128 f = _mm_mul_ps(_mm256_cvtpd_ps(capped), _mm_set1_ps(kLimitUp));
                 _mm_store_ps(&p.lim[h],
                              _mm_blendv_ps(_mm_set1_ps(-kInfF), f, _mm_castsi128_ps(in)));
             }

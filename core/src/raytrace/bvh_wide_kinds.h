@@ -74,6 +74,9 @@ constexpr double kMtDoubleMargin = 0x1p-46; // × D·(V + |o|₁)²: the double 
 constexpr double kMtFloor = 0x1p-120;       // underflow
 constexpr double kMtMaxCoord = 0x1p30;      // V and |o|₁ beyond: no rejection (overflow)
 constexpr double kMtMaxDir = 0x1p60;        // D beyond: no rejection
+// The filter bound's parts raised by 2^-20 over their double values before rounding to float
+// (rounding to nearest takes at most 2^-24 of them): mtSetup and triangleLanes.
+constexpr double kMtUp = 1 + 0x1p-20;
 // The slab test in float: entry = (near − o')·inv, exit = (far − o'')·invFar, where
 // inv = 1/float(d) and invFar = inv·(1 + 2^-19), each rounded (u = 2^-24; o', o'' are the
 // origin widened for its own rounding). Then inv <= (1/d)(1 + 2u), so an entry comes out
