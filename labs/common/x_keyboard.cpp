@@ -20,6 +20,30 @@ constexpr std::chrono::milliseconds kMarkerTimeout{1000};
 
 XKeyboard::~XKeyboard() {
     if (display_) XCloseDisplay(dpy(display_));
+    xkb_keymap_unref(static_cast<xkb_keymap*>(usKeymap_));
+}
+
+// The US layout's ASCII key at X keycode `keycode` and shift level `level`, or 0. From the
+// keyboard's first group when that is Latin (us,ru: the usual set-up); with no Latin layout
+// at all (`setxkbmap ru` alone) from xkbcommon's own US keymap (xkeyboard-config's evdev
+// rules: X keycodes are xkb keycodes there), compiled once, at the first such press.
+unsigned XKeyboard::usKey(unsigned keycode, int level) {
+    Display* d = dpy(display_);
+    const KeySym first = XkbKeycodeToKeysym(d, KeyCode(keycode), 0, level);
+    if (first >= 0x20 && first <= 0x7e) return unsigned(first); // Latin keysyms are ASCII
+    if (!usKeymap_ && !usKeymapFailed_) {
+        xkb_context* ctx = xkb_context_new(XKB_CONTEXT_NO_FLAGS);
+        const xkb_rule_names names{"evdev", "pc105", "us", "", ""};
+        usKeymap_ = ctx ? xkb_keymap_new_from_names(ctx, &names, XKB_KEYMAP_COMPILE_NO_FLAGS)
+                        : nullptr;
+        xkb_context_unref(ctx); // the keymap holds its own reference
+        usKeymapFailed_ = usKeymap_ == nullptr;
+    }
+    if (!usKeymap_) return 0;
+    const xkb_keysym_t* syms = nullptr;
+    const int n = xkb_keymap_key_get_syms_by_level(static_cast<xkb_keymap*>(usKeymap_), keycode,
+                                                   0, xkb_level_index_t(level), &syms);
+    return n == 1 && syms[0] >= 0x20 && syms[0] <= 0x7e ? unsigned(syms[0]) : 0;
 }
 
 bool XKeyboard::open(const char* displayName, unsigned long window) {
@@ -49,15 +73,21 @@ void XKeyboard::read() {
         const uint32_t c = xkb_keysym_to_utf32(xkb_keysym_t(typed));
         if (c > 0xFF && c < 0x10000) // ImGui 1.86 keeps 16-bit characters
             queue_.push_back({Action::Text, c, now});
-        if (group != 0 && !(state & (ControlMask | Mod1Mask))) { // Ctrl/Alt: GLUT's
-            const KeySym us = XkbKeycodeToKeysym(d, keycode, 0, level);
-            if (us >= 0x20 && us <= 0x7e) // Latin keysyms are their ASCII codes
-                queue_.push_back({Action::LabKey, unsigned(us), now});
+        // A press in a second group, or of a key that types no ASCII character (the
+        // Russian layout as the only one: its group is the first), is the US key at that
+        // place. Ctrl/Alt: GLUT's.
+        bool acted = false;
+        const bool ascii = typed >= 0x20 && typed <= 0x7e;
+        if ((group != 0 || !ascii) && !(state & (ControlMask | Mod1Mask))) {
+            if (const unsigned us = usKey(keycode, level)) {
+                queue_.push_back({Action::LabKey, us, now});
+                acted = true;
+            }
         }
         char chars[8];
         KeySym looked = 0;
         if (XLookupString(&e.xkey, chars, sizeof chars, &looked, nullptr) > 0)
-            queue_.push_back({Action::GlutCharacter, group, now});
+            queue_.push_back({Action::GlutCharacter, acted ? 1u : 0u, now});
     }
 }
 
@@ -99,9 +129,9 @@ bool XKeyboard::glutCharacter(const std::function<void(unsigned)>& text,
             labKey(int(a.value));
     }
     if (queue_.empty()) return true; // a press this reader never saw
-    const unsigned group = queue_.front().value;
+    const bool acted = queue_.front().value != 0;
     queue_.pop_front();
-    return group == 0;
+    return !acted;
 }
 
 } // namespace wb
