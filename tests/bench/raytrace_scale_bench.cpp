@@ -41,6 +41,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -101,10 +103,13 @@ std::string withCommas(long long v) {
 }
 
 // A 9,248-triangle bumpy sphere (68×68 grid, two triangles a cell, with vertex
-// normals), written as OBJ so the bench loads it through tinyobjloader.
+// normals), written as OBJ so the bench loads it through tinyobjloader. Two runs
+// of one build share the directory: each writes its own file and renames it into
+// place, so neither ever reads the other's half-written mesh (one run aborted so).
 std::string writeMesh(const std::string& dir) {
     const std::string path = dir + "/bumpy_sphere.obj";
-    std::ofstream out(path);
+    const std::string tmp = path + "." + std::to_string(::getpid()) + ".tmp";
+    std::ofstream out(tmp);
     const int n = 68;
     const double pi = 3.14159265358979323846;
     auto pos = [&](int i, int j) {
@@ -137,6 +142,11 @@ std::string writeMesh(const std::string& dir) {
         tris += 2;
     }
     (void)tris;
+    out.close();
+    if (!out || std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::fprintf(stderr, "raytrace_scale_bench: cannot write %s\n", path.c_str());
+        std::exit(1);
+    }
     return path;
 }
 
