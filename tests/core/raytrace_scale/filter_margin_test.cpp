@@ -222,12 +222,12 @@ TEST_CASE("rt_bvh_wide: the triangle filter's bound holds against rays its float
     // committed): red at 12 and above, green at 10, for kMtEdgeMargin, for mtSetup's X and Y
     // (the single ray; also the SSE2/AVX2 4-wide packets, which copy them) and for
     // triangleLanes' X and Y (8-wide packets). The largest error of these rays is ~7.2
-    // against 64 (the input roundings' 5.4 below, the products' 1.8), so no ray makes a
-    // cut by 9 red. Not reachable by any ray (green even divided by 1e9): kMtNormalMargin
-    // (its term is at most the edge term, |n|₁ <= E² <= 2E·V, and the float error stays far
-    // below the edge term alone); kMtDoubleMargin and Z's 2^-46·D·|o|₁² part matter only
-    // where a triangle is below ~2^-29 of its distance across, where the double code's own
-    // error would have to reach 128/cut·u_d·D·(V + |o|₁)² — not built here.
+    // against 64 (the input roundings' 5.4 below, the products' 1.8; ~8 for any ray to
+    // first order), so no ray makes a cut by 8 red. Not reachable by any ray (green even divided by
+    // 1e9): kMtNormalMargin (its term is at most the edge term, |n|₁ <= E² <= 2E·V, and the float
+    // error stays far below the edge term alone); kMtDoubleMargin and Z (the double code's own
+    // error for a ray it hits is ~u_d·D·E·(V + |o|₁), its sheared coordinates being the vertices'
+    // offsets from the hit point: ~2^-35 of the edge term; the floor has ~2^25 to spare).
     std::mt19937_64 g(2121);
     std::uniform_real_distribution<double> u(0, 1);
     Stats st[2];
