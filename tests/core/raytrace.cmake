@@ -28,6 +28,7 @@ wb_test(raytrace_scale_test
     raytrace_scale/phong_direct_test.cpp
     raytrace_scale/self_skip_test.cpp
     raytrace_scale/packet_test.cpp
+    raytrace_scale/filter_margin_test.cpp
   LIBS core)
 file(MAKE_DIRECTORY ${CMAKE_BINARY_DIR}/test-out)
 target_compile_definitions(raytrace_scale_test PRIVATE WB_TEST_TMP="${CMAKE_BINARY_DIR}/test-out")
