@@ -417,6 +417,11 @@ struct Builder {
     double rootArea = 1;
     Ref* buf[2] = {nullptr, nullptr};
     std::uint32_t* order = nullptr; // scene index per leaf slot
+    // The primitive per leaf slot (Bvh::order_), written with `order` (issue 21, ninth
+    // session: a parallel pass of its own after the tree, each of its loads a random
+    // read of prims, barely faster with two threads than with one).
+    const Primitive** leafPrim = nullptr;
+    const std::unique_ptr<Primitive>* prims = nullptr;
     bool parallel = false;          // blocks and subtrees as TBB tasks
     // Wide trees (issue 21): the collapse makes every subtree of at most 4 primitives
     // (8 when all are exactly Sphere) one wide leaf whatever its inner splits
@@ -710,8 +715,10 @@ struct Builder {
         node.offset = std::uint32_t(t.begin);
         node.count = std::uint16_t(t.end - t.begin);
         const Ref* refs = buf[t.buffer];
-        for (std::size_t i = t.begin; i < t.end; ++i)
+        for (std::size_t i = t.begin; i < t.end; ++i) {
             order[i] = refs[i].prim;
+            leafPrim[i] = prims[refs[i].prim].get();
+        }
     }
 };
 
@@ -1084,10 +1091,13 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         stats_.unbounded = unbounded_.size();
         if (n == 0) return;
         orderIndex_.resize(n);
+        order_.resize(n);
         Builder b{options,
                   rootBox.area() > 0 ? rootBox.area() : 1.0,
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
+                  order_.data(),
+                  prims.data(),
                   parallel,
                   wide && !options.fullBinary ? kinds : nullptr};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
@@ -1101,16 +1111,6 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         stats_.leaves = total.leaves;
         stats_.maxDepth = total.maxDepth;
         stats_.sahCost = total.sahCost;
-        order_.resize(n);
-        auto fill = [&](std::size_t lo, std::size_t hi) {
-            for (std::size_t i = lo; i < hi; ++i)
-                order_[i] = prims[orderIndex_[i]].get();
-        };
-        if (parallel)
-            parallelFor((n + kBlock - 1) / kBlock,
-                        [&](std::size_t k) { fill(k * kBlock, std::min(n, (k + 1) * kBlock)); });
-        else
-            fill(0, n);
     };
     // The collapse runs in the build's arena too: its parallel parts use the same threads,
     // and its serial parts run beside them (Bvh::collapseInto).
