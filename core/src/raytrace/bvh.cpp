@@ -298,21 +298,24 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
     const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
     const __m128 ninf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
     __m128* T = &sc.lanes.data()->v; // V is one __m128: the array is one of __m128
+    // Issue 21 (ninth session): three rows to three columns in five shuffles (lane 3 of
+    // each column: lane 3 of z, 0 for a bin with references, ±inf for an empty one), the
+    // arrays' pointers in locals (the __m128 stores may alias anything, so `sc.binBox[…]`
+    // reloaded them at every bin): 54 -> 36 instructions a bin. Lane 3 never wins below
+    // (its best cost is NaN from the start) and no other lane reads it.
+    auto columns = [](__m128 x, __m128 y, __m128 z, __m128* t) {
+        const __m128 xy01 = _mm_unpacklo_ps(x, y), xy23 = _mm_unpackhi_ps(x, y);
+        t[0] = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(3, 0, 1, 0)); // x0 y0 z0 z3
+        t[1] = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(3, 1, 3, 2)); // x1 y1 z1 z3
+        t[2] = _mm_shuffle_ps(xy23, z, _MM_SHUFFLE(3, 2, 1, 0)); // x2 y2 z2 z3
+    };
+    const Box4* binBox = sc.binBox.data();
+    const std::uint32_t* c = sc.binCount.data();
     for (int b = 0; b < nb; ++b) {
-        const Box4 &x = sc.binBox[std::size_t(b)], &y = sc.binBox[std::size_t(nb + b)],
-                   &z = sc.binBox[std::size_t(2 * nb + b)];
-        __m128 l0 = x.lo, l1 = y.lo, l2 = z.lo, l3 = inf;
-        _MM_TRANSPOSE4_PS(l0, l1, l2, l3);
-        __m128 h0 = x.hi, h1 = y.hi, h2 = z.hi, h3 = ninf;
-        _MM_TRANSPOSE4_PS(h0, h1, h2, h3);
+        const Box4 &x = binBox[b], &y = binBox[nb + b], &z = binBox[2 * nb + b];
         __m128* t = T + 7 * b;
-        t[0] = l0;
-        t[1] = l1;
-        t[2] = l2;
-        t[3] = h0;
-        t[4] = h1;
-        t[5] = h2;
-        const std::uint32_t* c = sc.binCount.data();
+        columns(x.lo, y.lo, z.lo, t);
+        columns(x.hi, y.hi, z.hi, t + 3);
         t[6] = _mm_cvtepi32_ps(_mm_set_epi32(0, std::int32_t(c[2 * nb + b]),
                                              std::int32_t(c[nb + b]), std::int32_t(c[b])));
     }
@@ -354,16 +357,20 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
     __m128i bestBin = _mm_setzero_si128();
     {
         Running left(inf, ninf);
+        const __m128i one = _mm_set1_epi32(1);
+        __m128i bin = one; // b in every lane
         for (int b = 1; b < nb; ++b) {
             left.add(T + 7 * (b - 1));
             const __m128 cost = _mm_add_ps(
                 _mm_mul_ps(left.cnt, area(left)),
                 _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
             const __m128 better = _mm_cmplt_ps(cost, bestCost);
-            bestCost = _mm_or_ps(_mm_and_ps(better, cost), _mm_andnot_ps(better, bestCost));
+            // minps is `cost < best ? cost : best` per lane: the select by `better` (NaN
+            // costs keep the best, a NaN best stays).
+            bestCost = _mm_min_ps(cost, bestCost);
             const __m128i m = _mm_castps_si128(better);
-            bestBin =
-                _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(b)), _mm_andnot_si128(m, bestBin));
+            bestBin = _mm_or_si128(_mm_and_si128(m, bin), _mm_andnot_si128(m, bestBin));
+            bin = _mm_add_epi32(bin, one);
         }
     }
     alignas(16) float costs[4];
