@@ -301,7 +301,7 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
     // Issue 21 (ninth session): three rows to three columns in five shuffles (lane 3 of
     // each column: lane 3 of z, 0 for a bin with references, ±inf for an empty one), the
     // arrays' pointers in locals (the __m128 stores may alias anything, so `sc.binBox[…]`
-    // reloaded them at every bin): 54 -> 36 instructions a bin. Lane 3 never wins below
+    // reloaded them at every bin): 54 -> 35 instructions a bin. Lane 3 never wins below
     // (its best cost is NaN from the start) and no other lane reads it.
     auto columns = [](__m128 x, __m128 y, __m128 z, __m128* t) {
         const __m128 xy01 = _mm_unpacklo_ps(x, y), xy23 = _mm_unpackhi_ps(x, y);
