@@ -989,8 +989,21 @@ std::uint32_t buildTop(const Builder& b, const Task& t, BuildNode* nodes, std::u
 // beyond float's range (|x| > 3.4e38: as good as unbounded here).
 bool makeRef(const Primitive& p, std::uint32_t index, Ref& r) {
     const Aabb b = p.bounds();
+    // Issue 21 (ninth session): the box's doubles read 8 bytes at a time. bounds() has
+    // just stored them (Sphere: three 16-byte stores at 0, 16, 32 bytes), and a 16-byte
+    // load of hi.x, hi.y (24 bytes in) spans two stores, which the CPU cannot forward: the
+    // load waits for both to reach the cache (perf: the hottest instruction of makeRef).
+    // An 8-byte load lies within one store of any bounds() that stores whole doubles.
+    // (The empty asm keeps GCC from merging the two halves into one 16-byte load again.)
+    __m128d lx = _mm_load_sd(&b.lo.x), hx = _mm_load_sd(&b.hi.x);
+    asm("" : "+x"(lx), "+x"(hx));
+    alignas(16) double v[6];
+    _mm_store_pd(v, _mm_loadh_pd(lx, &b.lo.y));
+    _mm_store_sd(v + 2, _mm_load_sd(&b.lo.z));
+    _mm_storeu_pd(v + 3, _mm_loadh_pd(hx, &b.hi.y));
+    _mm_store_sd(v + 5, _mm_load_sd(&b.hi.z));
     __m128 lo, hi;
-    floatBoxOutward(&b.lo.x, &b.hi.x, lo, hi);
+    floatBoxOutward(v, v + 3, lo, hi);
     _mm_store_ps(r.lo, lo);
     _mm_store_ps(r.hi, hi); // lane 3: r.zero = 0
     r.prim = index;
