@@ -161,10 +161,14 @@ struct BinSetup {
 // Bins of one range of references: boxes and counts, [axis·nb + bin].
 void binRange(const Ref* refs, std::size_t n, const BinSetup& s, Box4* box, std::uint32_t* count) {
     const int nb = s.nb;
-    for (int k = 0; k < 3 * nb; ++k) {
-        box[k] = Box4{};
-        count[k] = 0;
-    }
+    // Issue 21 (ninth session): the empty bins copied from a template (memcpy's wide
+    // stores) and the counts zeroed by memset: the loop of three stores a bin was ~300
+    // instructions a node, 13,000 nodes a balls 5 build.
+    static const struct EmptyBins {
+        Box4 b[3 * 256]; // BvhOptions::bins <= 256
+    } empty{};
+    std::memcpy(static_cast<void*>(box), empty.b, sizeof(Box4) * std::size_t(3 * nb));
+    std::memset(count, 0, sizeof(std::uint32_t) * std::size_t(3 * nb));
     const __m128 mask = lanes012();
     Box4 *bx = box, *by = box + nb, *bz = box + 2 * nb;
     std::uint32_t *cx = count, *cy = count + nb, *cz = count + 2 * nb;
@@ -294,21 +298,24 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
     const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
     const __m128 ninf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
     __m128* T = &sc.lanes.data()->v; // V is one __m128: the array is one of __m128
+    // Issue 21 (ninth session): three rows to three columns in five shuffles (lane 3 of
+    // each column: lane 3 of z, 0 for a bin with references, ±inf for an empty one), the
+    // arrays' pointers in locals (the __m128 stores may alias anything, so `sc.binBox[…]`
+    // reloaded them at every bin): 54 -> 35 instructions a bin. Lane 3 never wins below
+    // (its best cost is NaN from the start) and no other lane reads it.
+    auto columns = [](__m128 x, __m128 y, __m128 z, __m128* t) {
+        const __m128 xy01 = _mm_unpacklo_ps(x, y), xy23 = _mm_unpackhi_ps(x, y);
+        t[0] = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(3, 0, 1, 0)); // x0 y0 z0 z3
+        t[1] = _mm_shuffle_ps(xy01, z, _MM_SHUFFLE(3, 1, 3, 2)); // x1 y1 z1 z3
+        t[2] = _mm_shuffle_ps(xy23, z, _MM_SHUFFLE(3, 2, 1, 0)); // x2 y2 z2 z3
+    };
+    const Box4* binBox = sc.binBox.data();
+    const std::uint32_t* c = sc.binCount.data();
     for (int b = 0; b < nb; ++b) {
-        const Box4 &x = sc.binBox[std::size_t(b)], &y = sc.binBox[std::size_t(nb + b)],
-                   &z = sc.binBox[std::size_t(2 * nb + b)];
-        __m128 l0 = x.lo, l1 = y.lo, l2 = z.lo, l3 = inf;
-        _MM_TRANSPOSE4_PS(l0, l1, l2, l3);
-        __m128 h0 = x.hi, h1 = y.hi, h2 = z.hi, h3 = ninf;
-        _MM_TRANSPOSE4_PS(h0, h1, h2, h3);
+        const Box4 &x = binBox[b], &y = binBox[nb + b], &z = binBox[2 * nb + b];
         __m128* t = T + 7 * b;
-        t[0] = l0;
-        t[1] = l1;
-        t[2] = l2;
-        t[3] = h0;
-        t[4] = h1;
-        t[5] = h2;
-        const std::uint32_t* c = sc.binCount.data();
+        columns(x.lo, y.lo, z.lo, t);
+        columns(x.hi, y.hi, z.hi, t + 3);
         t[6] = _mm_cvtepi32_ps(_mm_set_epi32(0, std::int32_t(c[2 * nb + b]),
                                              std::int32_t(c[nb + b]), std::int32_t(c[b])));
     }
@@ -350,16 +357,20 @@ bool sweepLanes(const BinSetup& s, Scratch& sc, const Box4& nodeBox, Split& best
     __m128i bestBin = _mm_setzero_si128();
     {
         Running left(inf, ninf);
+        const __m128i one = _mm_set1_epi32(1);
+        __m128i bin = one; // b in every lane
         for (int b = 1; b < nb; ++b) {
             left.add(T + 7 * (b - 1));
             const __m128 cost = _mm_add_ps(
                 _mm_mul_ps(left.cnt, area(left)),
                 _mm_mul_ps(sc.rightCountL[std::size_t(b)].v, sc.rightAreaL[std::size_t(b)].v));
             const __m128 better = _mm_cmplt_ps(cost, bestCost);
-            bestCost = _mm_or_ps(_mm_and_ps(better, cost), _mm_andnot_ps(better, bestCost));
+            // minps is `cost < best ? cost : best` per lane: the select by `better` (NaN
+            // costs keep the best, a NaN best stays).
+            bestCost = _mm_min_ps(cost, bestCost);
             const __m128i m = _mm_castps_si128(better);
-            bestBin =
-                _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(b)), _mm_andnot_si128(m, bestBin));
+            bestBin = _mm_or_si128(_mm_and_si128(m, bin), _mm_andnot_si128(m, bestBin));
+            bin = _mm_add_epi32(bin, one);
         }
     }
     alignas(16) float costs[4];
@@ -417,6 +428,11 @@ struct Builder {
     double rootArea = 1;
     Ref* buf[2] = {nullptr, nullptr};
     std::uint32_t* order = nullptr; // scene index per leaf slot
+    // The primitive per leaf slot (Bvh::order_), written with `order` (issue 21, ninth
+    // session: a parallel pass of its own after the tree, each of its loads a random
+    // read of prims, barely faster with two threads than with one).
+    const Primitive** leafPrim = nullptr;
+    const std::unique_ptr<Primitive>* prims = nullptr;
     bool parallel = false;          // blocks and subtrees as TBB tasks
     // Wide trees (issue 21): the collapse makes every subtree of at most 4 primitives
     // (8 when all are exactly Sphere) one wide leaf whatever its inner splits
@@ -491,26 +507,37 @@ struct Builder {
                             int bin, Box4& lc, Box4& rc) {
         const __m128 mask = lanes012();
         const __m128i split = _mm_set1_epi32(bin);
-        const __m128 inf = _mm_set1_ps(std::numeric_limits<float>::infinity());
-        const __m128 ninf = _mm_set1_ps(-std::numeric_limits<float>::infinity());
+        // Issue 21 (ninth session): the centroid that does not belong to a side is made a
+        // NaN for it (all exponent and mantissa bits set), and minps/maxps with a NaN first
+        // operand return the second: one or and one min or max per bound, where selecting
+        // c or ±inf by the left mask took three more. (Written `min(c, lo)`, not `min(lo,
+        // c)`, for that: the two differ only in which zero of an equal ±0 they keep, and
+        // the bounds' zero signs change no bin, extent or axis choice.) The destination
+        // is picked from the two moving pointers with goesLeft opaque to the compiler (the
+        // empty asm): knowing it 0 or 1, GCC made the loop body a branch on it, which
+        // mispredicts half the time on references in random order (a million random
+        // triangles: 25% slower builds).
+        const __m128 nanBits = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
         __m128 llo = lc.lo, lhi = lc.hi, rlo = rc.lo, rhi = rc.hi;
         for (std::size_t i = 0; i < n; ++i) {
-            const __m128 lo = loadLo(in[i], mask), hi = loadHi(in[i]);
-            const __m128 c = centroid(lo, hi);
+            const __m128 raw = _mm_load_ps(in[i].lo), hi = loadHi(in[i]);
+            const __m128 c = centroid(_mm_and_ps(raw, mask), hi);
             // All ones where the reference goes left (its bin on Axis below the split).
             const __m128 left =
                 _mm_castsi128_ps(_mm_shuffle_epi32(_mm_cmplt_epi32(s.bins(c), split), Axis * 0x55));
-            const std::size_t goesLeft = std::size_t(_mm_movemask_ps(left) & 1);
+            auto goesLeft = std::size_t(_mm_movemask_ps(left) & 1);
+            asm("" : "+r"(goesLeft));
             Ref* dst = goesLeft ? l : r;
-            _mm_store_ps(dst->lo, _mm_load_ps(in[i].lo));
+            _mm_store_ps(dst->lo, raw);
             _mm_store_ps(dst->hi, hi);
             l += goesLeft;
             r += 1 - goesLeft;
-            const __m128 cl = _mm_and_ps(left, c), cr = _mm_andnot_ps(left, c);
-            llo = _mm_min_ps(llo, _mm_or_ps(cl, _mm_andnot_ps(left, inf)));
-            lhi = _mm_max_ps(lhi, _mm_or_ps(cl, _mm_andnot_ps(left, ninf)));
-            rlo = _mm_min_ps(rlo, _mm_or_ps(cr, _mm_and_ps(left, inf)));
-            rhi = _mm_max_ps(rhi, _mm_or_ps(cr, _mm_and_ps(left, ninf)));
+            const __m128 cl = _mm_or_ps(c, _mm_andnot_ps(left, nanBits));
+            const __m128 cr = _mm_or_ps(c, _mm_and_ps(left, nanBits));
+            llo = _mm_min_ps(cl, llo);
+            lhi = _mm_max_ps(cl, lhi);
+            rlo = _mm_min_ps(cr, rlo);
+            rhi = _mm_max_ps(cr, rhi);
         }
         lc.lo = llo;
         lc.hi = lhi;
@@ -710,8 +737,10 @@ struct Builder {
         node.offset = std::uint32_t(t.begin);
         node.count = std::uint16_t(t.end - t.begin);
         const Ref* refs = buf[t.buffer];
-        for (std::size_t i = t.begin; i < t.end; ++i)
+        for (std::size_t i = t.begin; i < t.end; ++i) {
             order[i] = refs[i].prim;
+            leafPrim[i] = prims[refs[i].prim].get();
+        }
     }
 };
 
@@ -960,23 +989,32 @@ std::uint32_t buildTop(const Builder& b, const Task& t, BuildNode* nodes, std::u
 // beyond float's range (|x| > 3.4e38: as good as unbounded here).
 bool makeRef(const Primitive& p, std::uint32_t index, Ref& r) {
     const Aabb b = p.bounds();
+    // Issue 21 (ninth session): the box's doubles read 8 bytes at a time. bounds() has
+    // just stored them (Sphere: three 16-byte stores at 0, 16, 32 bytes), and a 16-byte
+    // load of hi.x, hi.y (24 bytes in) spans two stores, which the CPU cannot forward: the
+    // load waits for both to reach the cache (perf: the hottest instruction of makeRef).
+    // An 8-byte load lies within one store of any bounds() that stores whole doubles.
+    // (The empty asm keeps GCC from merging the two halves into one 16-byte load again.)
+    __m128d lx = _mm_load_sd(&b.lo.x), hx = _mm_load_sd(&b.hi.x);
+    asm("" : "+x"(lx), "+x"(hx));
+    alignas(16) double v[6];
+    _mm_store_pd(v, _mm_loadh_pd(lx, &b.lo.y));
+    _mm_store_sd(v + 2, _mm_load_sd(&b.lo.z));
+    _mm_storeu_pd(v + 3, _mm_loadh_pd(hx, &b.hi.y));
+    _mm_store_sd(v + 5, _mm_load_sd(&b.hi.z));
     __m128 lo, hi;
-    floatBoxOutward(&b.lo.x, &b.hi.x, lo, hi);
+    floatBoxOutward(v, v + 3, lo, hi);
     _mm_store_ps(r.lo, lo);
     _mm_store_ps(r.hi, hi); // lane 3: r.zero = 0
     r.prim = index;
-    // Finite doubles and floats: x − x is 0 (NaN for ±inf and NaN).
-    const __m128d zd = _mm_setzero_pd();
-    const int finite =
-        _mm_movemask_pd(
-            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.lo.x), _mm_loadu_pd(&b.lo.x)), zd)) &
-        _mm_movemask_pd(
-            _mm_cmpeq_pd(_mm_sub_pd(_mm_loadu_pd(&b.hi.x), _mm_loadu_pd(&b.hi.x)), zd)) &
-        _mm_movemask_pd(
-            _mm_cmpeq_pd(_mm_sub_pd(_mm_set_pd(b.hi.z, b.lo.z), _mm_set_pd(b.hi.z, b.lo.z)), zd));
+    // Finite floats: x − x is 0 (NaN for ±inf and NaN). Issue 21 (ninth session): this
+    // alone; the same test on the doubles and Aabb::bounded() (|x| < DBL_MAX) said nothing
+    // more. A double that is NaN, ±inf or beyond float's range (DBL_MAX among them) is NaN
+    // or ±inf in float, and floatBoxOutward only steps a finite float by one ulp (to ±inf
+    // at most), so a finite float box comes from a finite, bounded double box.
     const int fits = _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(lo, lo), _mm_setzero_ps())) &
                      _mm_movemask_ps(_mm_cmpeq_ps(_mm_sub_ps(hi, hi), _mm_setzero_ps()));
-    return finite == 3 && (fits & 7) == 7 && !b.empty() && b.bounded();
+    return (fits & 7) == 7 && !b.empty();
 }
 
 // 32-byte aligned storage of references (not zeroed: every one used is written).
@@ -1084,10 +1122,13 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         stats_.unbounded = unbounded_.size();
         if (n == 0) return;
         orderIndex_.resize(n);
+        order_.resize(n);
         Builder b{options,
                   rootBox.area() > 0 ? rootBox.area() : 1.0,
                   {bufA.data.get(), bufB.data.get()},
                   orderIndex_.data(),
+                  order_.data(),
+                  prims.data(),
                   parallel,
                   wide && !options.fullBinary ? kinds : nullptr};
         const Task root{0, n, 0, 0, rootBox, rootCBox};
@@ -1101,16 +1142,6 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
         stats_.leaves = total.leaves;
         stats_.maxDepth = total.maxDepth;
         stats_.sahCost = total.sahCost;
-        order_.resize(n);
-        auto fill = [&](std::size_t lo, std::size_t hi) {
-            for (std::size_t i = lo; i < hi; ++i)
-                order_[i] = prims[orderIndex_[i]].get();
-        };
-        if (parallel)
-            parallelFor((n + kBlock - 1) / kBlock,
-                        [&](std::size_t k) { fill(k * kBlock, std::min(n, (k + 1) * kBlock)); });
-        else
-            fill(0, n);
     };
     // The collapse runs in the build's arena too: its parallel parts use the same threads,
     // and its serial parts run beside them (Bvh::collapseInto).
