@@ -78,7 +78,7 @@ bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const
     hit.outwardNormal = n;
     hit.uv = glm::dvec2(0.0); // textureCoords computes them from outwardNormal
     hit.hasUv = true;
-    finishHit(ray, hit);
+    finishHit(ray, hit, true); // solid() is true (final)
     return true;
 }
 

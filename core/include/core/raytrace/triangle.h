@@ -50,7 +50,7 @@ class Triangle : public Primitive {
     bool intersectSheared(const Ray& ray, const TriangleShear& shear, double tMin, double tMax,
                           Hit& hit) const;
     Aabb bounds() const override;
-    bool solid() const override { return closed_; }
+    bool solid() const final { return closed_; } // final: intersectSheared passes closed_
     bool planar() const override { return true; }
 
     glm::dvec3 v0, v1, v2;
