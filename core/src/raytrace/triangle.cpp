@@ -20,11 +20,12 @@ Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
         n *= std::ldexp(1.0, -std::ilogb(m));
         len = glm::length(n);
     }
-    normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
+    degenerate_ = !(len > 0 && std::isfinite(len));
+    normal_ = degenerate_ ? glm::dvec3(0.0) : n / len;
 }
 
 bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    if (degenerate_) return false; // zero-area triangle
     return intersectSheared(ray, triangleShear(ray.direction), tMin, tMax, hit);
 }
 
@@ -53,7 +54,7 @@ __attribute__((noinline, cold)) double scaledT(double u, double v, double w, dou
 
 bool Triangle::intersectSheared(const Ray& ray, const TriangleShear& shear, double tMin,
                                 double tMax, Hit& hit) const {
-    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    if (degenerate_) return false; // zero-area triangle
     const int kx = shear.kx, ky = shear.ky, kz = shear.kz;
     const double sx = shear.sx, sy = shear.sy, sz = shear.sz;
 
