@@ -6,21 +6,6 @@
 
 namespace wb::rt {
 
-void Primitive::finishHit(const Ray& ray, Hit& hit) const {
-    const double c = glm::dot(ray.direction, hit.outwardNormal);
-    if (c < 0) {
-        hit.normal = hit.outwardNormal;
-        hit.cosVN = c;
-    } else {
-        hit.normal = -hit.outwardNormal;
-        hit.cosVN = -c;
-    }
-    hit.solid = solid();
-    hit.entering = hit.solid && c < 0;
-    hit.material = material;
-    hit.primitive = this;
-}
-
 QuadraticRoots solveQuadratic(double a, double h, double c, double disc) {
     QuadraticRoots r;
     if (!(disc >= 0) || !std::isfinite(a) || !std::isfinite(h) || !std::isfinite(c)) return r;

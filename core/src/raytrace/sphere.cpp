@@ -1,5 +1,7 @@
 #include "core/raytrace/sphere.h"
 
+#include <emmintrin.h>
+
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +13,16 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 namespace {
+// std::sqrt's sqrtsd without the library call GCC puts beside it for a negative operand (to
+// set errno): the same correctly rounded root, two instructions less a root; |v| as
+// glm::length computes it, sqrt(dot(v, v)) (issue 21, ninth session).
+inline double root(double x) {
+    return _mm_cvtsd_f64(_mm_sqrt_pd(_mm_set_sd(x)));
+}
+inline double len(const glm::dvec3& v) {
+    return root(glm::dot(v, v));
+}
+
 bool finite3(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -36,13 +48,13 @@ inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, dou
     // Distance from the centre to the ray's line (practical 11.1): r² − l² is the
     // discriminant without the cancellation of h² − (|f|² − r²) for grazing rays.
     const glm::dvec3 l = f - h * ray.direction;
-    const double ll = glm::length(l);
+    const double ll = len(l);
     const double disc = (radius - ll) * (radius + ll);
     if (!(disc >= 0) || !std::isfinite(h)) return false; // no real root
-    const double fl = glm::length(f);
+    const double fl = len(f);
     const double c = (fl - radius) * (fl + radius);
     if (!std::isfinite(c)) return false;
-    const double q = -(h + std::copysign(std::sqrt(disc), h));
+    const double q = -(h + std::copysign(root(disc), h));
     double t0 = 0.0, t1 = 0.0; // q == 0: h == 0 and disc == 0, so c == 0: double root at 0
     if (q != 0) {
         t0 = q;
@@ -59,7 +71,7 @@ inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, dou
         tOut = t;
         return glm::dot(n, n) > 0; // |n| > 0 without the square root
     } else {
-        const double nl = glm::length(n);
+        const double nl = len(n);
         if (!(nl > 0)) return false;
         tOut = t;
         nOut = n / nl;
@@ -78,7 +90,7 @@ bool Sphere::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const
     hit.outwardNormal = n;
     hit.uv = glm::dvec2(0.0); // textureCoords computes them from outwardNormal
     hit.hasUv = true;
-    finishHit(ray, hit);
+    finishHit(ray, hit, true); // solid() is true (final)
     return true;
 }
 

@@ -1,5 +1,7 @@
 #include "core/raytrace/triangle.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -18,53 +20,71 @@ Triangle::Triangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c
         n *= std::ldexp(1.0, -std::ilogb(m));
         len = glm::length(n);
     }
-    normal_ = (len > 0 && std::isfinite(len)) ? n / len : glm::dvec3(0.0);
+    degenerate_ = !(len > 0 && std::isfinite(len));
+    normal_ = degenerate_ ? glm::dvec3(0.0) : n / len;
 }
 
 bool Triangle::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
-    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    if (degenerate_) return false; // zero-area triangle
     return intersectSheared(ray, triangleShear(ray.direction), tMin, tMax, hit);
 }
 
+namespace {
+// An edge function recomputed in long double (the rare exact 0 in double). Out of line and
+// with its operands by value: inline, GCC loaded the operands onto the x87 stack on every
+// test, not only on the rare path (issue 21, ninth session; taken by reference, as the
+// eighth session tried, they lived in memory instead).
+__attribute__((noinline, cold)) double edgeLong(double p, double q, double r, double s) {
+    using LD = long double;
+    return double(LD(p) * LD(q) - LD(r) * LD(s));
+}
+
+// t when (u·az + v·bz + w·cz) / det overflowed: u·az is a product of three coordinate
+// differences, which overflows beyond ~1e100 (issue 12 point 5). The same formula with u, v,
+// w, det scaled by one power of two (exact) rounds exactly as the unscaled one would without
+// the overflow; dividing first instead lost enough accuracy to shadow the triangle by itself.
+// Out of line: taken only after an overflow, so every hit that was finite keeps its bits.
+__attribute__((noinline, cold)) double scaledT(double u, double v, double w, double det, double az,
+                                               double bz, double cz) {
+    const double m = std::max({std::abs(u), std::abs(v), std::abs(w)});
+    const double k = std::ldexp(1.0, -std::ilogb(m));
+    return ((u * k) * az + (v * k) * bz + (w * k) * cz) / (det * k);
+}
+} // namespace
+
 bool Triangle::intersectSheared(const Ray& ray, const TriangleShear& shear, double tMin,
                                 double tMax, Hit& hit) const {
-    if (normal_ == glm::dvec3(0.0)) return false; // zero-area triangle
+    if (degenerate_) return false; // zero-area triangle
     const int kx = shear.kx, ky = shear.ky, kz = shear.kz;
     const double sx = shear.sx, sy = shear.sy, sz = shear.sz;
 
-    // The same differences and products as with glm vectors (bit for bit), read through
-    // plain arrays: glm's operator[] with a run-time index is a switch (issue 21).
-    const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
-    const double a[3] = {v0.x - o[0], v0.y - o[1], v0.z - o[2]};
-    const double b[3] = {v1.x - o[0], v1.y - o[1], v1.z - o[2]};
-    const double c[3] = {v2.x - o[0], v2.y - o[1], v2.z - o[2]};
-    const double ax = a[kx] - sx * a[kz], ay = a[ky] - sy * a[kz];
-    const double bx = b[kx] - sx * b[kz], by = b[ky] - sy * b[kz];
-    const double cx = c[kx] - sx * c[kz], cy = c[ky] - sy * c[kz];
+    // The same differences and products as with glm vectors (bit for bit): each vertex
+    // coordinate minus the origin's, read at the shear's axes straight from the vertices and
+    // the ray (glm's operator[] with a run-time index is a switch; copies into local arrays,
+    // as before the ninth session, went through the stack: ~30 instructions a test).
+    const double* o = glm::value_ptr(ray.origin);
+    const double* p0 = glm::value_ptr(v0);
+    const double* p1 = glm::value_ptr(v1);
+    const double* p2 = glm::value_ptr(v2);
+    const double oz = o[kz];
+    const double a_z = p0[kz] - oz, b_z = p1[kz] - oz, c_z = p2[kz] - oz;
+    const double ax = (p0[kx] - o[kx]) - sx * a_z, ay = (p0[ky] - o[ky]) - sy * a_z;
+    const double bx = (p1[kx] - o[kx]) - sx * b_z, by = (p1[ky] - o[ky]) - sy * b_z;
+    const double cx = (p2[kx] - o[kx]) - sx * c_z, cy = (p2[ky] - o[ky]) - sy * c_z;
     double u = cx * by - cy * bx;
     double v = ax * cy - ay * cx;
     double w = bx * ay - by * ax;
     if (u == 0 || v == 0 || w == 0) { // on an edge in double: decide in long double
-        using LD = long double;
-        u = double(LD(cx) * LD(by) - LD(cy) * LD(bx));
-        v = double(LD(ax) * LD(cy) - LD(ay) * LD(cx));
-        w = double(LD(bx) * LD(ay) - LD(by) * LD(ax));
+        u = edgeLong(cx, by, cy, bx);
+        v = edgeLong(ax, cy, ay, cx);
+        w = edgeLong(bx, ay, by, ax);
     }
     if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
     const double det = u + v + w;
     if (det == 0) return false; // ray in the triangle's plane, or degenerate projection
-    const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
+    const double az = sz * a_z, bz = sz * b_z, cz = sz * c_z;
     double t = (u * az + v * bz + w * cz) / det;
-    if (!std::isfinite(t)) {
-        // u·az is a product of three coordinate differences: it overflows beyond ~1e100
-        // (issue 12 point 5). The same formula with u, v, w, det scaled by one power of
-        // two (exact) rounds exactly as the unscaled one would without the overflow;
-        // dividing first instead lost enough accuracy to shadow the triangle by itself.
-        // Taken only here, so every hit that was finite keeps its bits.
-        const double m = std::max({std::abs(u), std::abs(v), std::abs(w)});
-        const double k = std::ldexp(1.0, -std::ilogb(m));
-        t = ((u * k) * az + (v * k) * bz + (w * k) * cz) / (det * k);
-    }
+    if (!std::isfinite(t)) t = scaledT(u, v, w, det, az, bz, cz);
     if (!(t > tMin && t <= tMax)) return false;
     const double b0 = u / det, b1 = v / det, b2 = w / det;
     hit.t = t;
@@ -72,7 +92,7 @@ bool Triangle::intersectSheared(const Ray& ray, const TriangleShear& shear, doub
     hit.outwardNormal = normal_;
     hit.uv = {b1, b2};
     hit.hasUv = true;
-    finishHit(ray, hit);
+    finishHit(ray, hit, closed_); // solid() is closed_ (final)
     return true;
 }
 

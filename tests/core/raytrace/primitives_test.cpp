@@ -21,8 +21,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
+#include <utility>
 
 using namespace wb::rt;
 
@@ -378,4 +382,178 @@ TEST_CASE("ellipsoid, paraboloid, hyperboloid with cutting planes (seed 001)",
     REQUIRE(h.hasUv);
     CHECK(e.textureCoords(h).x == Approx(0.5)); // longitude 0
     CHECK(e.textureCoords(h).y == Approx(0.5)); // equator
+}
+
+namespace {
+// The exact tests written out plainly, as they were before issue 21's ninth session rewrote
+// their code for fewer instructions (the BVH confirms every hit with them, so images are
+// bit-identical only while they give these bits): the watertight triangle test through local
+// arrays, with the long double edge fallback and the overflow-scaled t inline, and the
+// sphere's nearest root with std::sqrt and glm::length.
+bool plainTriangle(const glm::dvec3& v0, const glm::dvec3& v1, const glm::dvec3& v2, const Ray& ray,
+                   double tMin, double tMax, double& tOut, glm::dvec3& point, glm::dvec2& uv,
+                   int& paths) {
+    const TriangleShear sh = triangleShear(ray.direction);
+    const int kx = sh.kx, ky = sh.ky, kz = sh.kz;
+    const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const double a[3] = {v0.x - o[0], v0.y - o[1], v0.z - o[2]};
+    const double b[3] = {v1.x - o[0], v1.y - o[1], v1.z - o[2]};
+    const double c[3] = {v2.x - o[0], v2.y - o[1], v2.z - o[2]};
+    const double ax = a[kx] - sh.sx * a[kz], ay = a[ky] - sh.sy * a[kz];
+    const double bx = b[kx] - sh.sx * b[kz], by = b[ky] - sh.sy * b[kz];
+    const double cx = c[kx] - sh.sx * c[kz], cy = c[ky] - sh.sy * c[kz];
+    double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+    if (u == 0 || v == 0 || w == 0) {
+        using LD = long double;
+        u = double(LD(cx) * LD(by) - LD(cy) * LD(bx));
+        v = double(LD(ax) * LD(cy) - LD(ay) * LD(cx));
+        w = double(LD(bx) * LD(ay) - LD(by) * LD(ax));
+        paths |= 1;
+    }
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
+    const double det = u + v + w;
+    if (det == 0) return false;
+    const double az = sh.sz * a[kz], bz = sh.sz * b[kz], cz = sh.sz * c[kz];
+    double t = (u * az + v * bz + w * cz) / det;
+    if (!std::isfinite(t)) {
+        const double m = std::max({std::abs(u), std::abs(v), std::abs(w)});
+        const double k = std::ldexp(1.0, -std::ilogb(m));
+        t = ((u * k) * az + (v * k) * bz + (w * k) * cz) / (det * k);
+        paths |= 2;
+    }
+    if (!(t > tMin && t <= tMax)) return false;
+    const double b0 = u / det, b1 = v / det, b2 = w / det;
+    tOut = t;
+    point = b0 * v0 + b1 * v1 + b2 * v2;
+    uv = {b1, b2};
+    return true;
+}
+
+bool plainSphere(const glm::dvec3& centre, double radius, const Ray& ray, double tMin, double tMax,
+                 double& tOut, glm::dvec3& nOut) {
+    if (radius == 0) return false;
+    const glm::dvec3 f = ray.origin - centre;
+    const double h = glm::dot(f, ray.direction);
+    const glm::dvec3 l = f - h * ray.direction;
+    const double ll = glm::length(l);
+    const double disc = (radius - ll) * (radius + ll);
+    if (!(disc >= 0) || !std::isfinite(h)) return false;
+    const double fl = glm::length(f);
+    const double c = (fl - radius) * (fl + radius);
+    if (!std::isfinite(c)) return false;
+    const double q = -(h + std::copysign(std::sqrt(disc), h));
+    double t0 = 0.0, t1 = 0.0;
+    if (q != 0) {
+        t0 = q;
+        t1 = c / q;
+        if (t0 > t1) std::swap(t0, t1);
+    }
+    double t = t0;
+    if (!(t > tMin && t <= tMax)) {
+        t = t1;
+        if (!(t > tMin && t <= tMax)) return false;
+    }
+    const glm::dvec3 n = ray.at(t) - centre;
+    const double nl = glm::length(n);
+    if (!(nl > 0)) return false;
+    tOut = t;
+    nOut = n / nl;
+    return true;
+}
+
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
+    return sameBits(a.x, b.x) && sameBits(a.y, b.y) && sameBits(a.z, b.z);
+}
+} // namespace
+
+TEST_CASE("triangle and sphere: the exact tests give the plainly written formulas' bits",
+          "[raytrace][primitives]") {
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    auto rv = [&](double s) { return glm::dvec3(uni(rng), uni(rng), uni(rng)) * s; };
+    int paths = 0, triHits = 0, sphHits = 0, mismatches = 0;
+    for (int k = 0; k < 40000; ++k) {
+        const int mode = k % 8;
+        const double s = std::ldexp(1.0, int(rng() % 40) - 20);
+        glm::dvec3 a = rv(s), b = rv(s), c = rv(s);
+        if (mode == 1) b = a + rv(s * 1e-9);       // a sliver
+        if (mode == 2) a.z = b.z = c.z = -0.5 * s; // a floor, as balls 4's
+        if (mode == 7) {                           // products beyond double's range: scaled t
+            a = rv(1e120);
+            b = rv(1e120);
+            c = rv(1e120);
+        }
+        if (mode == 0 && k % 16 == 0) { // on a grid: edge functions exactly 0 (long double)
+            a = glm::dvec3(0, 0, 0);
+            b = glm::dvec3(1, 0, 0);
+            c = glm::dvec3(0, 1, 0);
+        }
+        glm::dvec3 org = rv(2 * s), dir;
+        if (mode == 3)
+            dir = (a + b) * 0.5 - org; // through an edge
+        else if (mode == 4)
+            dir = a - org;    // through a vertex
+        else if (mode == 5) { // in the plane
+            org = a + (b - a) * 0.3 + (c - a) * 0.3;
+            dir = glm::cross(glm::cross(b - a, c - a), rv(1));
+        } else if (mode == 6) { // from a point of the triangle
+            org = a * 0.25 + b * 0.25 + c * 0.5;
+            dir = rv(1);
+        } else if (mode == 0 && k % 16 == 0) {
+            org = glm::dvec3(double(k % 5) * 0.25, 0.5, 2);
+            dir = glm::dvec3(0, 0, -1); // x on the grid: through an edge or a vertex
+        } else {
+            dir = (a + b + c) / 3.0 + rv(0.4 * s) - org;
+        }
+        if (k % 3 == 0) dir.x = 0;
+        const double dl = glm::length(dir);
+        if (!(dl > 0) || !std::isfinite(dl)) continue;
+        const Ray ray = makeRay(org, dir / dl);
+        const double tMin = (k & 32) ? 0.0 : 1e-9, tMax = (k & 64) ? kInf : 3 * s;
+        const Triangle tri(a, b, c, (k & 16) != 0);
+        double t = 0;
+        glm::dvec3 point(0.0);
+        glm::dvec2 uv(0.0);
+        // A zero-area triangle is never hit (|n| finite here: |v| <= 2e120).
+        const bool plain = glm::length(glm::cross(b - a, c - a)) > 0 &&
+                           plainTriangle(a, b, c, ray, tMin, tMax, t, point, uv, paths);
+        Hit h;
+        const bool got = tri.intersect(ray, tMin, tMax, h);
+        bool same = got == plain;
+        if (same && got) {
+            triHits++;
+            same = sameBits(h.t, t) && sameBits(h.point, point) && sameBits(h.uv.x, uv.x) &&
+                   sameBits(h.uv.y, uv.y) && h.primitive == &tri && h.solid == ((k & 16) != 0) &&
+                   h.cosVN == glm::dot(ray.direction, h.normal) && h.cosVN <= 0 &&
+                   h.entering == (h.solid && glm::dot(ray.direction, h.outwardNormal) < 0);
+        }
+        // A sphere through the same points: centre a, radius |b − a| (0 sometimes).
+        const double r = k % 17 == 0 ? 0.0 : glm::length(b - a);
+        if (std::isfinite(r)) {
+            const Sphere sph(a, r);
+            glm::dvec3 n(0.0);
+            double ts = 0;
+            const bool plainS = plainSphere(a, r, ray, tMin, tMax, ts, n);
+            Hit hs;
+            const bool gotS = sph.intersect(ray, tMin, tMax, hs);
+            same = same && gotS == plainS && sph.occluded(ray, tMin, tMax) == plainS;
+            if (same && gotS) {
+                sphHits++;
+                same = sameBits(hs.t, ts) && sameBits(hs.outwardNormal, n) &&
+                       sameBits(hs.point, a + r * n) && hs.solid && hs.primitive == &sph;
+            }
+        }
+        if (!same && ++mismatches == 1) {
+            CAPTURE(k, mode, got, plain, h.t, t, h.cosVN);
+            CHECK(false);
+        }
+    }
+    CHECK(mismatches == 0);
+    CHECK((paths & 1) != 0); // the long double edge functions were taken
+    CHECK((paths & 2) != 0); // and the overflow-scaled t
+    CHECK(triHits > 1000);
+    CHECK(sphHits > 1000);
 }

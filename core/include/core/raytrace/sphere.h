@@ -15,7 +15,7 @@ class Sphere : public Primitive {
     bool occluded(const Ray& ray, double tMin, double tMax) const override;
     glm::dvec2 textureCoords(const Hit& hit) const override;
     Aabb bounds() const override;
-    bool solid() const override { return true; }
+    bool solid() const final { return true; } // final: intersect passes true
 
     glm::dvec3 centre;
     double radius;

@@ -50,7 +50,7 @@ class Triangle : public Primitive {
     bool intersectSheared(const Ray& ray, const TriangleShear& shear, double tMin, double tMax,
                           Hit& hit) const;
     Aabb bounds() const override;
-    bool solid() const override { return closed_; }
+    bool solid() const final { return closed_; } // final: intersectSheared passes closed_
     bool planar() const override { return true; }
 
     glm::dvec3 v0, v1, v2;
@@ -58,6 +58,9 @@ class Triangle : public Primitive {
   private:
     glm::dvec3 normal_; // unit, (v1−v0)×(v2−v0) (counter-clockwise = front); 0 if degenerate
     bool closed_;
+    // normal_ is 0 (n / len of a finite len > 0 has a component of at least 1/√3): one byte
+    // to test in every exact test, not three compares (issue 21, ninth session).
+    bool degenerate_;
 };
 
 } // namespace wb::rt
