@@ -1159,7 +1159,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
 
     // The walk's limits of the packet's lanes (p.lim; limitOf's), then, with kRoot, the rays
     // of `lanes` that pass the root test (the others' limits −inf, as a done lane's); without,
-    // `lanes`.
+    // `lanes`. A full packet of unbounded segments leaves the rays turned away at +inf: out
+    // of the walk's rays, they enter nothing (every per-ray test is masked by them), and only
+    // the interval test's largest limit sees them (it stays +inf after the other rays' hits).
+    // Setting them −inf there too (one blend) measured +0.7 / +1.1 instructions a ray (eye
+    // mesh / balls 4, callgrind).
     template <bool kRoot>
     static unsigned limitLanes(const Bvh& b, Packet& p, unsigned lanes, const double* tMax) {
         constexpr float kInfF = std::numeric_limits<float>::infinity();
