@@ -1221,7 +1221,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
                            Leaf&& leaf) {
         const auto& nodes = nodesOf(b);
         constexpr float kInfF = std::numeric_limits<float>::infinity();
-        // p.lim: joinPacket's (limitLanes), −inf outside `lanes`.
+        // p.lim: joinPacket's (limitLanes): −inf outside the packet's joined rays; those the
+        // root test turned away (outside `lanes` too) −inf or, in an unbounded full packet,
+        // +inf.
         // The intervals over the packet's rays, in every lane (joinPacket gave the lanes
         // outside the packet the first ray's values). The origin bound per axis: the near
         // plane's smallest difference n − on where d > 0 (the largest on), its largest where
@@ -1477,7 +1479,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         // No ray of the packet enters the root's boxes: only the unbounded primitives are
         // left for its rays.
-        if (!walk && b.unbounded_.empty()) return found;
+        if (!walk && (!packet || b.unbounded_.empty())) return found;
         // Every lane's best cleared (W stores, no loop over the packet's bits); tMax copied
         // whole when the packet holds all W lanes (then tMaxIn has W entries).
         for (int j = 0; j < W; ++j)
