@@ -128,6 +128,26 @@ void Bvh::fillLeafData(std::uint32_t i) {
         sz_[i] = float(s->centre.z);
         sr_[i] = float(s->radius);
         sm_[i] = float(l1Norm(s->centre) + s->radius) * kSphereMargin;
+    } else if (runOf(kind_[i]) == kRunTriangle) {
+        const auto* t = static_cast<const Triangle*>(order_[i]);
+        for (int a = 0; a < 3; ++a)
+            tv_[a][i] = float(t->v0[a]);
+        // The filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
+        // from the double vertices, rounded to float (the parts rounded up).
+        const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
+        const glm::dvec3 ne1 = -e1; // the filter reads −e1 (exactly negated): F2 = R·(−e1)
+        const glm::dvec3* es[3] = {&ne1, &e2, &nn};
+        for (int j = 0; j < 3; ++j)
+            for (int a = 0; a < 3; ++a)
+                te_[j * 3 + a][i] = float((*es[j])[a]);
+        const double vmax = std::max({l1Norm(t->v0), l1Norm(t->v1), l1Norm(t->v2)});
+        const double em = std::max(l1Norm(e1), l1Norm(e2));
+        const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
+        const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1Norm(nn) +
+                          kMtDoubleMargin * vmax * vmax;
+        const bool small = vmax <= kMtMaxCoord; // false for NaN
+        tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
+        tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
     } else {
         // Rounded outward; a box float cannot hold (or an empty one) is never rejected.
         const Aabb bx = order_[i]->bounds();
@@ -140,45 +160,6 @@ void Bvh::fillLeafData(std::uint32_t i) {
                 ob_[3 + a][i] = std::numeric_limits<float>::infinity();
             }
         }
-    }
-}
-
-// A triangle run of the leaves (order_ from `first`) into its blocks of tri_ from `block`,
-// four triangles a block (the last one's unused lanes zero, so no lane holds stale
-// memory), and each triangle's lane into triAt_.
-void Bvh::fillTriangles(std::uint32_t first, std::uint32_t count, std::uint32_t block) {
-    static_assert(sizeof(TriBlock) == sizeof(float) * kTriFields * kTriBlock);
-    for (std::uint32_t s = 0; s < count; ++s) {
-        const std::uint32_t b = block + s / kTriBlock, lane = s % kTriBlock;
-        TriBlock& tb = tri_[b];
-        triAt_[first + s] = b * std::uint32_t(kTriFields * kTriBlock) + lane;
-        const auto* t = static_cast<const Triangle*>(order_[first + s]);
-        for (int a = 0; a < 3; ++a)
-            tb.f[kTriV + a][lane] = float(t->v0[a]);
-        // The filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
-        // from the double vertices, rounded to float (the parts rounded up).
-        const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
-        const glm::dvec3 ne1 = -e1; // the filter reads −e1 (exactly negated): F2 = R·(−e1)
-        for (int a = 0; a < 3; ++a) {
-            tb.f[kTriNegE1 + a][lane] = float(ne1[a]);
-            tb.f[kTriE2 + a][lane] = float(e2[a]);
-            tb.f[kTriN + a][lane] = float(nn[a]);
-        }
-        const double vmax = std::max({l1Norm(t->v0), l1Norm(t->v1), l1Norm(t->v2)});
-        const double em = std::max(l1Norm(e1), l1Norm(e2));
-        const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
-        const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1Norm(nn) +
-                          kMtDoubleMargin * vmax * vmax;
-        const bool small = vmax <= kMtMaxCoord; // false for NaN
-        constexpr float kInf = std::numeric_limits<float>::infinity();
-        tb.f[kTriP][lane] = small ? floatUp(p1 * kMtUp) : kInf;
-        tb.f[kTriP + 1][lane] = small ? floatUp(p2 * kMtUp) : kInf;
-    }
-    if (const std::uint32_t used = count % kTriBlock) {
-        TriBlock& last = tri_[block + count / kTriBlock];
-        for (auto& field : last.f)
-            for (std::uint32_t lane = used; lane < kTriBlock; ++lane)
-                field[lane] = 0.0f;
     }
 }
 
@@ -411,18 +392,10 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     // 4096 (were 16,384): balls 5's leaf data was 5 blocks beside the append, split 3/2
     // (with the append) between two threads; that step took 0.47 ms at two threads for 0.78
     // at one, 0.42 with these blocks (medians of 35 quiet pairs).
-    constexpr std::size_t kBlockPrims = 4096;
-    const std::size_t blocks = (n + kBlockPrims - 1) / kBlockPrims;
-    auto perBlock = [&](auto&& block) {
-        if (options_.buildThreads == 1 || blocks < 2) {
-            for (std::size_t b = 0; b < blocks; ++b)
-                block(b);
-            return;
-        }
-        parallelFor(blocks, block); // inside the build's arena
-    };
     auto perPrimitive = [&](auto&& f) {
-        perBlock([&](std::size_t b) {
+        constexpr std::size_t kBlockPrims = 4096;
+        const std::size_t blocks = (n + kBlockPrims - 1) / kBlockPrims;
+        auto block = [&](std::size_t b) {
             const std::size_t lo = b * kBlockPrims, hi = std::min(n, lo + kBlockPrims);
             for (std::size_t i = lo; i < hi; ++i) {
                 if (i + 16 < hi) {
@@ -432,7 +405,13 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
                 }
                 f(i);
             }
-        });
+        };
+        if (options_.buildThreads == 1 || blocks < 2) {
+            for (std::size_t b = 0; b < blocks; ++b)
+                block(b);
+            return;
+        }
+        parallelFor(blocks, block); // inside the build's arena
     };
     // Kinds: taken by the build in scene order (sceneKind_), here by index. Each block
     // notes the run kinds it saw (`has` below), so no serial pass over kind_ follows
@@ -478,62 +457,29 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     if (has[kRunSphere])
         for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
             zeroed.push_back(v);
+    if (has[kRunTriangle]) {
+        for (auto& v : tv_)
+            zeroed.push_back(&v);
+        for (auto& v : te_)
+            zeroed.push_back(&v);
+        for (auto& v : tp_)
+            zeroed.push_back(&v);
+    }
     if (has[kRunOther])
         for (auto& v : ob_)
             zeroed.push_back(&v);
-    // The triangles' lanes (triAt_) are an item of their own: its n entries are all written
-    // before they are read (fill), so it is sized only.
-    const std::size_t items = zeroed.size() + (has[kRunTriangle] ? 1 : 0);
     auto arrays = [&] {
-        auto zero = [&](std::size_t k) {
-            if (k < zeroed.size())
-                zeroed[k]->assign(n + 4, 0.0f);
-            else
-                triAt_.resize(n);
-        };
-        if (options_.buildThreads == 1 || items < 2) {
-            for (std::size_t k = 0; k < items; ++k)
+        auto zero = [&](std::size_t k) { zeroed[k]->assign(n + 4, 0.0f); };
+        if (options_.buildThreads == 1 || zeroed.size() < 2) {
+            for (std::size_t k = 0; k < zeroed.size(); ++k)
                 zero(k);
         } else {
-            parallelFor(items, zero); // beside the collapse's tasks, in the build's arena
+            parallelFor(zeroed.size(), zero); // beside the collapse's tasks, in the build's arena
         }
     };
     // The leaves' float data once the collapse has sorted each leaf into its runs (beside
-    // the append of the collapse's tasks, which does not touch them). The triangle runs'
-    // blocks: counted per block of primitives (by the runs that start there), the counts'
-    // prefix sums, then each run filled where it starts.
-    auto fill = [&] {
-        std::vector<std::uint32_t> firstBlock(has[kRunTriangle] ? blocks : 0);
-        if (has[kRunTriangle]) {
-            perBlock([&](std::size_t b) {
-                std::uint32_t own = 0; // the block's runs' triangle blocks, in order
-                for (std::size_t i = b * kBlockPrims, e = std::min(n, i + kBlockPrims); i < e; ++i)
-                    if (run_[i] && runOf(kind_[i]) == kRunTriangle) {
-                        triAt_[i] = own; // the run's first block, counted from the block's
-                        own += (run_[i] + kTriBlock - 1) / kTriBlock;
-                    }
-                firstBlock[b] = own;
-            });
-            std::size_t total = 0;
-            for (auto& f : firstBlock) {
-                const std::size_t own = f;
-                f = std::uint32_t(total);
-                total += own;
-            }
-            // triAt_ holds float offsets: a tree beyond 2^32 floats (16 GiB) of them is not
-            // built.
-            if (total * kTriFields * kTriBlock > std::numeric_limits<std::uint32_t>::max())
-                throw std::length_error("Bvh: too many triangles for the leaf blocks");
-            tri_.resize(total);
-            stats_.leafTriBytes = total * sizeof(TriBlock) + n * sizeof(std::uint32_t);
-        }
-        perPrimitive([&](std::size_t i) {
-            if (runOf(kind_[i]) != kRunTriangle)
-                fillLeafData(std::uint32_t(i));
-            else if (run_[i])
-                fillTriangles(std::uint32_t(i), run_[i], firstBlock[i / kBlockPrims] + triAt_[i]);
-        });
-    };
+    // the append of the collapse's tasks, which does not touch them).
+    auto fill = [&] { perPrimitive([&](std::size_t i) { fillLeafData(std::uint32_t(i)); }); };
     if (count <= 1) {
         arrays();
         if (count == 0) return;

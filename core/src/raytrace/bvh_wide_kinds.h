@@ -62,7 +62,7 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   F exactly 0). Overflow: no product exceeds 12·D·(V + |o|₁)², so the filter is used only
 //   for V <= 2^30 (per triangle: else its parts are +inf, B is inf or NaN and never
 //   rejects), |o|₁ <= 2^30 and D <= 2^60 (per ray: else X = Y = +inf): 12·2^62·2^60 < 2^128.
-//   Per triangle P1 = 2^-18·E + 2·2^-46·V and P2 = 2^-18·E·V +
+//   Per triangle tp_[0] = P1 = 2^-18·E + 2·2^-46·V and tp_[1] = P2 = 2^-18·E·V +
 //   2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
 //   rounded up): B = X·P1 + Y·P2 + Z. Where B is finite every F is finite (the ranges);
 //   a NaN or infinite B rejects nothing (its compares are false).
@@ -90,11 +90,6 @@ constexpr float kInvFarScaleF = 1 + 0x1p-19f;
 // taken back: GCC keeps the ray's values on the stack (the exact tests' calls in the loop
 // clobber every vector register), so the fused form needs the same 43 instructions a node
 // and the set-up more: callgrind +2–9% on every row, time within the noise; commit a7764b8.)
-// The fields of a triangle block (Bvh::TriBlock), each four lanes: float v0 (x, y, z), −e1
-// (negated exactly: the filter's F2 = R·(−e1)), e2, the normal n = e1 × e2, the filter
-// bound's two parts P1, P2 (above).
-constexpr int kTriV = 0, kTriNegE1 = 3, kTriE2 = 6, kTriN = 9, kTriP = 12, kTriFields = 14;
-constexpr int kTriBlock = 4; // triangles a block
 // BvhOptions::width 0 with AVX2: the width measured faster (docs/raytrace-scale.md).
 constexpr int kAutoWidthAvx2 = 8;
 inline std::uint8_t runOf(std::uint8_t kind) {

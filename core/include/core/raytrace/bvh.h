@@ -105,7 +105,6 @@ struct BvhStats {
     bool avx512 = false;          // ... the AVX-512 code (BvhSimd::Avx512)
     bool quantised = false;       // 8-wide nodes with quantised child boxes (BvhNodes)
     std::size_t nodeBytes = 0;    // bytes of the wide nodes traversed
-    std::size_t leafTriBytes = 0; // wide trees: the triangles' leaf blocks and lanes, bytes
 };
 
 class Bvh : public Aggregate {
@@ -223,7 +222,6 @@ class Bvh : public Aggregate {
                       const std::function<void()>& besideAppend);
     void sortLeaf(std::uint32_t first, std::uint32_t count);
     void fillLeafData(std::uint32_t i);
-    void fillTriangles(std::uint32_t first, std::uint32_t count, std::uint32_t block);
     // Inline: one indirect call from the query to the walk (a cheap ray's cost counts).
     bool intersectWide(const Ray& ray, double tMin, double tMax, Hit& hit) const {
         return path_->intersect(*this, ray, tMin, tMax, hit);
@@ -274,19 +272,9 @@ class Bvh : public Aggregate {
     using Floats = bvh_detail::KeptVector<float>;
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
-    // Triangles (issue 21: the filter on precomputed edges) four to a block, each field of
-    // the four side by side (fields: bvh_detail::kTriV etc. in bvh_wide_kinds.h): a leaf's
-    // triangle run takes blocks of its own, the last one's unused lanes zero. One base
-    // pointer addresses a run's fields at fixed offsets; a field in its own array cost the
-    // leaf test 14 loads of array pointers (issue 21, ninth session).
-    struct alignas(16) TriBlock {
-        float f[14][4]; // [field][lane]
-        TriBlock() {}   // not zeroed by resize: fillTriangles writes every lane
-    };
-    bvh_detail::KeptVector<TriBlock> tri_;
-    // Of a triangle at order_ index i: its lane's float offset from tri_'s first float
-    // (field k at + 4k); at a run's first triangle, the run's first block's lane 0.
-    bvh_detail::KeptVector<std::uint32_t> triAt_;
+    // Triangles at their order_ index (issue 21: the filter on precomputed edges): float
+    // v0, v0 − v1, v2 − v0 and the normal (axis-major), the filter bound's two parts.
+    Floats tv_[3], te_[9], tp_[2];
     Floats ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
