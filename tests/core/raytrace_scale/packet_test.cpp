@@ -83,24 +83,25 @@ struct Trees {
     std::vector<std::unique_ptr<Bvh>> bvhs; // every packet path, the binary tree, packets off
     // binary: with the binary double-box tree (it misses a hit at tMax exactly where the hit
     // is on the root box's face: its box entry, rounded, can lie past tMax).
-    explicit Trees(const Scene& sc, bool binary = true) : brute(sc.primitives) {
+    explicit Trees(const Scene& sc, const BvhOptions& base = {}, bool binary = true)
+        : brute(sc.primitives) {
         const bool avx2 = __builtin_cpu_supports("avx2");
         for (int k = 0; k < (avx2 ? 3 : 1); ++k) {
-            BvhOptions o;
+            BvhOptions o = base;
             o.width = k == 2 ? 8 : 4;
             o.simd = k == 0 ? BvhSimd::Sse2 : BvhSimd::Avx2;
             bvhs.push_back(std::make_unique<Bvh>(sc.primitives, o));
             REQUIRE(bvhs.back()->packetWidth() == o.width);
         }
         if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")) {
-            BvhOptions o;
+            BvhOptions o = base;
             o.simd = BvhSimd::Avx512;
             bvhs.push_back(std::make_unique<Bvh>(sc.primitives, o));
             REQUIRE(bvhs.back()->stats().avx512);
             REQUIRE(bvhs.back()->packetWidth() == 8);
         }
         if (binary) {
-            BvhOptions bin;
+            BvhOptions bin = base;
             bin.width = 2;
             bvhs.push_back(std::make_unique<Bvh>(sc.primitives, bin));
         }
@@ -110,14 +111,14 @@ struct Trees {
                 if (simd == BvhSimd::Avx512 &&
                     !(__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl")))
                     continue;
-                BvhOptions q;
+                BvhOptions q = base;
                 q.width = 8;
                 q.simd = simd;
                 q.nodes = BvhNodes::Quantised;
                 bvhs.push_back(std::make_unique<Bvh>(sc.primitives, q));
                 REQUIRE(bvhs.back()->packetWidth() == 8);
             }
-        BvhOptions off;
+        BvhOptions off = base;
         off.packets = false;
         bvhs.push_back(std::make_unique<Bvh>(sc.primitives, off));
         REQUIRE(bvhs.back()->packetWidth() == 1);
@@ -369,7 +370,7 @@ TEST_CASE("packets: a packet whose one hitting ray grazes the root box keeps its
             const glm::dvec3 c = rnd3(g, -0.9 * s, 0.9 * s);
             sc.add(Triangle(c, c + rnd3(g, -0.1 * s, 0.1 * s), c + rnd3(g, -0.1 * s, 0.1 * s)), 0);
         }
-        const Trees t(sc, false); // the packets' trees and paths (not the binary tree's)
+        const Trees t(sc, {}, false); // the packets' trees and paths (not the binary tree's)
         std::uniform_real_distribution<double> u(-1, 1);
         // Misses the box grown by 5% on every side (a double slab test; d has no zero part).
         auto missesBox = [&](const glm::dvec3& o, const glm::dvec3& d) {
@@ -530,6 +531,57 @@ TEST_CASE("packets: leaves tested transposed keep every grazing hit", "[bvh][pac
         INFO(n.lanes << " lanes, " << n.hits << " hits");
         REQUIRE(n.hits > n.lanes / 4);
     }
+}
+
+TEST_CASE("packets: leaves of up to seven triangles, tested transposed past the first four",
+          "[bvh][packet]") {
+    // The packet tests' other scenes have leaves of at most four primitives (the default
+    // maxLeafSize), so a transposed triangle run never went past four: the single walk's
+    // filter takes four triangles at a time, the last chunk partly filled, and the leaf
+    // data layouts of issue 21's ninth session (blocks of four) split runs there. Costly
+    // nodes make leaves of up to 7 (as the single-ray test "scenes of one kind" does), a mesh
+    // of 601 triangles, and rays from one origin at one triangle's vertices and edges enter
+    // its leaf together, so the transposed test reads its fifth to seventh triangles.
+    std::mt19937_64 g(31);
+    Scene sc;
+    std::vector<std::array<glm::dvec3, 3>> tris;
+    for (int i = 0; i < 601; ++i) {
+        const glm::dvec3 c = rnd3(g, -10, 10);
+        const std::array<glm::dvec3, 3> v = {c, c + rnd3(g, -1, 1), c + rnd3(g, -1, 1)};
+        sc.add(Triangle(v[0], v[1], v[2]), 0);
+        tris.push_back(v);
+    }
+    BvhOptions big;
+    big.maxLeafSize = 7;
+    big.traversalCost = 8;
+    const Trees t(sc, big);
+    // Not vacuous: some leaves hold more than four triangles (one run: the scene has one
+    // kind).
+    int longRuns = 0;
+    for (const auto& nd : t.bvhs.front()->wideNodes())
+        for (const auto c : nd.count)
+            longRuns += c > 4;
+    INFO(longRuns << " leaves of more than four triangles");
+    REQUIRE(longRuns > 20);
+    PacketCounts n;
+    std::uniform_real_distribution<double> u(0, 1);
+    for (int i = 0; i < 400; ++i) {
+        Ray rays[kMaxPacket];
+        double tMin[kMaxPacket], tMax[kMaxPacket];
+        const glm::dvec3 o = rnd3(g, -20, 20);
+        const auto& v = tris[g() % tris.size()];
+        for (int j = 0; j < kMaxPacket; ++j) {
+            const int e = j % 3;
+            const glm::dvec3 target = j < 3 ? v[e] : v[e] + u(g) * (v[(e + 1) % 3] - v[e]);
+            rays[j].origin = o;
+            rays[j].direction = glm::normalize(target - o);
+            tMin[j] = 0;
+            tMax[j] = kInf;
+        }
+        comparePacket(t, rays, tMin, tMax, i % 5 == 4 ? 0x7Fu : 0xFFu, n);
+    }
+    INFO(n.lanes << " lanes, " << n.hits << " hits");
+    REQUIRE(n.hits > n.lanes / 2);
 }
 
 TEST_CASE("packets: transposed sphere lanes keep grazing hits from far origins", "[bvh][packet]") {
