@@ -1,5 +1,6 @@
 #include "core/raytrace/tracer.h"
 
+#include "core/raytrace/bvh.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/texture.h"
 #include "lanes_sse2.h"
@@ -339,6 +340,18 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     // first (in row order, so the shadow cache sees them as traceFrom would), then the
     // direct colours, then each lane's children.
     const std::size_t nLights = scene_.lights.size();
+    // The eye hits' feelers of one light walk as a packet when every material is opaque
+    // (then only "blocked or not" matters) and the aggregate is a Bvh.
+    const Bvh* feelerPacket = dynamic_cast<const Bvh*>(&scene_.aggregate());
+    if (feelerPacket)
+        for (const Material& mat : scene_.materials)
+            if (!(mat.kt < settings_.opaqueKt)) {
+                feelerPacket = nullptr;
+                break;
+            }
+    // The feelers for occludedPacket, made once (only origin and direction change).
+    Ray feelers[kMaxPacket];
+    const Primitive* skip[kMaxPacket];
     thread_local std::vector<double> transmittance;
     transmittance.resize(nLights * kMaxPacket);
     glm::dvec3 offsetOrigin[kMaxPacket];
@@ -381,19 +394,47 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             store(dz, toLight.z.v);
         }
         const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
+        double* tr = &transmittance[li * kMaxPacket];
+        if (!feelerPacket) {
+            for (int j = 0; j < n; ++j) {
+                if (!((lanes >> j) & 1u)) continue;
+                if (!(cosL[j] > 0)) {
+                    tr[j] = 0.0; // the surface faces away from the light
+                } else if (!(t0[j] < dist[j])) {
+                    tr[j] = 1.0; // the light is closer than the offset
+                } else {
+                    ++counts.shadow;
+                    tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j],
+                                         dist[j], base[j].self, entry);
+                }
+            }
+            continue;
+        }
+        // Every blocker is opaque: a feeler's transmittance is 0 if anything blocks it, else
+        // 1, which occludedPacket answers. The shadow cache is not asked here: the packet's
+        // walk costs about what the cache's exact tests saved, and occludedPacket does not
+        // say which primitive blocked (refilling the cache by one single walk per blocked
+        // packet: balls 4 frame 1576.5 -> 1586.3 M instructions).
+        unsigned ask = 0;
         for (int j = 0; j < n; ++j) {
             if (!((lanes >> j) & 1u)) continue;
-            double& tr = transmittance[li * kMaxPacket + std::size_t(j)];
             if (!(cosL[j] > 0)) {
-                tr = 0.0; // the surface faces away from the light
+                tr[j] = 0.0;
             } else if (!(t0[j] < dist[j])) {
-                tr = 1.0; // the light is closer than the offset
+                tr[j] = 1.0;
             } else {
                 ++counts.shadow;
-                tr = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
-                                  base[j].self, entry);
+                feelers[j].origin = hits[j].point;
+                feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
+                skip[j] = base[j].self;
+                tr[j] = 1.0;
+                ask |= 1u << j;
             }
         }
+        if (!ask) continue;
+        const unsigned blocked = feelerPacket->occludedPacket(feelers, t0, dist, skip, ask);
+        for (unsigned m = blocked; m; m &= m - 1)
+            tr[__builtin_ctz(m)] = 0.0;
     }
     Color direct[kMaxPacket];
     PhongModel::directLanes(scene_, rays, hits, lanes, transmittance.data(), direct);

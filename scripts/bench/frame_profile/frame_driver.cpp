@@ -1,6 +1,7 @@
 // Profiling driver (not built by CMake; build_driver.sh builds it against build/core/libcore.a):
 // one frame of a bench scene, packets or single rays, for callgrind and stage_split.py.
-// frame_driver "balls 4" p|s [size] [repeats] -> prints the image's FNV hash and the time.
+// frame_driver "balls 4" p|s [size] [repeats] [depth] -> prints the image's FNV hash and the time
+// (depth 4 by default; depth 0 is the eye level alone: eye rays, their feelers and shading).
 // The 9k OBJ is the one raytrace_scale_bench writes (build-bench/bench-out/mesh.obj); another
 // path can be given in WB_BENCH_OBJ.
 #include "../../../tests/bench/bench_scenes.h"
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
     const bool packets = argv[2][0] == 'p';
     const int size = argc > 3 ? std::atoi(argv[3]) : 512;
     const int reps = argc > 4 ? std::atoi(argv[4]) : 1;
+    const int depth = argc > 5 ? std::atoi(argv[5]) : 4;
     const char* obj = std::getenv("WB_BENCH_OBJ");
     for (const auto& bs : benchScenes(obj ? obj : "build-bench/bench-out/mesh.obj")) {
         if (bs.name != name) continue;
@@ -27,7 +29,7 @@ int main(int argc, char** argv) {
         PhongModel model;
         ParallelRenderOptions opt;
         opt.cornerRays = true;
-        opt.trace.maxDepth = 4;
+        opt.trace.maxDepth = depth;
         opt.threads = 1;
         opt.packets = packets;
         for (int r = 0; r < reps; ++r) {

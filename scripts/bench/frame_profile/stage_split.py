@@ -2,9 +2,11 @@
 # Splits a callgrind profile of frame_driver (this folder) by stage (self instructions, M).
 import re, subprocess, sys
 stages = [
-    ("shadow feelers", r"forEachBlocker|::occluded\(|feelerTransmittance|cachedFeeler"),
+    ("shadow feelers, single", r"forEachBlocker|::occluded\(|feelerTransmittance|cachedFeeler"),
+    # The eye hits' feelers as packets (ninth session): walkPacket<true, ...occludedPacket...>.
+    ("shadow feelers, packets", r"walkPacket<true|occludedPacket"),
     ("eye packets (walk, set-up)", r"walkPacket|joinPacket|intersectPacket|triangleLanes|sphereLanes"),
-    ("single nearest-hit walk", r"WideWalk<.*>::intersect\(|Bvh::intersect\(|Scene::intersect"),
+    ("single nearest-hit walk", r"WideWalk<.*>::intersect\(|nearestFrom|Bvh::intersect\(|Scene::intersect"),
     ("exact tests, per-ray leaf set-up", r"Sphere::intersect|intersectSheared|Triangle::intersect|mtSetup|sphereSetup|finishHit|Primitive::"),
     ("shading in lanes (directLanes, traceFromPacket)", r"directLanes|traceFromPacket|shadeLanes"),
     ("shading, scalar", r"sampleLightsFrom|lightFactors|PhongModel::|pow|traceRay|spawnChildren|offsetRayOrigin|reflectDir|Tracer::trace|exp"),

@@ -297,7 +297,7 @@ TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]
 }
 
 // PhongModel::directLanes (issue 21: a packet's eye hits shaded two at a time in SSE2's
-// double lanes) against direct() lane by lane, bit for bit: random hits, materials
+// double lanes, four in AVX's) against direct() lane by lane, bit for bit: random hits, materials
 // (emission, exponents clamped to 0..128, ka/kd/ks 0 and random), point lights with and
 // without attenuation (a denominator of exactly 1, of 0, random), shadowed and lit
 // samples, normals facing away, random lane masks (a lane outside the mask is neither
@@ -308,6 +308,9 @@ TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[r
     std::mt19937_64 g(21);
     std::uniform_real_distribution<double> u(0, 1);
     PhongModel model;
+    // SSE2's pairs everywhere; AVX's quads where the CPU has AVX (directLanes' own choice).
+    std::vector<PhongModel::LaneWidth> widths{PhongModel::LaneWidth::Two};
+    if (__builtin_cpu_supports("avx")) widths.push_back(PhongModel::LaneWidth::Four);
     int lanesSeen = 0, lit = 0, highlights = 0;
     for (int scale : {0, -30, 25}) {
         const double s = std::ldexp(1.0, scale * 3); // 1, 2^-90, 2^75
@@ -365,36 +368,39 @@ TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[r
                     trans[li * kMaxPacket + j] = (i + j + li) % 3 == 0 ? 0.0 : u(g);
             }
             const unsigned lanes = i % 4 == 0 ? 0xFFu : unsigned(g() & 0xFFu);
-            Color out[kMaxPacket];
-            const Color poison(std::numeric_limits<double>::quiet_NaN());
-            for (Color& c : out)
-                c = poison;
-            model.directLanes(scene, views, hits, lanes, trans, out);
-            for (int j = 0; j < kMaxPacket; ++j) {
-                INFO("scale " << scale << " packet " << i << " lane " << j);
-                if (!((lanes >> j) & 1u)) {
-                    REQUIRE(std::isnan(out[j].x)); // not written
-                    continue;
+            for (PhongModel::LaneWidth width : widths) {
+                Color out[kMaxPacket];
+                const Color poison(std::numeric_limits<double>::quiet_NaN());
+                for (Color& c : out)
+                    c = poison;
+                model.directLanes(scene, views, hits, lanes, trans, out, width);
+                for (int j = 0; j < kMaxPacket; ++j) {
+                    INFO("scale " << scale << " packet " << i << " lane " << j << " width "
+                                  << (width == PhongModel::LaneWidth::Four ? 4 : 2));
+                    if (!((lanes >> j) & 1u)) {
+                        REQUIRE(std::isnan(out[j].x)); // not written
+                        continue;
+                    }
+                    std::vector<LightSample> samples;
+                    for (std::size_t li = 0; li < scene.lights.size(); ++li) {
+                        LightSample ls;
+                        ls.light = &scene.lights[li];
+                        ls.transmittance = trans[li * kMaxPacket + std::size_t(j)];
+                        samples.push_back(ls);
+                    }
+                    const Material& m = scene.materials[size_t(hits[j].material)];
+                    const Color want = model.direct(scene, views[j], hits[j], m, m.colour, samples);
+                    REQUIRE(std::memcmp(&out[j], &want, sizeof want) == 0);
+                    ++lanesSeen;
+                    lit += want != m.emission + m.ka * m.colour * scene.globalAmbient;
+                    highlights += m.ks > 0;
                 }
-                std::vector<LightSample> samples;
-                for (std::size_t li = 0; li < scene.lights.size(); ++li) {
-                    LightSample ls;
-                    ls.light = &scene.lights[li];
-                    ls.transmittance = trans[li * kMaxPacket + std::size_t(j)];
-                    samples.push_back(ls);
-                }
-                const Material& m = scene.materials[size_t(hits[j].material)];
-                const Color want = model.direct(scene, views[j], hits[j], m, m.colour, samples);
-                REQUIRE(std::memcmp(&out[j], &want, sizeof want) == 0);
-                ++lanesSeen;
-                lit += want != m.emission + m.ka * m.colour * scene.globalAmbient;
-                highlights += m.ks > 0;
             }
             scene.materials.clear();
             scene.lights[0].position = s * rnd3(g, -10, 10);
         }
     }
-    CHECK(lanesSeen > 3 * 3000 * 4); // about 5 of 8 lanes a packet
+    CHECK(lanesSeen > 3 * 3000 * 4 * int(widths.size())); // about 5 of 8 lanes a packet
     CHECK(lit > lanesSeen / 2);
     CHECK(highlights > lanesSeen / 2);
 }

@@ -17,17 +17,22 @@ class PhongModel : public ShadingModel {
     Color scale(const Color& c, double s) const override;
     void toRgb8(const Color& c, uint8_t out[3]) const override;
     // direct() for up to kMaxPacket hits at once (issue 21: a packet's eye hits), the
-    // vectors and dot products of two hits at a time in SSE2's double lanes: for each lane
-    // j of `lanes`, out[j] is direct(scene, views[j], hits[j], its material, the material's
-    // colour, samples) bit for bit — the same IEEE operations in the same order (no FMA:
-    // the library is built for baseline x86-64), std::pow per lane. The samples are given
+    // vectors and dot products of four hits at a time in AVX's double lanes where the CPU
+    // has AVX, else two at a time in SSE2's (`width`): for each lane j of `lanes`, out[j]
+    // is direct(scene, views[j], hits[j], its material, the material's colour, samples)
+    // bit for bit — the same IEEE operations in the same order (no FMA: the library is
+    // built for baseline x86-64 and the AVX code enables AVX alone), std::pow per lane. The samples are given
     // by their transmittances alone, transmittance[li * kMaxPacket + j] for scene light li;
     // every scene light must be a point light without a spot cone and no hit's material
     // textured (lanesApply() says whether a scene qualifies). Other lanes are not read.
     // Static (the model has no state): a call through a PhongModel reference in the tracer
     // made UBSan's vptr check refer to this class's type info (see isExactly).
+    // Four hits at a time in AVX's lanes where the CPU has AVX (Best), or as asked (tests:
+    // Four only where __builtin_cpu_supports("avx")).
+    enum class LaneWidth { Best, Two, Four };
     static void directLanes(const Scene& scene, const Ray* views, const Hit* hits, unsigned lanes,
-                            const double* transmittance, Color* out);
+                            const double* transmittance, Color* out,
+                            LaneWidth width = LaneWidth::Best);
     // Whether directLanes() may stand in for direct() on this scene's untextured hits.
     static bool lanesApply(const Scene& scene);
     // Whether `model` is a PhongModel itself (a subclass may shade otherwise). Out of line:
