@@ -71,6 +71,20 @@ bool PhongModel::lanesApply(const Scene& scene) {
 }
 
 namespace {
+// Whether the highlight's pow can reach the colour: direct() adds transmittance ·
+// (diffuse·colour + s·ks·colour) with s = pow(cos, shininess), finite and >= 0 for a cos
+// >= 0 and a shininess clamped to [0, 128] (a NaN cos needs an infinite or NaN normal,
+// whose diffuse term makes the colour non-finite either way). With ks = ±0 the
+// product s·ks is the same zero for any such s, and with transmittance = ±0 (shadowed or
+// facing away) the whole term is a zero for any s (a NaN or infinity from the colours stays
+// one either way): s = 0 then gives the same colour, at most a zero of the other sign, which
+// no byte sees. A NaN shininess (clamp keeps it) makes s NaN: pow is called as before.
+// The eye hits of balls 4's floor (ks = 0) and its shadowed hits made most of the eye
+// level's pow calls.
+inline bool specularNeeded(double transmittance, double ks, double shininess) {
+    return (transmittance != 0 && ks != 0) || shininess != shininess;
+}
+
 // directLanes four hits at a time: the same formula, operation for operation, in AVX's
 // lanes (the scalar comments are directLanes' below).
 __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* views,
@@ -96,8 +110,11 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
         const V4 surface = q3([&](int k) { return m[k]->colour; });
         const V4 ambient = q3([&](int k) { return m[k]->ka; }) * surface,
                  diffuse = q3([&](int k) { return m[k]->kd; }) * surface;
-        const D4 ks = q3([&](int k) { return m[k]->ks; });
-        const V4 specular{ks, ks, ks};
+        double ks[4];
+        for (int k = 0; k < 4; ++k)
+            ks[k] = m[k]->ks;
+        const D4 ksQuad = quad(ks[0], ks[1], ks[2], ks[3]);
+        const V4 specular{ksQuad, ksQuad, ksQuad};
         V4 c = q3([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
         const V4 origin = q3([&](int k) { return views[at[k]].origin; });
         const V4 pos = q3([&](int k) { return h[k]->point; }) - origin;
@@ -126,8 +143,11 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             _mm256_store_pd(lv, len.v);
             _mm256_store_pd(cv, cosH.v);
             for (int k = 0; k < 4; ++k) {
-                spec[k] = dv[k] != 0 && lv[k] > 0 ? std::pow(cv[k], sh[k]) : 0.0;
                 tr[k] = transmittance[li * kMaxPacket + std::size_t(at[k])];
+                // pow only where its value reaches the colour (specularNeeded).
+                spec[k] = dv[k] != 0 && lv[k] > 0 && specularNeeded(tr[k], ks[k], sh[k])
+                              ? std::pow(cv[k], sh[k])
+                              : 0.0;
             }
             const D4 specularFactor{_mm256_load_pd(spec)};
             const D4 trans{_mm256_load_pd(tr)};
@@ -201,11 +221,14 @@ void PhongModel::directLanes(const Scene& scene, const Ray* views, const Hit* hi
             _mm_store_pd(lv, len.v);
             _mm_store_pd(cv, cosH.v);
             // Index 1 is the high lane (a), index 0 the low lane (b).
-            const double specA = dv[1] != 0 && lv[1] > 0 ? std::pow(cv[1], shA) : 0.0;
-            const double specB = dv[0] != 0 && lv[0] > 0 ? std::pow(cv[0], shB) : 0.0;
+            const double trA = transmittance[li * kMaxPacket + std::size_t(a)],
+                         trB = transmittance[li * kMaxPacket + std::size_t(b)];
+            const double specA =
+                dv[1] != 0 && lv[1] > 0 && specularNeeded(trA, ma.ks, shA) ? std::pow(cv[1], shA) : 0.0;
+            const double specB =
+                dv[0] != 0 && lv[0] > 0 && specularNeeded(trB, mb.ks, shB) ? std::pow(cv[0], shB) : 0.0;
             const D2 specularFactor = pair(specA, specB);
-            const D2 trans = pair(transmittance[li * kMaxPacket + std::size_t(a)],
-                                  transmittance[li * kMaxPacket + std::size_t(b)]);
+            const D2 trans = pair(trA, trB);
             const V2 lightColour = splat(l.colour);
             // attenuation · spot (1 without a cone) · (ambient·l.ambient + shadow ·
             // (diffuse·d·colour + specular·s·colour)), as direct() groups it.
