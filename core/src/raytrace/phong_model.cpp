@@ -223,10 +223,12 @@ void PhongModel::directLanes(const Scene& scene, const Ray* views, const Hit* hi
             // Index 1 is the high lane (a), index 0 the low lane (b).
             const double trA = transmittance[li * kMaxPacket + std::size_t(a)],
                          trB = transmittance[li * kMaxPacket + std::size_t(b)];
-            const double specA =
-                dv[1] != 0 && lv[1] > 0 && specularNeeded(trA, ma.ks, shA) ? std::pow(cv[1], shA) : 0.0;
-            const double specB =
-                dv[0] != 0 && lv[0] > 0 && specularNeeded(trB, mb.ks, shB) ? std::pow(cv[0], shB) : 0.0;
+            const double specA = dv[1] != 0 && lv[1] > 0 && specularNeeded(trA, ma.ks, shA)
+                                     ? std::pow(cv[1], shA)
+                                     : 0.0;
+            const double specB = dv[0] != 0 && lv[0] > 0 && specularNeeded(trB, mb.ks, shB)
+                                     ? std::pow(cv[0], shB)
+                                     : 0.0;
             const D2 specularFactor = pair(specA, specB);
             const D2 trans = pair(trA, trB);
             const V2 lightColour = splat(l.colour);
