@@ -115,6 +115,11 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             ks[k] = m[k]->ks;
         const D4 ksQuad = quad(ks[0], ks[1], ks[2], ks[3]);
         const V4 specular{ksQuad, ksQuad, ksQuad};
+        // specularNeeded's material terms for the four lanes: ks != 0 (unordered: NaN
+        // counts), a NaN shininess.
+        const __m256d ksNonZero = _mm256_cmp_pd(ksQuad.v, _mm256_setzero_pd(), _CMP_NEQ_UQ);
+        const __m256d shQuad = _mm256_set_pd(sh[3], sh[2], sh[1], sh[0]);
+        const __m256d shNaN = _mm256_cmp_pd(shQuad, shQuad, _CMP_UNORD_Q);
         V4 c = q3([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
         const V4 origin = q3([&](int k) { return views[at[k]].origin; });
         const V4 pos = q3([&](int k) { return h[k]->point; }) - origin;
@@ -138,19 +143,25 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             const V4 half = vp + toEye;
             const D4 len = sqrt4(dot(half, half));
             const D4 cosH = maxOf(dot(normal, half / len), zero);
-            alignas(32) double dv[4], lv[4], cv[4], spec[4], tr[4];
-            _mm256_store_pd(dv, diffuseFactor.v);
-            _mm256_store_pd(lv, len.v);
+            const double* trLight = &transmittance[li * kMaxPacket];
+            const D4 trans{quadMask == 15u ? _mm256_loadu_pd(&trLight[i])
+                                           : _mm256_set_pd(trLight[at[3]], trLight[at[2]],
+                                                           trLight[at[1]], trLight[at[0]])};
+            // The lanes whose pow reaches the colour: the scalar code's dv != 0 && len > 0,
+            // and specularNeeded(transmittance, ks, shininess), as one mask.
+            const __m256d need = _mm256_and_pd(
+                _mm256_and_pd(_mm256_cmp_pd(diffuseFactor.v, zero.v, _CMP_NEQ_UQ),
+                              _mm256_cmp_pd(len.v, zero.v, _CMP_GT_OQ)),
+                _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(trans.v, zero.v, _CMP_NEQ_UQ), ksNonZero),
+                             shNaN));
+            alignas(32) double cv[4], spec[4] = {0.0, 0.0, 0.0, 0.0};
             _mm256_store_pd(cv, cosH.v);
-            for (int k = 0; k < 4; ++k) {
-                tr[k] = transmittance[li * kMaxPacket + std::size_t(at[k])];
-                // pow only where its value reaches the colour (specularNeeded).
-                spec[k] = dv[k] != 0 && lv[k] > 0 && specularNeeded(tr[k], ks[k], sh[k])
-                              ? std::pow(cv[k], sh[k])
-                              : 0.0;
+            for (unsigned powLanes = unsigned(_mm256_movemask_pd(need)); powLanes;
+                 powLanes &= powLanes - 1) {
+                const int k = __builtin_ctz(powLanes);
+                spec[k] = std::pow(cv[k], sh[k]);
             }
             const D4 specularFactor{_mm256_load_pd(spec)};
-            const D4 trans{_mm256_load_pd(tr)};
             const V4 lightColour = splat4(l.colour);
             c = c + (attenuation * one) * (ambient * splat4(l.ambient) +
                                            trans * ((diffuseFactor * diffuse) * lightColour +
