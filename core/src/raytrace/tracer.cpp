@@ -379,6 +379,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     for (int j = 0; j < kMaxPacket; ++j) {
         const bool lane = (lanes >> j) & 1u;
         const Hit& h = hits[lane ? j : firstLane];
+        feelers[j].origin = h.point; // every light's feeler starts there
         px[j] = h.point.x;
         py[j] = h.point.y;
         pz[j] = h.point.z;
@@ -394,9 +395,10 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     // sampleLightsFrom: dot > 0, t0 < distance), not as a branch per lane and light.
     for (std::size_t li = 0; li < nLights; ++li) {
         const glm::dvec3& lp = scene_.lights[li].position;
+        double* tr = &transmittance[li * kMaxPacket];
         alignas(16) double dist[kMaxPacket], t0[kMaxPacket];
         alignas(16) double dx[kMaxPacket], dy[kMaxPacket], dz[kMaxPacket];
-        unsigned facing = 0, ask = 0;
+        unsigned ask = 0;
         for (int i = 0; i < kMaxPacket; i += 2) {
             if (!((lanes >> i) & 3u)) continue;
             // Element 0 is lane i, element 1 lane i + 1.
@@ -408,8 +410,11 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const V2 toLight = select(_mm_cmpgt_pd(d.v, _mm_setzero_pd()), v / d, normal);
             const D2 c = dot(toLight, normal);
             const D2 start = load(eps) / maxOf(c, splat(1e-3)); // feelerStartAt
-            const unsigned f = unsigned(_mm_movemask_pd(_mm_cmpgt_pd(c.v, _mm_setzero_pd())));
-            facing |= f << i;
+            const __m128d faces = _mm_cmpgt_pd(c.v, _mm_setzero_pd());
+            const unsigned f = unsigned(_mm_movemask_pd(faces));
+            // The surface faces away from the light: 0; the light closer than the offset: 1
+            // (a feeler's lane is set to 0 below if it is blocked).
+            _mm_storeu_pd(&tr[i], _mm_and_pd(faces, _mm_set1_pd(1.0)));
             ask |= (f & unsigned(_mm_movemask_pd(_mm_cmplt_pd(start.v, d.v)))) << i;
             _mm_store_pd(&dist[i], d.v);
             _mm_store_pd(&t0[i], start.v);
@@ -417,17 +422,12 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             _mm_store_pd(&dy[i], toLight.y.v);
             _mm_store_pd(&dz[i], toLight.z.v);
         }
-        facing &= lanes;
         ask &= lanes;
-        double* tr = &transmittance[li * kMaxPacket];
-        // The surface faces away from the light: 0; the light closer than the offset: 1.
-        for (int j = 0; j < kMaxPacket; ++j)
-            tr[j] = (facing >> j) & 1u ? 1.0 : 0.0;
-        counts.shadow += __builtin_popcount(ask);
         if (!feelerPacket) {
             const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
             for (unsigned m = ask; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
+                ++counts.shadow;
                 tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j],
                                      dist[j], base[j].self, entry);
             }
@@ -441,7 +441,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         if (!ask) continue;
         for (unsigned m = ask; m; m &= m - 1) {
             const int j = __builtin_ctz(m);
-            feelers[j].origin = hits[j].point;
+            ++counts.shadow;
             feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
             skip[j] = base[j].self;
         }
