@@ -363,22 +363,13 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         trHeap.resize(nLights * kMaxPacket);
         transmittance = trHeap.data();
     }
-    glm::dvec3 offsetOrigin[kMaxPacket];
-    FeelerBase base[kMaxPacket];
     // The hits' points, normals and feeler offsets in lanes, once for every light (a lane
     // outside `lanes` holds the first lane's, so that it computes on numbers).
     alignas(16) double px[kMaxPacket], py[kMaxPacket], pz[kMaxPacket];
     alignas(16) double nx[kMaxPacket], ny[kMaxPacket], nz[kMaxPacket], eps[kMaxPacket];
-    for (unsigned m = lanes; m; m &= m - 1) {
-        const int j = __builtin_ctz(m);
-        ++counts.primary;
-        offsetOrigin[j] = offsetRayOrigin(hits[j].point, hits[j].normal);
-        base[j] = feelerBase(hits[j], offsetOrigin[j]); // as sampleLightsFrom
-    }
     const int firstLane = __builtin_ctz(lanes);
     for (int j = 0; j < kMaxPacket; ++j) {
-        const bool lane = (lanes >> j) & 1u;
-        const Hit& h = hits[lane ? j : firstLane];
+        const Hit& h = hits[(lanes >> j) & 1u ? j : firstLane];
         feelers[j].origin = h.point; // every light's feeler starts there
         px[j] = h.point.x;
         py[j] = h.point.y;
@@ -386,7 +377,26 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         nx[j] = h.normal.x;
         ny[j] = h.normal.y;
         nz[j] = h.normal.z;
-        eps[j] = base[lane ? j : firstLane].eps;
+    }
+    // offsetRayOrigin(point, normal) of every lane (the reflected rays' origin), and
+    // feelerBase's eps = |offsetOrigin − point| (glm::length: sqrt of the dot).
+    alignas(16) double ox[kMaxPacket], oy[kMaxPacket], oz[kMaxPacket];
+    {
+        const double* const p[3] = {px, py, pz};
+        const double* const nrm[3] = {nx, ny, nz};
+        double* const o[3] = {ox, oy, oz};
+        offsetRayOrigins(p, nrm, o, kMaxPacket);
+    }
+    for (int i = 0; i < kMaxPacket; i += 2) {
+        const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
+        const V2 d = V2{load(ox), load(oy), load(oz)} - V2{load(px), load(py), load(pz)};
+        _mm_store_pd(&eps[i], sqrt2(dot(d, d)).v);
+    }
+    const Primitive* self[kMaxPacket]; // feelerBase's: the hit's primitive when flat
+    for (unsigned m = lanes; m; m &= m - 1) {
+        const int j = __builtin_ctz(m);
+        ++counts.primary;
+        self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
     }
     // sampleLightsFrom's samples, light by light (each light's feelers in row order, as
     // its shadow cache entry sees them from traceFrom): the unit vector to the point light,
@@ -429,7 +439,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
                 const int j = __builtin_ctz(m);
                 ++counts.shadow;
                 tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j],
-                                     dist[j], base[j].self, entry);
+                                     dist[j], self[j], entry);
             }
             continue;
         }
@@ -443,7 +453,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const int j = __builtin_ctz(m);
             ++counts.shadow;
             feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
-            skip[j] = base[j].self;
+            skip[j] = self[j];
         }
         const unsigned blocked = feelerPacket->occludedPacket(feelers, t0, dist, skip, ask);
         for (unsigned m = blocked; m; m &= m - 1)
@@ -454,9 +464,9 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     for (int j = 0; j < n; ++j) {
         if (!((lanes >> j) & 1u)) continue;
         long budget = settings_.maxRaysPerSample;
-        out[j] =
-            spawnChildren<false>(rays[j], hits[j], scene_.materials[size_t(hits[j].material)],
-                                 offsetOrigin[j], direct[j], nullptr, budget, counts, lastBlockers);
+        out[j] = spawnChildren<false>(rays[j], hits[j], scene_.materials[size_t(hits[j].material)],
+                                      glm::dvec3(ox[j], oy[j], oz[j]), direct[j], nullptr, budget,
+                                      counts, lastBlockers);
     }
 }
 

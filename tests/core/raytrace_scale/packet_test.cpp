@@ -860,3 +860,45 @@ TEST_CASE("packets: a row of corner rays in lanes is rayAt's bit for bit", "[pac
     }
     CHECK(rows > 1000);
 }
+
+TEST_CASE("packets: offsetRayOrigins in lanes is offsetRayOrigin bit for bit", "[packet]") {
+    // Coordinates on both sides of offsetRayOrigin's 1/32 switch (and exactly at it), ±0,
+    // negative and positive, tiny (2^-60) and huge (2^60) scales; unit normals with every
+    // sign and axis-aligned ones (a zero component: no offset along that axis).
+    std::mt19937_64 g(6);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double special[] = {0.0, -0.0, 1.0 / 32, -1.0 / 32, std::nextafter(1.0 / 32, 0.0),
+                              -std::nextafter(1.0 / 32, 0.0), 1e-300, -3.5, 7.0};
+    int points = 0, nearZero = 0, negative = 0;
+    for (int i = 0; i < 4000; ++i) {
+        double p[3][kMaxPacket], n[3][kMaxPacket], o[3][kMaxPacket];
+        for (int k = 0; k < kMaxPacket; ++k) {
+            const double scale = std::ldexp(1.0, int(g() % 121) - 60);
+            glm::dvec3 nv(u(g), u(g), u(g));
+            if (k == 3) nv = {0, 0, -1};
+            nv = glm::normalize(nv);
+            for (int a = 0; a < 3; ++a) {
+                p[a][k] = (i + k + a) % 7 == 0 ? special[(i + a) % 9] : scale * u(g);
+                n[a][k] = nv[a];
+            }
+        }
+        const double* const pp[3] = {p[0], p[1], p[2]};
+        const double* const nn[3] = {n[0], n[1], n[2]};
+        double* const oo[3] = {o[0], o[1], o[2]};
+        offsetRayOrigins(pp, nn, oo, kMaxPacket);
+        for (int k = 0; k < kMaxPacket; ++k) {
+            const glm::dvec3 pk(p[0][k], p[1][k], p[2][k]), nk(n[0][k], n[1][k], n[2][k]);
+            const glm::dvec3 want = offsetRayOrigin(pk, nk);
+            const glm::dvec3 got(o[0][k], o[1][k], o[2][k]);
+            INFO("packet " << i << " lane " << k);
+            REQUIRE(std::memcmp(&got, &want, sizeof want) == 0);
+            ++points;
+            for (int a = 0; a < 3; ++a) {
+                nearZero += std::fabs(pk[a]) < 1.0 / 32;
+                negative += pk[a] < 0;
+            }
+        }
+    }
+    CHECK(nearZero > points / 4);
+    CHECK(negative > points);
+}
