@@ -140,26 +140,32 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             const D4 attenuation =
                 select(equal(denom, one), one, one / maxOf(denom, splat4(1e-12)));
             const D4 diffuseFactor = maxOf(dot(normal, vp), zero);
-            const V4 half = vp + toEye;
-            const D4 len = sqrt4(dot(half, half));
-            const D4 cosH = maxOf(dot(normal, half / len), zero);
             const double* trLight = &transmittance[li * kMaxPacket];
             const D4 trans{quadMask == 15u ? _mm256_loadu_pd(&trLight[i])
                                            : _mm256_set_pd(trLight[at[3]], trLight[at[2]],
                                                            trLight[at[1]], trLight[at[0]])};
             // The lanes whose pow reaches the colour: the scalar code's dv != 0 && len > 0,
-            // and specularNeeded(transmittance, ks, shininess), as one mask.
-            const __m256d need = _mm256_and_pd(
-                _mm256_and_pd(_mm256_cmp_pd(diffuseFactor.v, zero.v, _CMP_NEQ_UQ),
-                              _mm256_cmp_pd(len.v, zero.v, _CMP_GT_OQ)),
+            // and specularNeeded(transmittance, ks, shininess), as one mask; the half vector
+            // only when a lane may need it (the floor's quads, ks = 0, and the shadowed ones
+            // skip it).
+            const __m256d mayNeed = _mm256_and_pd(
+                _mm256_cmp_pd(diffuseFactor.v, zero.v, _CMP_NEQ_UQ),
                 _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(trans.v, zero.v, _CMP_NEQ_UQ), ksNonZero),
                              shNaN));
-            alignas(32) double cv[4], spec[4] = {0.0, 0.0, 0.0, 0.0};
-            _mm256_store_pd(cv, cosH.v);
-            for (unsigned powLanes = unsigned(_mm256_movemask_pd(need)); powLanes;
-                 powLanes &= powLanes - 1) {
-                const int k = __builtin_ctz(powLanes);
-                spec[k] = std::pow(cv[k], sh[k]);
+            alignas(32) double spec[4] = {0.0, 0.0, 0.0, 0.0};
+            if (_mm256_movemask_pd(mayNeed)) {
+                const V4 half = vp + toEye;
+                const D4 len = sqrt4(dot(half, half));
+                const D4 cosH = maxOf(dot(normal, half / len), zero);
+                const __m256d need =
+                    _mm256_and_pd(mayNeed, _mm256_cmp_pd(len.v, zero.v, _CMP_GT_OQ));
+                alignas(32) double cv[4];
+                _mm256_store_pd(cv, cosH.v);
+                for (unsigned powLanes = unsigned(_mm256_movemask_pd(need)); powLanes;
+                     powLanes &= powLanes - 1) {
+                    const int k = __builtin_ctz(powLanes);
+                    spec[k] = std::pow(cv[k], sh[k]);
+                }
             }
             const D4 specularFactor{_mm256_load_pd(spec)};
             const V4 lightColour = splat4(l.colour);
