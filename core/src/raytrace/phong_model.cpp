@@ -107,20 +107,21 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             sh[k] = std::clamp(m[k]->phongExp, 0.0, 128.0);
         }
         const auto q3 = [&](auto field) { return quad(field(0), field(1), field(2), field(3)); };
-        const V4 surface = q3([&](int k) { return m[k]->colour; });
-        const V4 ambient = q3([&](int k) { return m[k]->ka; }) * surface,
-                 diffuse = q3([&](int k) { return m[k]->kd; }) * surface;
-        double ks[4];
-        for (int k = 0; k < 4; ++k)
-            ks[k] = m[k]->ks;
-        const D4 ksQuad = quad(ks[0], ks[1], ks[2], ks[3]);
+        // The material's terms: broadcast when the quad's four lanes share one material (a
+        // row of eye hits mostly does: balls 4's spheres, its floor), gathered otherwise.
+        const bool oneMaterial = m[0] == m[1] && m[1] == m[2] && m[2] == m[3];
+        const auto qm = [&](auto field) { return oneMaterial ? splat4(field(0)) : q3(field); };
+        const V4 surface = qm([&](int k) { return m[k]->colour; });
+        const V4 ambient = qm([&](int k) { return m[k]->ka; }) * surface,
+                 diffuse = qm([&](int k) { return m[k]->kd; }) * surface;
+        const D4 ksQuad = qm([&](int k) { return m[k]->ks; });
         const V4 specular{ksQuad, ksQuad, ksQuad};
         // specularNeeded's material terms for the four lanes: ks != 0 (unordered: NaN
         // counts), a NaN shininess.
         const __m256d ksNonZero = _mm256_cmp_pd(ksQuad.v, _mm256_setzero_pd(), _CMP_NEQ_UQ);
         const __m256d shQuad = _mm256_set_pd(sh[3], sh[2], sh[1], sh[0]);
         const __m256d shNaN = _mm256_cmp_pd(shQuad, shQuad, _CMP_UNORD_Q);
-        V4 c = q3([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
+        V4 c = qm([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
         const V4 origin = q3([&](int k) { return views[at[k]].origin; });
         const V4 pos = q3([&](int k) { return h[k]->point; }) - origin;
         const V4 normal = q3([&](int k) { return h[k]->normal; });
