@@ -416,8 +416,9 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const V2 normal{load(nx), load(ny), load(nz)};
             const V2 v = splat(lp) - V2{load(px), load(py), load(pz)};
             const D2 d = sqrt2(dot(v, v));
-            // The light exactly at the point: the normal.
-            const V2 toLight = select(_mm_cmpgt_pd(d.v, _mm_setzero_pd()), v / d, normal);
+            // The light exactly at the point: the normal (the select only when a lane is).
+            const __m128d away = _mm_cmpgt_pd(d.v, _mm_setzero_pd());
+            const V2 toLight = _mm_movemask_pd(away) == 3 ? v / d : select(away, v / d, normal);
             const D2 c = dot(toLight, normal);
             const D2 start = load(eps) / maxOf(c, splat(1e-3)); // feelerStartAt
             const __m128d faces = _mm_cmpgt_pd(c.v, _mm_setzero_pd());
@@ -438,8 +439,8 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             for (unsigned m = ask; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
                 ++counts.shadow;
-                tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j],
-                                     dist[j], self[j], entry);
+                tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
+                                     self[j], entry);
             }
             continue;
         }
