@@ -1,5 +1,6 @@
 #include "core/raytrace/camera.h"
 
+#include <emmintrin.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -62,6 +63,64 @@ Ray LookAtCamera::rayAt(double px, double py, int width, int height) const {
     // Lab 07's ViewCamera::make and pixelRay in the same order of operations.
     const double pixel = 2.0 * dist * tanHalfFov / height;
     return screen_.rayThroughScreen(px - width / 2.0, height / 2.0 - py, pixel);
+}
+
+void LookAtCamera::rowRays(int x0, int y, int n, int width, int height, Ray* out) const {
+    int k = 0;
+    const ScreenCamera& s = screen_;
+    // NaN or negative: rayThroughScreen's test, ray by ray.
+    if (s.hither == 0 || s.hither > 0) {
+        // rayThroughScreen(xs, ys, pixel) of rayAt, lane by lane: p = centre + pixel·(xs·X +
+        // ys·Y), direction = (p − eye)·(1 / sqrt(dot)) as glm::normalize (no FMA: each
+        // product is rounded before its sum, as in the scalar code); on the hither plane,
+        // origin = eye + (hither / dot(direction, f))·direction.
+        const bool hither = s.hither > 0;
+        const glm::dvec3 f = glm::normalize(s.screenCentre - s.eye);
+        const __m128d h = _mm_set1_pd(s.hither);
+        const double pixel = 2.0 * dist * tanHalfFov / height;
+        const double ys = height / 2.0 - double(y);
+        const glm::dvec3 ysY = ys * s.screenY;
+        const __m128d halfW = _mm_set1_pd(width / 2.0), pix = _mm_set1_pd(pixel);
+        const __m128d one = _mm_set1_pd(1.0);
+        for (; k + 1 < n; k += 2) {
+            // Element 0 is ray k, element 1 ray k + 1.
+            const __m128d xs = _mm_sub_pd(_mm_set_pd(double(x0 + k + 1), double(x0 + k)), halfW);
+            __m128d v[3];
+            for (int a = 0; a < 3; ++a) {
+                const __m128d onScreen =
+                    _mm_add_pd(_mm_mul_pd(xs, _mm_set1_pd(s.screenX[a])), _mm_set1_pd(ysY[a]));
+                const __m128d p =
+                    _mm_add_pd(_mm_set1_pd(s.screenCentre[a]), _mm_mul_pd(pix, onScreen));
+                v[a] = _mm_sub_pd(p, _mm_set1_pd(s.eye[a]));
+            }
+            const __m128d dot = _mm_add_pd(
+                _mm_add_pd(_mm_mul_pd(v[0], v[0]), _mm_mul_pd(v[1], v[1])), _mm_mul_pd(v[2], v[2]));
+            const __m128d inv = _mm_div_pd(one, _mm_sqrt_pd(dot));
+            __m128d dir[3];
+            for (int a = 0; a < 3; ++a)
+                dir[a] = _mm_mul_pd(v[a], inv);
+            alignas(16) double d[3][2], o[3][2];
+            for (int a = 0; a < 3; ++a)
+                _mm_store_pd(d[a], dir[a]);
+            if (hither) {
+                const __m128d cosF = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dir[0], _mm_set1_pd(f.x)),
+                                                           _mm_mul_pd(dir[1], _mm_set1_pd(f.y))),
+                                                _mm_mul_pd(dir[2], _mm_set1_pd(f.z)));
+                const __m128d along = _mm_div_pd(h, cosF);
+                for (int a = 0; a < 3; ++a)
+                    _mm_store_pd(o[a],
+                                 _mm_add_pd(_mm_set1_pd(s.eye[a]), _mm_mul_pd(along, dir[a])));
+            }
+            for (int e = 0; e < 2; ++e) {
+                Ray& r = out[k + e];
+                r = Ray();
+                r.origin = hither ? glm::dvec3(o[0][e], o[1][e], o[2][e]) : s.eye;
+                r.direction = glm::dvec3(d[0][e], d[1][e], d[2][e]);
+            }
+        }
+    }
+    for (; k < n; ++k) // an odd last ray, or the hither plane's rays
+        out[k] = rayAt(x0 + k, y, width, height);
 }
 
 Ray LookAtCamera::primaryRay(int x, int y, int width, int height) const {

@@ -53,9 +53,9 @@ inline __m256d equal(D4 a, D4 b) {
 inline D4 select(__m256d m, D4 a, D4 b) {
     return {_mm256_or_pd(_mm256_and_pd(m, a.v), _mm256_andnot_pd(m, b.v))};
 }
-// std::max(x, lo) = (x < lo) ? lo : x (NaN stays x).
+// std::max(x, lo) = (x < lo) ? lo : x (NaN stays x): vmaxpd(lo, x), as lanes_sse2.h's.
 inline D4 maxOf(D4 x, D4 lo) {
-    return select(less(x, lo), lo, x);
+    return {_mm256_max_pd(lo.v, x.v)};
 }
 struct V4 { // a dvec3 of four hits
     D4 x, y, z;

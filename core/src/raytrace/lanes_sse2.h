@@ -42,9 +42,11 @@ inline D2 splat(double x) {
 inline D2 select(__m128d m, D2 a, D2 b) {
     return {_mm_or_pd(_mm_and_pd(m, a.v), _mm_andnot_pd(m, b.v))};
 }
-// std::max(x, lo) = (x < lo) ? lo : x (NaN stays x).
+// std::max(x, lo) = (x < lo) ? lo : x (NaN stays x): maxpd(lo, x) is lo > x ? lo : x,
+// the same value in every case (a NaN x fails both comparisons and stays x; x == lo gives
+// x, a ±0 pair the x of std::max too).
 inline D2 maxOf(D2 x, D2 lo) {
-    return select(_mm_cmplt_pd(x.v, lo.v), lo, x);
+    return {_mm_max_pd(lo.v, x.v)};
 }
 struct V2 { // a dvec3 of two hits
     D2 x, y, z;

@@ -167,8 +167,9 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 Ray rays[kMaxPacket];
                 Hit hits[kMaxPacket];
                 double tMin[kMaxPacket], tMax[kMaxPacket];
+                if (opt.cornerRays) lookAt->rowRays(x, y, n, width, height, rays);
                 for (int j = 0; j < n; ++j) {
-                    rays[j] = rayOf(x + j, y);
+                    if (!opt.cornerRays) rays[j] = camera.primaryRay(x + j, y, width, height);
                     tMin[j] = 0.0;
                     tMax[j] = std::numeric_limits<double>::infinity();
                 }

@@ -71,6 +71,20 @@ bool PhongModel::lanesApply(const Scene& scene) {
 }
 
 namespace {
+// Whether the highlight's pow can reach the colour: direct() adds transmittance ·
+// (diffuse·colour + s·ks·colour) with s = pow(cos, shininess), finite and >= 0 for a cos
+// >= 0 and a shininess clamped to [0, 128] (a NaN cos needs an infinite or NaN normal,
+// whose diffuse term makes the colour non-finite either way). With ks = ±0 the
+// product s·ks is the same zero for any such s, and with transmittance = ±0 (shadowed or
+// facing away) the whole term is a zero for any s (a NaN or infinity from the colours stays
+// one either way): s = 0 then gives the same colour, at most a zero of the other sign, which
+// no byte sees. A NaN shininess (clamp keeps it) makes s NaN: pow is called as before.
+// The eye hits of balls 4's floor (ks = 0) and its shadowed hits made most of the eye
+// level's pow calls.
+inline bool specularNeeded(double transmittance, double ks, double shininess) {
+    return (transmittance != 0 && ks != 0) || shininess != shininess;
+}
+
 // directLanes four hits at a time: the same formula, operation for operation, in AVX's
 // lanes (the scalar comments are directLanes' below).
 __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* views,
@@ -93,12 +107,21 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             sh[k] = std::clamp(m[k]->phongExp, 0.0, 128.0);
         }
         const auto q3 = [&](auto field) { return quad(field(0), field(1), field(2), field(3)); };
-        const V4 surface = q3([&](int k) { return m[k]->colour; });
-        const V4 ambient = q3([&](int k) { return m[k]->ka; }) * surface,
-                 diffuse = q3([&](int k) { return m[k]->kd; }) * surface;
-        const D4 ks = q3([&](int k) { return m[k]->ks; });
-        const V4 specular{ks, ks, ks};
-        V4 c = q3([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
+        // The material's terms: broadcast when the quad's four lanes share one material (a
+        // row of eye hits mostly does: balls 4's spheres, its floor), gathered otherwise.
+        const bool oneMaterial = m[0] == m[1] && m[1] == m[2] && m[2] == m[3];
+        const auto qm = [&](auto field) { return oneMaterial ? splat4(field(0)) : q3(field); };
+        const V4 surface = qm([&](int k) { return m[k]->colour; });
+        const V4 ambient = qm([&](int k) { return m[k]->ka; }) * surface,
+                 diffuse = qm([&](int k) { return m[k]->kd; }) * surface;
+        const D4 ksQuad = qm([&](int k) { return m[k]->ks; });
+        const V4 specular{ksQuad, ksQuad, ksQuad};
+        // specularNeeded's material terms for the four lanes: ks != 0 (unordered: NaN
+        // counts), a NaN shininess.
+        const __m256d ksNonZero = _mm256_cmp_pd(ksQuad.v, _mm256_setzero_pd(), _CMP_NEQ_UQ);
+        const __m256d shQuad = _mm256_set_pd(sh[3], sh[2], sh[1], sh[0]);
+        const __m256d shNaN = _mm256_cmp_pd(shQuad, shQuad, _CMP_UNORD_Q);
+        V4 c = qm([&](int k) { return m[k]->emission; }) + ambient * splat4(scene.globalAmbient);
         const V4 origin = q3([&](int k) { return views[at[k]].origin; });
         const V4 pos = q3([&](int k) { return h[k]->point; }) - origin;
         const V4 normal = q3([&](int k) { return h[k]->normal; });
@@ -118,19 +141,34 @@ __attribute__((target("avx"))) void directQuads(const Scene& scene, const Ray* v
             const D4 attenuation =
                 select(equal(denom, one), one, one / maxOf(denom, splat4(1e-12)));
             const D4 diffuseFactor = maxOf(dot(normal, vp), zero);
-            const V4 half = vp + toEye;
-            const D4 len = sqrt4(dot(half, half));
-            const D4 cosH = maxOf(dot(normal, half / len), zero);
-            alignas(32) double dv[4], lv[4], cv[4], spec[4], tr[4];
-            _mm256_store_pd(dv, diffuseFactor.v);
-            _mm256_store_pd(lv, len.v);
-            _mm256_store_pd(cv, cosH.v);
-            for (int k = 0; k < 4; ++k) {
-                spec[k] = dv[k] != 0 && lv[k] > 0 ? std::pow(cv[k], sh[k]) : 0.0;
-                tr[k] = transmittance[li * kMaxPacket + std::size_t(at[k])];
+            const double* trLight = &transmittance[li * kMaxPacket];
+            const D4 trans{quadMask == 15u ? _mm256_loadu_pd(&trLight[i])
+                                           : _mm256_set_pd(trLight[at[3]], trLight[at[2]],
+                                                           trLight[at[1]], trLight[at[0]])};
+            // The lanes whose pow reaches the colour: the scalar code's dv != 0 && len > 0,
+            // and specularNeeded(transmittance, ks, shininess), as one mask; the half vector
+            // only when a lane may need it (the floor's quads, ks = 0, and the shadowed ones
+            // skip it).
+            const __m256d mayNeed = _mm256_and_pd(
+                _mm256_cmp_pd(diffuseFactor.v, zero.v, _CMP_NEQ_UQ),
+                _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(trans.v, zero.v, _CMP_NEQ_UQ), ksNonZero),
+                             shNaN));
+            alignas(32) double spec[4] = {0.0, 0.0, 0.0, 0.0};
+            if (_mm256_movemask_pd(mayNeed)) {
+                const V4 half = vp + toEye;
+                const D4 len = sqrt4(dot(half, half));
+                const D4 cosH = maxOf(dot(normal, half / len), zero);
+                const __m256d need =
+                    _mm256_and_pd(mayNeed, _mm256_cmp_pd(len.v, zero.v, _CMP_GT_OQ));
+                alignas(32) double cv[4];
+                _mm256_store_pd(cv, cosH.v);
+                for (unsigned powLanes = unsigned(_mm256_movemask_pd(need)); powLanes;
+                     powLanes &= powLanes - 1) {
+                    const int k = __builtin_ctz(powLanes);
+                    spec[k] = std::pow(cv[k], sh[k]);
+                }
             }
             const D4 specularFactor{_mm256_load_pd(spec)};
-            const D4 trans{_mm256_load_pd(tr)};
             const V4 lightColour = splat4(l.colour);
             c = c + (attenuation * one) * (ambient * splat4(l.ambient) +
                                            trans * ((diffuseFactor * diffuse) * lightColour +
@@ -201,11 +239,16 @@ void PhongModel::directLanes(const Scene& scene, const Ray* views, const Hit* hi
             _mm_store_pd(lv, len.v);
             _mm_store_pd(cv, cosH.v);
             // Index 1 is the high lane (a), index 0 the low lane (b).
-            const double specA = dv[1] != 0 && lv[1] > 0 ? std::pow(cv[1], shA) : 0.0;
-            const double specB = dv[0] != 0 && lv[0] > 0 ? std::pow(cv[0], shB) : 0.0;
+            const double trA = transmittance[li * kMaxPacket + std::size_t(a)],
+                         trB = transmittance[li * kMaxPacket + std::size_t(b)];
+            const double specA = dv[1] != 0 && lv[1] > 0 && specularNeeded(trA, ma.ks, shA)
+                                     ? std::pow(cv[1], shA)
+                                     : 0.0;
+            const double specB = dv[0] != 0 && lv[0] > 0 && specularNeeded(trB, mb.ks, shB)
+                                     ? std::pow(cv[0], shB)
+                                     : 0.0;
             const D2 specularFactor = pair(specA, specB);
-            const D2 trans = pair(transmittance[li * kMaxPacket + std::size_t(a)],
-                                  transmittance[li * kMaxPacket + std::size_t(b)]);
+            const D2 trans = pair(trA, trB);
             const V2 lightColour = splat(l.colour);
             // attenuation · spot (1 without a cone) · (ambient·l.ambient + shadow ·
             // (diffuse·d·colour + specular·s·colour)), as direct() groups it.

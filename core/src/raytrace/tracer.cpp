@@ -352,61 +352,95 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     // The feelers for occludedPacket, made once (only origin and direction change).
     Ray feelers[kMaxPacket];
     const Primitive* skip[kMaxPacket];
-    thread_local std::vector<double> transmittance;
-    transmittance.resize(nLights * kMaxPacket);
-    glm::dvec3 offsetOrigin[kMaxPacket];
-    FeelerBase base[kMaxPacket];
-    for (int j = 0; j < n; ++j) {
-        if (!((lanes >> j) & 1u)) continue;
+    // The lanes' transmittances, light by light (directLanes' layout); on the stack for the
+    // usual few lights (the thread's vector and its resize cost ~5 M instructions of the
+    // balls 4 frame).
+    constexpr std::size_t kStackLights = 8;
+    double trStack[kStackLights * kMaxPacket];
+    thread_local std::vector<double> trHeap;
+    double* transmittance = trStack;
+    if (nLights > kStackLights) {
+        trHeap.resize(nLights * kMaxPacket);
+        transmittance = trHeap.data();
+    }
+    // The hits' points, normals and feeler offsets in lanes, once for every light (a lane
+    // outside `lanes` holds the first lane's, so that it computes on numbers).
+    alignas(16) double px[kMaxPacket], py[kMaxPacket], pz[kMaxPacket];
+    alignas(16) double nx[kMaxPacket], ny[kMaxPacket], nz[kMaxPacket], eps[kMaxPacket];
+    const int firstLane = __builtin_ctz(lanes);
+    for (int j = 0; j < kMaxPacket; ++j) {
+        const Hit& h = hits[(lanes >> j) & 1u ? j : firstLane];
+        feelers[j].origin = h.point; // every light's feeler starts there
+        px[j] = h.point.x;
+        py[j] = h.point.y;
+        pz[j] = h.point.z;
+        nx[j] = h.normal.x;
+        ny[j] = h.normal.y;
+        nz[j] = h.normal.z;
+    }
+    // offsetRayOrigin(point, normal) of every lane (the reflected rays' origin), and
+    // feelerBase's eps = |offsetOrigin − point| (glm::length: sqrt of the dot).
+    alignas(16) double ox[kMaxPacket], oy[kMaxPacket], oz[kMaxPacket];
+    {
+        const double* const p[3] = {px, py, pz};
+        const double* const nrm[3] = {nx, ny, nz};
+        double* const o[3] = {ox, oy, oz};
+        offsetRayOrigins(p, nrm, o, kMaxPacket);
+    }
+    for (int i = 0; i < kMaxPacket; i += 2) {
+        const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
+        const V2 d = V2{load(ox), load(oy), load(oz)} - V2{load(px), load(py), load(pz)};
+        _mm_store_pd(&eps[i], sqrt2(dot(d, d)).v);
+    }
+    const Primitive* self[kMaxPacket]; // feelerBase's: the hit's primitive when flat
+    for (unsigned m = lanes; m; m &= m - 1) {
+        const int j = __builtin_ctz(m);
         ++counts.primary;
-        offsetOrigin[j] = offsetRayOrigin(hits[j].point, hits[j].normal);
-        base[j] = feelerBase(hits[j], offsetOrigin[j]); // as sampleLightsFrom
+        self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
     }
     // sampleLightsFrom's samples, light by light (each light's feelers in row order, as
     // its shadow cache entry sees them from traceFrom): the unit vector to the point light,
-    // its distance and the feeler's start for two hits at a time, then each feeler.
+    // its distance and the feeler's start for two hits at a time, then each feeler. Which
+    // lanes face the light and which need a feeler come out as masks (the comparisons of
+    // sampleLightsFrom: dot > 0, t0 < distance), not as a branch per lane and light.
     for (std::size_t li = 0; li < nLights; ++li) {
-        const V2 lightPos = splat(scene_.lights[li].position);
-        alignas(16) double dist[kMaxPacket], cosL[kMaxPacket], t0[kMaxPacket];
-        alignas(16) double dx[kMaxPacket], dy[kMaxPacket], dz[kMaxPacket];
-        for (int i = 0; i + 1 < kMaxPacket; i += 2) {
-            const unsigned pairMask = (lanes >> i) & 3u;
-            if (!pairMask) continue;
-            // Lane i in the high half, i + 1 in the low; a lane outside `lanes` computes on
-            // its partner's data.
-            const int a = (pairMask & 1u) ? i : i + 1, b = (pairMask & 2u) ? i + 1 : i;
-            const V2 normal = pair(hits[a].normal, hits[b].normal);
-            const V2 v = lightPos - pair(hits[a].point, hits[b].point);
-            const D2 d = sqrt2(dot(v, v));
-            // The light exactly at the point: the normal.
-            const V2 toLight = select(_mm_cmpgt_pd(d.v, _mm_setzero_pd()), v / d, normal);
-            const D2 c = dot(toLight, normal);
-            const D2 start = pair(base[a].eps, base[b].eps) / maxOf(c, splat(1e-3)); // feelerStartAt
-            auto store = [i](double* to, __m128d x) { // back to lanes i (high), i + 1 (low)
-                _mm_storel_pd(&to[i + 1], x);
-                _mm_storeh_pd(&to[i], x);
-            };
-            store(dist, d.v);
-            store(cosL, c.v);
-            store(t0, start.v);
-            store(dx, toLight.x.v);
-            store(dy, toLight.y.v);
-            store(dz, toLight.z.v);
-        }
-        const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
+        const glm::dvec3& lp = scene_.lights[li].position;
         double* tr = &transmittance[li * kMaxPacket];
+        alignas(16) double dist[kMaxPacket], t0[kMaxPacket];
+        alignas(16) double dx[kMaxPacket], dy[kMaxPacket], dz[kMaxPacket];
+        unsigned ask = 0;
+        for (int i = 0; i < kMaxPacket; i += 2) {
+            if (!((lanes >> i) & 3u)) continue;
+            // Element 0 is lane i, element 1 lane i + 1.
+            const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
+            const V2 normal{load(nx), load(ny), load(nz)};
+            const V2 v = splat(lp) - V2{load(px), load(py), load(pz)};
+            const D2 d = sqrt2(dot(v, v));
+            // The light exactly at the point: the normal (the select only when a lane is).
+            const __m128d away = _mm_cmpgt_pd(d.v, _mm_setzero_pd());
+            const V2 toLight = _mm_movemask_pd(away) == 3 ? v / d : select(away, v / d, normal);
+            const D2 c = dot(toLight, normal);
+            const D2 start = load(eps) / maxOf(c, splat(1e-3)); // feelerStartAt
+            const __m128d faces = _mm_cmpgt_pd(c.v, _mm_setzero_pd());
+            const unsigned f = unsigned(_mm_movemask_pd(faces));
+            // The surface faces away from the light: 0; the light closer than the offset: 1
+            // (a feeler's lane is set to 0 below if it is blocked).
+            _mm_storeu_pd(&tr[i], _mm_and_pd(faces, _mm_set1_pd(1.0)));
+            ask |= (f & unsigned(_mm_movemask_pd(_mm_cmplt_pd(start.v, d.v)))) << i;
+            _mm_store_pd(&dist[i], d.v);
+            _mm_store_pd(&t0[i], start.v);
+            _mm_store_pd(&dx[i], toLight.x.v);
+            _mm_store_pd(&dy[i], toLight.y.v);
+            _mm_store_pd(&dz[i], toLight.z.v);
+        }
+        ask &= lanes;
         if (!feelerPacket) {
-            for (int j = 0; j < n; ++j) {
-                if (!((lanes >> j) & 1u)) continue;
-                if (!(cosL[j] > 0)) {
-                    tr[j] = 0.0; // the surface faces away from the light
-                } else if (!(t0[j] < dist[j])) {
-                    tr[j] = 1.0; // the light is closer than the offset
-                } else {
-                    ++counts.shadow;
-                    tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j],
-                                         dist[j], base[j].self, entry);
-                }
+            const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
+            for (unsigned m = ask; m; m &= m - 1) {
+                const int j = __builtin_ctz(m);
+                ++counts.shadow;
+                tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
+                                     self[j], entry);
             }
             continue;
         }
@@ -415,35 +449,25 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         // walk costs about what the cache's exact tests saved, and occludedPacket does not
         // say which primitive blocked (refilling the cache by one single walk per blocked
         // packet: balls 4 frame 1576.5 -> 1586.3 M instructions).
-        unsigned ask = 0;
-        for (int j = 0; j < n; ++j) {
-            if (!((lanes >> j) & 1u)) continue;
-            if (!(cosL[j] > 0)) {
-                tr[j] = 0.0;
-            } else if (!(t0[j] < dist[j])) {
-                tr[j] = 1.0;
-            } else {
-                ++counts.shadow;
-                feelers[j].origin = hits[j].point;
-                feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
-                skip[j] = base[j].self;
-                tr[j] = 1.0;
-                ask |= 1u << j;
-            }
-        }
         if (!ask) continue;
+        for (unsigned m = ask; m; m &= m - 1) {
+            const int j = __builtin_ctz(m);
+            ++counts.shadow;
+            feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
+            skip[j] = self[j];
+        }
         const unsigned blocked = feelerPacket->occludedPacket(feelers, t0, dist, skip, ask);
         for (unsigned m = blocked; m; m &= m - 1)
             tr[__builtin_ctz(m)] = 0.0;
     }
     Color direct[kMaxPacket];
-    PhongModel::directLanes(scene_, rays, hits, lanes, transmittance.data(), direct);
+    PhongModel::directLanes(scene_, rays, hits, lanes, transmittance, direct);
     for (int j = 0; j < n; ++j) {
         if (!((lanes >> j) & 1u)) continue;
         long budget = settings_.maxRaysPerSample;
-        out[j] =
-            spawnChildren<false>(rays[j], hits[j], scene_.materials[size_t(hits[j].material)],
-                                 offsetOrigin[j], direct[j], nullptr, budget, counts, lastBlockers);
+        out[j] = spawnChildren<false>(rays[j], hits[j], scene_.materials[size_t(hits[j].material)],
+                                      glm::dvec3(ox[j], oy[j], oz[j]), direct[j], nullptr, budget,
+                                      counts, lastBlockers);
     }
 }
 

@@ -827,3 +827,78 @@ TEST_CASE("packets: an opaque scene's eye feelers walk as packets with the singl
     requireSingleFrame(sc, cam, 96, 72, {1, 2});
     sc.setAggregate(nullptr);
 }
+
+TEST_CASE("packets: a row of corner rays in lanes is rayAt's bit for bit", "[packet][camera]") {
+    // Cameras off the axes (every component of the frame nonzero), with and without the
+    // hither plane (the SPD scenes set one), image sizes odd and even, rows of 1..8 rays
+    // starting at even and odd x (the last ray of an odd row goes through rayAt itself).
+    const auto same = [](const Ray& a, const Ray& b) {
+        return std::memcmp(&a.origin, &b.origin, sizeof a.origin) == 0 &&
+               std::memcmp(&a.direction, &b.direction, sizeof a.direction) == 0 &&
+               a.weight == b.weight && a.depth == b.depth && a.medium.refract == b.medium.refract &&
+               a.medium.atten == b.medium.atten;
+    };
+    int rows = 0;
+    for (const double hither : {0.0, 0.3, 1.7}) {
+        LookAtCamera cam({2.1, -3.7, 1.3}, {0.2, 0.4, -0.35}, {0.1, 0.2, 1.0}, 37.5);
+        cam.setHither(hither);
+        for (const auto& [w, h] : {std::pair{512, 512}, std::pair{97, 61}}) {
+            for (int y = 0; y <= h; y += 7) {
+                for (int x0 = 0; x0 <= w; x0 += 5) {
+                    const int n = 1 + (x0 + y) % kMaxPacket;
+                    Ray row[kMaxPacket];
+                    cam.rowRays(x0, y, n, w, h, row);
+                    for (int k = 0; k < n; ++k) {
+                        INFO("hither " << hither << " size " << w << "x" << h << " ray (" << x0 + k
+                                       << ", " << y << ")");
+                        REQUIRE(same(row[k], cam.rayAt(x0 + k, y, w, h)));
+                    }
+                    ++rows;
+                }
+            }
+        }
+    }
+    CHECK(rows > 1000);
+}
+
+TEST_CASE("packets: offsetRayOrigins in lanes is offsetRayOrigin bit for bit", "[packet]") {
+    // Coordinates on both sides of offsetRayOrigin's 1/32 switch (and exactly at it), ±0,
+    // negative and positive, tiny (2^-60) and huge (2^60) scales; unit normals with every
+    // sign and axis-aligned ones (a zero component: no offset along that axis).
+    std::mt19937_64 g(6);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const double special[] = {0.0, -0.0, 1.0 / 32, -1.0 / 32, std::nextafter(1.0 / 32, 0.0),
+                              -std::nextafter(1.0 / 32, 0.0), 1e-300, -3.5, 7.0};
+    int points = 0, nearZero = 0, negative = 0;
+    for (int i = 0; i < 4000; ++i) {
+        double p[3][kMaxPacket], n[3][kMaxPacket], o[3][kMaxPacket];
+        for (int k = 0; k < kMaxPacket; ++k) {
+            const double scale = std::ldexp(1.0, int(g() % 121) - 60);
+            glm::dvec3 nv(u(g), u(g), u(g));
+            if (k == 3) nv = {0, 0, -1};
+            nv = glm::normalize(nv);
+            for (int a = 0; a < 3; ++a) {
+                p[a][k] = (i + k + a) % 7 == 0 ? special[(i + a) % 9] : scale * u(g);
+                n[a][k] = nv[a];
+            }
+        }
+        const double* const pp[3] = {p[0], p[1], p[2]};
+        const double* const nn[3] = {n[0], n[1], n[2]};
+        double* const oo[3] = {o[0], o[1], o[2]};
+        offsetRayOrigins(pp, nn, oo, kMaxPacket);
+        for (int k = 0; k < kMaxPacket; ++k) {
+            const glm::dvec3 pk(p[0][k], p[1][k], p[2][k]), nk(n[0][k], n[1][k], n[2][k]);
+            const glm::dvec3 want = offsetRayOrigin(pk, nk);
+            const glm::dvec3 got(o[0][k], o[1][k], o[2][k]);
+            INFO("packet " << i << " lane " << k);
+            REQUIRE(std::memcmp(&got, &want, sizeof want) == 0);
+            ++points;
+            for (int a = 0; a < 3; ++a) {
+                nearZero += std::fabs(pk[a]) < 1.0 / 32;
+                negative += pk[a] < 0;
+            }
+        }
+    }
+    CHECK(nearZero > points / 4);
+    CHECK(negative > points);
+}

@@ -301,7 +301,7 @@ TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]
 // (emission, exponents clamped to 0..128, ka/kd/ks 0 and random), point lights with and
 // without attenuation (a denominator of exactly 1, of 0, random), shadowed and lit
 // samples, normals facing away, random lane masks (a lane outside the mask is neither
-// read nor written); and the degenerate lanes: the light at the hit point (d = 0), the
+// read nor written), packets whose lanes share one material; and the degenerate lanes: the light at the hit point (d = 0), the
 // viewer at the hit point (no eye direction), the light exactly behind the viewer (a zero
 // half vector), huge and tiny scales.
 TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[raytrace][phong]") {
@@ -367,6 +367,11 @@ TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[r
                 for (int li = 0; li < 4; ++li)
                     trans[li * kMaxPacket + j] = (i + j + li) % 3 == 0 ? 0.0 : u(g);
             }
+            // Every third packet's lanes share lane 0's material (directQuads broadcasts a
+            // quad's one material instead of gathering four).
+            if (i % 3 == 1)
+                for (int j = 1; j < kMaxPacket; ++j)
+                    hits[j].material = hits[0].material;
             const unsigned lanes = i % 4 == 0 ? 0xFFu : unsigned(g() & 0xFFu);
             for (PhongModel::LaneWidth width : widths) {
                 Color out[kMaxPacket];
