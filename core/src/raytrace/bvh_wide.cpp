@@ -130,18 +130,8 @@ void Bvh::fillLeafData(std::uint32_t i) {
         sm_[i] = float(l1Norm(s->centre) + s->radius) * kSphereMargin;
     } else if (runOf(kind_[i]) == kRunTriangle) {
         const auto* t = static_cast<const Triangle*>(order_[i]);
-        float* slot = reinterpret_cast<float*>(tri_.data()) + triOffset(i);
-        // A page's first slots again at the end of the page before (TriPage): at field 0's
-        // float kTriSlots + (i mod kTriSlots) of that page.
-        float* repeat = (i & (kTriSlots - 1)) < kTriStride - kTriSlots && i >= kTriSlots
-                            ? slot - kTriFields * kTriStride + kTriSlots
-                            : nullptr;
-        auto set = [&](int k, float v) {
-            slot[k * kTriStride] = v;
-            if (repeat) repeat[k * kTriStride] = v;
-        };
         for (int a = 0; a < 3; ++a)
-            set(a, float(t->v0[a]));
+            tv_[a][i] = float(t->v0[a]);
         // The filter's edges, normal and bound parts (bvh_wide_kinds.h), in double
         // from the double vertices, rounded to float (the parts rounded up).
         const glm::dvec3 e1 = t->v1 - t->v0, e2 = t->v2 - t->v0, nn = glm::cross(e1, e2);
@@ -149,15 +139,15 @@ void Bvh::fillLeafData(std::uint32_t i) {
         const glm::dvec3* es[3] = {&ne1, &e2, &nn};
         for (int j = 0; j < 3; ++j)
             for (int a = 0; a < 3; ++a)
-                set(3 + j * 3 + a, float((*es[j])[a]));
+                te_[j * 3 + a][i] = float((*es[j])[a]);
         const double vmax = std::max({l1Norm(t->v0), l1Norm(t->v1), l1Norm(t->v2)});
         const double em = std::max(l1Norm(e1), l1Norm(e2));
         const double p1 = kMtEdgeMargin * em + 2 * kMtDoubleMargin * vmax;
         const double p2 = kMtEdgeMargin * em * vmax + kMtNormalMargin * l1Norm(nn) +
                           kMtDoubleMargin * vmax * vmax;
         const bool small = vmax <= kMtMaxCoord; // false for NaN
-        set(12, small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity());
-        set(13, small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity());
+        tp_[0][i] = small ? floatUp(p1 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
+        tp_[1][i] = small ? floatUp(p2 * (1 + 0x1p-20)) : std::numeric_limits<float>::infinity();
     } else {
         // Rounded outward; a box float cannot hold (or an empty one) is never rejected.
         const Aabb bx = order_[i]->bounds();
@@ -467,30 +457,24 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     if (has[kRunSphere])
         for (auto* v : {&sx_, &sy_, &sz_, &sr_, &sm_})
             zeroed.push_back(v);
+    if (has[kRunTriangle]) {
+        for (auto& v : tv_)
+            zeroed.push_back(&v);
+        for (auto& v : te_)
+            zeroed.push_back(&v);
+        for (auto& v : tp_)
+            zeroed.push_back(&v);
+    }
     if (has[kRunOther])
         for (auto& v : ob_)
             zeroed.push_back(&v);
-    // The triangle pages in parts of about one former array's size (kTriFields parts: the
-    // 14 arrays were 14 items), zeroed as items of their own.
-    const std::size_t triPages = has[kRunTriangle] ? (n + kTriSlots - 1) / kTriSlots : 0;
-    const std::size_t triParts = std::min<std::size_t>(triPages, kTriFields);
     auto arrays = [&] {
-        bvh_detail::KeptVector<TriPage>(triPages).swap(tri_); // left unset: zeroed below
-        auto zero = [&](std::size_t k) {
-            if (k < zeroed.size()) {
-                zeroed[k]->assign(n + 4, 0.0f);
-                return;
-            }
-            k -= zeroed.size();
-            const std::size_t a = triPages * k / triParts, e = triPages * (k + 1) / triParts;
-            std::memset(static_cast<void*>(tri_.data() + a), 0, (e - a) * sizeof(TriPage));
-        };
-        const std::size_t items = zeroed.size() + triParts;
-        if (options_.buildThreads == 1 || items < 2) {
-            for (std::size_t k = 0; k < items; ++k)
+        auto zero = [&](std::size_t k) { zeroed[k]->assign(n + 4, 0.0f); };
+        if (options_.buildThreads == 1 || zeroed.size() < 2) {
+            for (std::size_t k = 0; k < zeroed.size(); ++k)
                 zero(k);
         } else {
-            parallelFor(items, zero); // beside the collapse's tasks, in the build's arena
+            parallelFor(zeroed.size(), zero); // beside the collapse's tasks, in the build's arena
         }
     };
     // The leaves' float data once the collapse has sorted each leaf into its runs (beside

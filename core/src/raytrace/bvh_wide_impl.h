@@ -243,35 +243,35 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // rays): the edge functions F1 = R·e2, F2 = R·(−e1), F0 = n·d − F1 − F2 with
     // R = (v0 − o) × d, a lane rejected only when one is below −B and another above B, B
     // their written-down error bound (bvh_wide_kinds.h) from the ray's parts x, y, z and the
-    // triangle's bound parts. tri(k) gives the triangle values of field k (Bvh::tri_) in the
-    // lanes (loads of four triangles, or one triangle's broadcast); o, d, x, y, z the ray values in the
+    // triangle's tp_. tri(a) gives the triangle values of the array a in the lanes (loads of
+    // four triangles, or one triangle's broadcast); o, d, x, y, z the ray values in the
     // lanes. The same operations in the same order for every S: a lane's verdict is its
     // ray's and triangle's, whichever walk asks. Returns the rejected lanes' mask.
     template <class S, class Tri>
     __attribute__((always_inline)) static int
-    triangleRejects(Tri&& tri, const typename S::V* o, const typename S::V* d,
+    triangleRejects(const Bvh& b, Tri&& tri, const typename S::V* o, const typename S::V* d,
                     typename S::V x, typename S::V y, typename S::V z) {
         using SV = typename S::V;
-        const SV ax = S::sub(tri(0), o[0]);
-        const SV ay = S::sub(tri(1), o[1]);
-        const SV az = S::sub(tri(2), o[2]);
+        const SV ax = S::sub(tri(b.tv_[0].data()), o[0]);
+        const SV ay = S::sub(tri(b.tv_[1].data()), o[1]);
+        const SV az = S::sub(tri(b.tv_[2].data()), o[2]);
         const SV rx = S::sub(S::mul(ay, d[2]), S::mul(az, d[1]));
         const SV ry = S::sub(S::mul(az, d[0]), S::mul(ax, d[2]));
         const SV rz = S::sub(S::mul(ax, d[1]), S::mul(ay, d[0]));
         auto dot = [&](int e) __attribute__((always_inline)) {
             return S::add(
-                S::add(S::mul(rx, tri(3 + e)), S::mul(ry, tri(4 + e))),
-                S::mul(rz, tri(5 + e)));
+                S::add(S::mul(rx, tri(b.te_[e].data())), S::mul(ry, tri(b.te_[e + 1].data()))),
+                S::mul(rz, tri(b.te_[e + 2].data())));
         };
-        // Fields 3–5 hold −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for bit, and
+        // te_[0..2] holds −e1 (negated exactly): F2 = R·(−e1) = −(R·e1) bit for bit, and
         // F0 = (n·d − F1) − F2 = (n·d − F1) + R·e1.
         const SV f1 = dot(3), f2 = dot(0);
         const SV nd =
-            S::add(S::add(S::mul(tri(9), d[0]), S::mul(tri(10), d[1])),
-                   S::mul(tri(11), d[2]));
+            S::add(S::add(S::mul(tri(b.te_[6].data()), d[0]), S::mul(tri(b.te_[7].data()), d[1])),
+                   S::mul(tri(b.te_[8].data()), d[2]));
         const SV f0 = S::sub(S::sub(nd, f1), f2);
         const SV bound =
-            S::add(S::add(S::mul(x, tri(12)), S::mul(y, tri(13))), z);
+            S::add(S::add(S::mul(x, tri(b.tp_[0].data())), S::mul(y, tri(b.tp_[1].data()))), z);
         // Some F below −B and another above B. min/max drop a NaN operand, but no F is NaN
         // or infinite where B is finite (bvh_wide_kinds.h: the ranges), and a NaN or
         // infinite B rejects nothing (its compares are false).
@@ -327,11 +327,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     // The filter on the edges precomputed at the build (triangleRejects), four
                     // triangles against this ray. Issue 21: the watertight shear filter took
                     // ~122 instructions a run and a per-ray shear.
-                    const float* t = b.triSlot(i);
-                    auto tri = [&](int k) __attribute__((always_inline)) {
-                        return _mm_loadu_ps(t + k * kTriStride);
+                    auto tri = [&](const float* a) __attribute__((always_inline)) {
+                        return _mm_loadu_ps(a + i);
                     };
-                    mask = 0xF & ~triangleRejects<Quad>(tri, r.mo, r.md, r.mx, r.my, r.mz);
+                    mask = 0xF & ~triangleRejects<Quad>(b, tri, r.mo, r.md, r.mx, r.my, r.mz);
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
@@ -880,10 +879,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                                                      std::uint32_t i) {
         const V o[3] = {L::load(p.tmo[0]), L::load(p.tmo[1]), L::load(p.tmo[2])};
         const V d[3] = {L::load(p.tmd[0]), L::load(p.tmd[1]), L::load(p.tmd[2])};
-        const float* t = b.triSlot(i);
-        auto tri = [&](int k) __attribute__((always_inline)) { return L::set1(t[k * kTriStride]); };
+        auto tri = [&](const float* a) __attribute__((always_inline)) {
+            return L::set1(a[i]);
+        };
         const int reject =
-            triangleRejects<L>(tri, o, d, L::load(p.tmx), L::load(p.tmy), L::load(p.tmz));
+            triangleRejects<L>(b, tri, o, d, L::load(p.tmx), L::load(p.tmy), L::load(p.tmz));
         return ~unsigned(reject) & ((1u << W) - 1);
     }
 

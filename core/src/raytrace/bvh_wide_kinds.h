@@ -62,8 +62,8 @@ constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
 //   F exactly 0). Overflow: no product exceeds 12·D·(V + |o|₁)², so the filter is used only
 //   for V <= 2^30 (per triangle: else its parts are +inf, B is inf or NaN and never
 //   rejects), |o|₁ <= 2^30 and D <= 2^60 (per ray: else X = Y = +inf): 12·2^62·2^60 < 2^128.
-//   Per triangle (fields 12, 13 of Bvh::tri_) P1 = 2^-18·E + 2·2^-46·V and P2 =
-//   2^-18·E·V + 2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
+//   Per triangle tp_[0] = P1 = 2^-18·E + 2·2^-46·V and tp_[1] = P2 = 2^-18·E·V +
+//   2^-19·|n|₁ + 2^-46·V², per ray X = D·|o|₁, Y = D, Z = 2^-46·D·|o|₁² + 2^-120 (each
 //   rounded up): B = X·P1 + Y·P2 + Z. Where B is finite every F is finite (the ranges);
 //   a NaN or infinite B rejects nothing (its compares are false).
 //   (The test "the precomputed-edge filter's bound" fails with kMtEdgeMargin cut to 2^-30.)

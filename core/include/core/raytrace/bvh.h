@@ -273,26 +273,8 @@ class Bvh : public Aggregate {
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
     // Triangles at their order_ index (issue 21: the filter on precomputed edges): float
-    // v0 (fields 0–2), v0 − v1, v2 − v0 and the normal (axis-major, 3–11), the filter
-    // bound's two parts (12, 13), in pages of kTriSlots slots, each field's kTriStride
-    // floats one after another. Issue 21, tenth session: with a fixed stride, slot i's
-    // field k is at triSlot(i) + k·kTriStride, an offset the load instruction carries; the
-    // 14 arrays of one per field made every leaf visit load their 14 data pointers first.
-    // A field's last kTriStride − kTriSlots floats repeat the next page's first slots, so
-    // four lanes from any slot are one load.
-    static constexpr std::uint32_t kTriShift = 8, kTriSlots = 1u << kTriShift,
-                                   kTriStride = kTriSlots + 4, kTriFields = 14;
-    struct TriPage {
-        float f[kTriFields * kTriStride];
-        TriPage() {} // left unset: zeroed in parallel beside the collapse (collapseWide)
-    };
-    static std::size_t triOffset(std::uint32_t i) { // of slot i's field 0, in floats
-        return i + std::size_t(i >> kTriShift) * (kTriFields * kTriStride - kTriSlots);
-    }
-    const float* triSlot(std::uint32_t i) const {
-        return reinterpret_cast<const float*>(tri_.data()) + triOffset(i);
-    }
-    bvh_detail::KeptVector<TriPage> tri_;
+    // v0, v0 − v1, v2 − v0 and the normal (axis-major), the filter bound's two parts.
+    Floats tv_[3], te_[9], tp_[2];
     Floats ob_[6]; // the other kinds at their order_ index: float box lo xyz, hi xyz
     BvhStats stats_;
 };
