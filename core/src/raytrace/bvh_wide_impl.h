@@ -660,6 +660,50 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         const int nearC = t[c1] < t[c0] ? c1 : c0, farC = nearC == c0 ? c1 : c0;
                         stack[sp++] = {nd.child[farC], nd.count[farC], t[farC]};
                         next = nearC;
+                    } else if (const int rest2 = rest & (rest - 1), rest3 = rest2 & (rest2 - 1);
+                               (rest3 & (rest3 - 1)) == 0) {
+                        // Three or four hits (most nodes of 3+): keys t's bits above the slot,
+                        // sorted farthest first by compare-exchanges in registers (cmov), not
+                        // the insertion loop's branches on t, which mispredict. A t below 0
+                        // (its bits compare above every positive t) only changes the order of
+                        // visits, never which child is pushed or its t, nor the nearest hit
+                        // (offerNearest breaks ties by index, not by order).
+                        auto key = [&](int c) __attribute__((always_inline)) {
+                            std::uint32_t bits;
+                            std::memcpy(&bits, &t[c], sizeof bits);
+                            return (std::uint64_t(bits) << 32) | std::uint32_t(c);
+                        };
+                        auto swapUp = [](std::uint64_t& x, std::uint64_t& y)
+                                          __attribute__((always_inline)) {
+                                              const std::uint64_t hi = std::max(x, y);
+                                              y = std::min(x, y);
+                                              x = hi;
+                                          };
+                        std::uint64_t k0 = key(c0), k1 = key(__builtin_ctz(unsigned(rest))),
+                                      k2 = key(__builtin_ctz(unsigned(rest2)));
+                        auto push = [&](std::uint64_t k) __attribute__((always_inline)) {
+                            const int c = int(k & 0xFFFFFFFFu);
+                            stack[sp++] = {nd.child[c], nd.count[c], t[c]};
+                        };
+                        if (rest3 == 0) {
+                            swapUp(k0, k1);
+                            swapUp(k1, k2);
+                            swapUp(k0, k1);
+                            push(k0);
+                            push(k1);
+                            next = int(k2 & 0xFFFFFFFFu);
+                        } else {
+                            std::uint64_t k3 = key(__builtin_ctz(unsigned(rest3)));
+                            swapUp(k0, k1);
+                            swapUp(k2, k3);
+                            swapUp(k0, k2);
+                            swapUp(k1, k3);
+                            swapUp(k1, k2);
+                            push(k0);
+                            push(k1);
+                            push(k2);
+                            next = int(k3 & 0xFFFFFFFFu);
+                        }
                     } else {
                         int order[W], n = 0;
                         while (mask) {
