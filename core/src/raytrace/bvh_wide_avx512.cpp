@@ -38,7 +38,7 @@ namespace wb::rt::avx512 {
 // Eight lanes, the compare straight into a mask register (no movemask).
 struct L8 {
     static constexpr int W = 8;
-    // The nearest-hit walk's node test takes the ray's values as {1to8} memory operands.
+    // The float-only walks' node test takes the ray's values as {1to8} memory operands.
     static constexpr bool kFold = true;
     using V = __m256;
     static V set1(float x) { return _mm256_set1_ps(x); }

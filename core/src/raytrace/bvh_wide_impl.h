@@ -106,9 +106,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // The ray itself (its origin and direction in double, read by the set-ups below; a
         // pointer, not a copy: six moves a ray less, issue 21's seventh session).
         const Ray* ray;
-        // The start values (intersect's, in its frame) when the node test takes them as
-        // broadcast memory operands (L::kFold, the nearest-hit float walk): on, of, inv, invFar
-        // and tMin above are then not filled, and the leaves read these.
+        // The start values (intersect's or occluded's, in its frame) when the node test takes
+        // them as broadcast memory operands (L::kFold, the float-only walks): on, of, inv,
+        // invFar and tMin above are then not filled, and the leaves read these.
         const FloatStart* start = nullptr;
         glm::dvec3 invd; // double walk only
         bool neg(int a) const { return (signs >> a) & 1; }
@@ -587,11 +587,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         };
         float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         RayData r;
-        // L::kFold (AVX-512): the nearest-hit float walk's node test takes the ray's values
-        // as broadcast memory operands ({1to8}) from intersect's FloatStart, so the 13
-        // broadcasts and their stores of fillRay go (issue 21, tenth session). With AVX2 a
-        // broadcast is an instruction of its own at every node: there fillRay's lanes stay.
-        constexpr bool kFold = kFloatOnly && !kAnyHit && FoldOf<L>::value;
+        // L::kFold (AVX-512): the float-only walks' node test takes the ray's values as
+        // broadcast memory operands ({1to8}) from the caller's FloatStart (intersect's or
+        // occluded's), so the 13 broadcasts and their stores of fillRay go (issue 21, tenth
+        // session). With AVX2 a broadcast is an instruction of its own at every node: there
+        // fillRay's lanes stay.
+        constexpr bool kFold = kFloatOnly && FoldOf<L>::value;
         if constexpr (kFold) {
             setRayData(r, pre->signs, true, ray);
             r.start = pre;
@@ -616,7 +617,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
             // memory operands in the node test (issue 21, eighth session: callgrind, eye rays,
             // balls 4 1098.8 -> 1078.2, mesh 477.0 -> 467.0, jacks 4 1378.8 -> 1339.8
             // instructions a ray). The any-hit walk's node test reads them from memory already.
-            // (kFold: the same for the start values; intersect's FloatStart is not const.)
+            // (kFold: the same for the start values, in both walks; the callers' FloatStart is
+            // not const.)
             if constexpr (kFold)
                 asm("" : "+m"(*const_cast<FloatStart*>(pre)));
             else if constexpr (kFloatOnly && !kAnyHit)
@@ -723,12 +725,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
                             std::memcpy(&bits, &t[c], sizeof bits);
                             return (std::uint64_t(bits) << 32) | std::uint32_t(c);
                         };
-                        auto swapUp = [](std::uint64_t& x, std::uint64_t& y)
-                                          __attribute__((always_inline)) {
-                                              const std::uint64_t hi = std::max(x, y);
-                                              y = std::min(x, y);
-                                              x = hi;
-                                          };
+                        auto swapUp = [](std::uint64_t & x, std::uint64_t & y)
+                            __attribute__((always_inline)) {
+                            const std::uint64_t hi = std::max(x, y);
+                            y = std::min(x, y);
+                            x = hi;
+                        };
                         std::uint64_t k0 = key(c0), k1 = key(__builtin_ctz(unsigned(rest))),
                                       k2 = key(__builtin_ctz(unsigned(rest2)));
                         auto push = [&](std::uint64_t k) __attribute__((always_inline)) {
