@@ -38,6 +38,8 @@ namespace wb::rt::avx512 {
 // Eight lanes, the compare straight into a mask register (no movemask).
 struct L8 {
     static constexpr int W = 8;
+    // The float-only walks' node test takes the ray's values as {1to8} memory operands.
+    static constexpr bool kFold = true;
     using V = __m256;
     static V set1(float x) { return _mm256_set1_ps(x); }
     static V load(const float* p) { return _mm256_load_ps(p); }

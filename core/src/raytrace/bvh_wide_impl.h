@@ -79,6 +79,11 @@ template <int Tag> struct Lanes4 : Sse4<std::integral_constant<int, Tag>> {
     static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
 };
 
+// L::kFold: the node test takes the ray's values as broadcast memory operands (AVX-512).
+template <class T, class = void> struct FoldOf : std::false_type {};
+template <class T>
+struct FoldOf<T, std::void_t<decltype(T::kFold)>> : std::bool_constant<T::kFold> {};
+
 template <class L, bool Q> struct Bvh::WideWalk {
     static constexpr int W = L::W;
     using V = typename L::V;
@@ -88,6 +93,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // At most W − 1 pushes per wide node, at most one wide node per binary level.
     static constexpr int kStack = (W - 1) * bvh_detail::kMaxDepth;
 
+    struct FloatStart;
     // Per-ray data.
     struct RayData {
         const std::size_t* off; // byte offsets in a Node: near planes x, y, z, far planes x, y, z
@@ -100,6 +106,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // The ray itself (its origin and direction in double, read by the set-ups below; a
         // pointer, not a copy: six moves a ray less, issue 21's seventh session).
         const Ray* ray;
+        // The start values (intersect's or occluded's, in its frame) when the node test takes
+        // them as broadcast memory operands (L::kFold, the float-only walks): on, of, inv,
+        // invFar and tMin above are then not filled, and the leaves read these.
+        const FloatStart* start = nullptr;
         glm::dvec3 invd; // double walk only
         bool neg(int a) const { return (signs >> a) & 1; }
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
@@ -283,7 +293,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
     // kFloatOnly: r.useFloat is known to be true (the float-only walks), so not tested.
-    template <bool kFloatOnly = false, class Visit>
+    // kStart: the ray's float values are r.start's (the walk's kFold), not r's lanes.
+    template <bool kFloatOnly = false, bool kStart = false, class Visit>
     // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
     // no change with SSE2 (driver, alternated medians).
     __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
@@ -334,14 +345,30 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 } else {
                     // The other kinds: their own float box (rounded outward) with the node
                     // test's margins, up to the limit.
-                    __m128 t0 = L::low(r.tMin), t1 = _mm_set1_ps(limit);
+                    // The same values either way: r's lanes are broadcasts of r.start's.
+                    __m128 t0, t1 = _mm_set1_ps(limit), on[3], of[3], inv[3], invFar[3];
+                    if constexpr (kStart) {
+                        t0 = _mm_set1_ps(r.start->tMin);
+                        for (int a = 0; a < 3; ++a) {
+                            on[a] = _mm_set1_ps(r.start->on[a]);
+                            of[a] = _mm_set1_ps(r.start->of[a]);
+                            inv[a] = _mm_set1_ps(r.start->inv[a]);
+                            invFar[a] = _mm_set1_ps(r.start->invFar[a]);
+                        }
+                    } else {
+                        t0 = L::low(r.tMin);
+                        for (int a = 0; a < 3; ++a) {
+                            on[a] = L::low(r.on[a]);
+                            of[a] = L::low(r.of[a]);
+                            inv[a] = L::low(r.inv[a]);
+                            invFar[a] = L::low(r.invFar[a]);
+                        }
+                    }
                     for (int a = 0; a < 3; ++a) {
                         const __m128 nearP = _mm_loadu_ps(&b.ob_[r.neg(a) ? 3 + a : a][i]);
                         const __m128 farP = _mm_loadu_ps(&b.ob_[r.neg(a) ? a : 3 + a][i]);
-                        t0 = _mm_max_ps(
-                            _mm_mul_ps(_mm_sub_ps(nearP, L::low(r.on[a])), L::low(r.inv[a])), t0);
-                        t1 = _mm_min_ps(
-                            _mm_mul_ps(_mm_sub_ps(farP, L::low(r.of[a])), L::low(r.invFar[a])), t1);
+                        t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(nearP, on[a]), inv[a]), t0);
+                        t1 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(farP, of[a]), invFar[a]), t1);
                     }
                     mask = _mm_movemask_ps(_mm_cmple_ps(t0, t1));
                 }
@@ -560,7 +587,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
         };
         float flim = limitF(); // limitF() of the current tMax (renewed after each leaf)
         RayData r;
-        if (kFloatOnly || pre)
+        // L::kFold (AVX-512): the float-only walks' node test takes the ray's values as
+        // broadcast memory operands ({1to8}) from the caller's FloatStart (intersect's or
+        // occluded's), so the 13 broadcasts and their stores of fillRay go (issue 21, tenth
+        // session). With AVX2 a broadcast is an instruction of its own at every node: there
+        // fillRay's lanes stay.
+        constexpr bool kFold = kFloatOnly && FoldOf<L>::value;
+        if constexpr (kFold) {
+            setRayData(r, pre->signs, true, ray);
+            r.start = pre;
+        } else if (kFloatOnly || pre)
             fillRay(r, *pre, ray);
         else if (!initRay<!kAnyHit>(r, b, ray, tMin, flim))
             return;
@@ -581,7 +617,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
             // memory operands in the node test (issue 21, eighth session: callgrind, eye rays,
             // balls 4 1098.8 -> 1078.2, mesh 477.0 -> 467.0, jacks 4 1378.8 -> 1339.8
             // instructions a ray). The any-hit walk's node test reads them from memory already.
-            if constexpr (kFloatOnly && !kAnyHit)
+            // (kFold: the same for the start values, in both walks; the callers' FloatStart is
+            // not const.)
+            if constexpr (kFold)
+                asm("" : "+m"(*const_cast<FloatStart*>(pre)));
+            else if constexpr (kFloatOnly && !kAnyHit)
                 asm("" : "+m"(r.on), "+m"(r.of), "+m"(r.inv), "+m"(r.invFar), "+m"(r.tMin));
             const Node& nd = nodes[cur];
             // The links (the fourth cache line of an 8-wide node) are read only after the
@@ -591,14 +631,25 @@ template <class L, bool Q> struct Bvh::WideWalk {
             alignas(32) float t[W];
             int mask;
             if (kFloatOnly || r.useFloat) {
-                V t0 = r.tMin, t1 = L::set1(flim);
+                V t0, t1 = L::set1(flim);
+                if constexpr (kFold)
+                    t0 = L::set1(pre->tMin);
+                else
+                    t0 = r.tMin;
                 for (int a = 0; a < 3; ++a) {
                     const V nearP = planes(nd, r.off[a], a);
                     const V farP = planes(nd, r.off[3 + a], a);
                     // max/min return the second operand for NaN (0·inf: a ray in the slab's
                     // plane): that slab is no limit.
-                    t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
-                    t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
+                    if constexpr (kFold) {
+                        t0 = L::max(
+                            L::mul(L::sub(nearP, L::set1(pre->on[a])), L::set1(pre->inv[a])), t0);
+                        t1 = L::min(
+                            L::mul(L::sub(farP, L::set1(pre->of[a])), L::set1(pre->invFar[a])), t1);
+                    } else {
+                        t0 = L::max(L::mul(L::sub(nearP, r.on[a]), r.inv[a]), t0);
+                        t1 = L::min(L::mul(L::sub(farP, r.of[a]), r.invFar[a]), t1);
+                    }
                 }
                 mask = L::le(t0, t1);
                 if constexpr (Q) mask &= validMask(nd);
@@ -633,7 +684,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const int c = __builtin_ctz(unsigned(mask));
                     mask &= mask - 1;
                     if (nd.count[c] > 0) {
-                        if (!visitLeaf<kLeafFloat>(b, r, nd.child[c], nd.count[c], flim, leaf))
+                        if (!visitLeaf<kLeafFloat, kFold>(b, r, nd.child[c], nd.count[c], flim,
+                                                          leaf))
                             return;
                     } else {
                         if (haveNext) stack[sp++] = {cur, 0, 0.0f};
@@ -660,6 +712,50 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         const int nearC = t[c1] < t[c0] ? c1 : c0, farC = nearC == c0 ? c1 : c0;
                         stack[sp++] = {nd.child[farC], nd.count[farC], t[farC]};
                         next = nearC;
+                    } else if (const int rest2 = rest & (rest - 1), rest3 = rest2 & (rest2 - 1);
+                               (rest3 & (rest3 - 1)) == 0) {
+                        // Three or four hits (most nodes of 3+): keys t's bits above the slot,
+                        // sorted farthest first by compare-exchanges in registers (cmov), not
+                        // the insertion loop's branches on t, which mispredict. A t below 0
+                        // (its bits compare above every positive t) only changes the order of
+                        // visits, never which child is pushed or its t, nor the nearest hit
+                        // (offerNearest breaks ties by index, not by order).
+                        auto key = [&](int c) __attribute__((always_inline)) {
+                            std::uint32_t bits;
+                            std::memcpy(&bits, &t[c], sizeof bits);
+                            return (std::uint64_t(bits) << 32) | std::uint32_t(c);
+                        };
+                        auto swapUp = [](std::uint64_t & x, std::uint64_t & y)
+                            __attribute__((always_inline)) {
+                            const std::uint64_t hi = std::max(x, y);
+                            y = std::min(x, y);
+                            x = hi;
+                        };
+                        std::uint64_t k0 = key(c0), k1 = key(__builtin_ctz(unsigned(rest))),
+                                      k2 = key(__builtin_ctz(unsigned(rest2)));
+                        auto push = [&](std::uint64_t k) __attribute__((always_inline)) {
+                            const int c = int(k & 0xFFFFFFFFu);
+                            stack[sp++] = {nd.child[c], nd.count[c], t[c]};
+                        };
+                        if (rest3 == 0) {
+                            swapUp(k0, k1);
+                            swapUp(k1, k2);
+                            swapUp(k0, k1);
+                            push(k0);
+                            push(k1);
+                            next = int(k2 & 0xFFFFFFFFu);
+                        } else {
+                            std::uint64_t k3 = key(__builtin_ctz(unsigned(rest3)));
+                            swapUp(k0, k1);
+                            swapUp(k2, k3);
+                            swapUp(k0, k2);
+                            swapUp(k1, k3);
+                            swapUp(k1, k2);
+                            push(k0);
+                            push(k1);
+                            push(k2);
+                            next = int(k3 & 0xFFFFFFFFu);
+                        }
                     } else {
                         int order[W], n = 0;
                         while (mask) {
@@ -682,7 +778,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf<kLeafFloat>(b, r, nd.child[next], nd.count[next], flim, leaf))
+                    if (!visitLeaf<kLeafFloat, kFold>(b, r, nd.child[next], nd.count[next], flim,
+                                                      leaf))
                         return;
                     flim = limitF();
                 }
@@ -694,7 +791,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (e.t > flim) continue;
                     const std::uint32_t child = e.child, count = e.count;
                     if (count > 0) {
-                        if (!visitLeaf<kLeafFloat>(b, r, child, count, flim, leaf)) return;
+                        if (!visitLeaf<kLeafFloat, kFold>(b, r, child, count, flim, leaf)) return;
                         flim = limitF();
                         continue;
                     }
