@@ -857,7 +857,8 @@ void* bigAlloc(std::size_t bytes) {
         if (base) {
             length = kept;
         } else {
-            base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            base =
+                mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             if (base == MAP_FAILED) throw std::bad_alloc();
         }
         char* p = static_cast<char*>(base) + kPage;
