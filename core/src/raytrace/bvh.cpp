@@ -751,6 +751,14 @@ struct Builder {
 // 40 instead of 21 ms); an own mapping measured 20-23 ms every time. Small arrays
 // and other systems: malloc.
 constexpr std::size_t kHuge = std::size_t(2) << 20;
+// Issue 21 (tenth session): arrays from 128 KiB (malloc's first mmap threshold) up to 2 MiB
+// are kept mappings too, of 4 KiB pages. Through malloc, the build-rate table's rows (three
+// trees alive a round, all freed at its end) faulted in their first three rounds of five
+// (balls 5: 1,816 / 749 / 455 faults a two-thread build, jacks 5 889 / 250 / 412): glibc maps
+// such chunks afresh and gives heap tops back until its thresholds have grown with the frees,
+// and the faults fell in the two-thread build's steps (the leaf arrays' zeroing, the leaves).
+constexpr std::size_t kSmallKept = std::size_t(128) << 10;
+constexpr std::size_t kPage = 4096;
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
 // Issue 21: mappings a build has freed, kept for the next build. Fresh memory costs its
 // page faults and the kernel's zeroing at first touch: 7% of a one-thread balls 5 build
@@ -768,8 +776,10 @@ constexpr std::size_t kHuge = std::size_t(2) << 20;
 // KeptAlloc), 14 of them for triangles; raytrace_scale_bench's build table frees two
 // trees' arrays and a build's four scratch arrays at once (32 mappings of a million
 // triangles, about 450 MiB with each mapping's rounding to 2 MiB and its 2 MiB of room).
+// Tenth session: 128 mappings: those from kSmallKept on are kept too (jacks 5: ~13 a tree, and
+// the build table keeps three trees alive at once).
 struct KeptMappings {
-    static constexpr int kKept = 48;
+    static constexpr int kKept = 128;
     static constexpr std::size_t kKeptBytes = std::size_t(512) << 20;
     std::mutex lock;
     void* base[kKept] = {};
@@ -840,6 +850,22 @@ void* bigAlloc(std::size_t bytes) {
         std::memcpy(p - 8, &length, sizeof length);
         return p;
     }
+    if (bytes >= kSmallKept) {
+        // 4 KiB pages; the base and length in the first page, the array from the second.
+        std::size_t length = (bytes + kPage - 1) / kPage * kPage + kPage, kept = 0;
+        void* base = keptMappings().take(length, kept);
+        if (base) {
+            length = kept;
+        } else {
+            base =
+                mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (base == MAP_FAILED) throw std::bad_alloc();
+        }
+        char* p = static_cast<char*>(base) + kPage;
+        std::memcpy(p - 16, &base, sizeof base);
+        std::memcpy(p - 8, &length, sizeof length);
+        return p;
+    }
 #endif
     // 64-byte aligned: the wide nodes (alignas(64), the walk's aligned loads) are kept
     // memory too, and malloc aligns to 16 only.
@@ -849,7 +875,7 @@ void* bigAlloc(std::size_t bytes) {
 }
 void bigFree(void* p, std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (bytes >= kHuge) {
+    if (bytes >= kSmallKept) {
         void* base;
         std::size_t length;
         std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
@@ -1084,16 +1110,26 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Primitive>>& prims, BvhOptions option
             std::vector<std::size_t> valid(blocks + 1, 0);
             std::vector<Box4> boxes(blocks), cboxes(blocks);
             std::vector<std::uint8_t> ok(count);
+            // Each block's boxes in locals, stored once: through boxes[k] the compiler stored
+            // them after every reference (makeRef's virtual call may read any memory), and
+            // the 32-byte boxes of neighbouring blocks share cache lines. Issue 21: blocks 9
+            // and 10 of jacks 5, the last two and run at once by the two threads, took
+            // 200-300 us each against 80 for the others (the line moving between the cores
+            // at every reference); the reference pass took 0.69 ms at two threads for 0.86
+            // at one.
             parallelFor(blocks, [&](std::size_t k) {
                 std::size_t v = 0;
+                Box4 box, cbox;
                 for (std::size_t i = k * kBlock, e = std::min(count, i + kBlock); i < e; ++i) {
                     ok[i] = makeRef(*prims[i], std::uint32_t(i), bufA.data[i]);
                     if (wide) kinds[i] = primitiveKind(prims[i].get());
                     if (ok[i]) {
-                        account(bufA.data[i], boxes[k], cboxes[k]);
+                        account(bufA.data[i], box, cbox);
                         ++v;
                     }
                 }
+                boxes[k] = box;
+                cboxes[k] = cbox;
                 valid[k + 1] = v;
             });
             for (std::size_t k = 0; k < blocks; ++k) {

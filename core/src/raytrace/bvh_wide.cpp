@@ -391,9 +391,11 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     // order_ is leaf order, so the objects are scattered in memory. Issue 21: blocks of
     // 4096 (were 16,384): balls 5's leaf data was 5 blocks beside the append, split 3/2
     // (with the append) between two threads; that step took 0.47 ms at two threads for 0.78
-    // at one, 0.42 with these blocks (medians of 35 quiet pairs).
+    // at one, 0.42 with these blocks (medians of 35 quiet pairs). Tenth session: 2048 (the
+    // last block a thread takes is the step's tail): jacks 5's step 0.533 -> 0.523 ms at two
+    // threads (three alternated pairs of 40 quiet builds each, lower in all three).
     auto perPrimitive = [&](auto&& f) {
-        constexpr std::size_t kBlockPrims = 4096;
+        constexpr std::size_t kBlockPrims = 2048;
         const std::size_t blocks = (n + kBlockPrims - 1) / kBlockPrims;
         auto block = [&](std::size_t b) {
             const std::size_t lo = b * kBlockPrims, hi = std::min(n, lo + kBlockPrims);

@@ -24,6 +24,9 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace wb::rt {
@@ -41,6 +44,19 @@ template <class T> struct KeptAlloc {
     template <class U> KeptAlloc(const KeptAlloc<U>&) noexcept {}
     T* allocate(std::size_t n) { return static_cast<T*>(bigAlloc(n * sizeof(T))); }
     void deallocate(T* p, std::size_t n) noexcept { bigFree(p, n * sizeof(T)); }
+    // resize(n) leaves new elements default-initialised (not zeroed): the build writes every
+    // element of order_ and orderIndex_ (one leaf each), and the arrays filled with a value
+    // use assign. Issue 21 (tenth session): zeroing them was the serial start of the binary
+    // tree (balls 5: ~50 us, and in a process's first builds ~500-1,800 page faults taken by
+    // the main thread alone while the worker waited); now the leaves' first writes fault,
+    // spread over the build's threads.
+    template <class U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... A> void construct(U* p, A&&... a) {
+        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
     template <class U> bool operator==(const KeptAlloc<U>&) const noexcept { return true; }
     template <class U> bool operator!=(const KeptAlloc<U>&) const noexcept { return false; }
 };
