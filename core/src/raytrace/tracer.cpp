@@ -1,6 +1,5 @@
 #include "core/raytrace/tracer.h"
 
-#include "core/raytrace/bvh.h"
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/texture.h"
 #include "lanes_sse2.h"
@@ -341,12 +340,13 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     // direct colours, then each lane's children.
     const std::size_t nLights = scene_.lights.size();
     // The eye hits' feelers of one light walk as a packet when every material is opaque
-    // (then only "blocked or not" matters) and the aggregate is a Bvh.
-    const Bvh* feelerPacket = dynamic_cast<const Bvh*>(&scene_.aggregate());
+    // (then only "blocked or not" matters) and the aggregate walks them together (a Bvh).
+    const Aggregate& aggregate = scene_.aggregate();
+    bool feelerPacket = aggregate.hasOccludedPacket();
     if (feelerPacket)
         for (const Material& mat : scene_.materials)
             if (!(mat.kt < settings_.opaqueKt)) {
-                feelerPacket = nullptr;
+                feelerPacket = false;
                 break;
             }
     // The feelers for occludedPacket, made once (only origin and direction change).
@@ -456,7 +456,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
             skip[j] = self[j];
         }
-        const unsigned blocked = feelerPacket->occludedPacket(feelers, t0, dist, skip, ask);
+        const unsigned blocked = aggregate.occludedPacket(feelers, t0, dist, skip, ask);
         for (unsigned m = blocked; m; m &= m - 1)
             tr[__builtin_ctz(m)] = 0.0;
     }

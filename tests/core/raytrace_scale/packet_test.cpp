@@ -145,6 +145,10 @@ void comparePacket(const Trees& t, const Ray* rays, const double* tMin, const do
     }
     n.hits += __builtin_popcount(wantFound);
     n.blocked += __builtin_popcount(wantBlocked);
+    // Aggregate's default occludedPacket (ray by ray through forEachBlocker), which the
+    // tracer's feeler packets would get from an aggregate without a packet walk.
+    REQUIRE_FALSE(t.brute.hasOccludedPacket());
+    REQUIRE(t.brute.occludedPacket(rays, tMin, tMax, nullptr, lanes) == wantBlocked);
     for (const auto& b : t.bvhs) {
         INFO("width " << b->stats().width << (b->stats().avx2 ? " AVX2" : "") << " packet "
                       << b->packetWidth() << " lanes " << lanes);

@@ -150,7 +150,8 @@ class Bvh : public Aggregate {
                              unsigned lanes) const override;
     // Bit j: occluded(rays[j], tMin[j], tMax[j], skip ? skip[j] : nullptr).
     unsigned occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
-                            const Primitive* const* skip, unsigned lanes) const;
+                            const Primitive* const* skip, unsigned lanes) const override;
+    bool hasOccludedPacket() const override { return true; }
     // Rays per shared walk: 8 or 4 (wide trees with packets), 1 (binary tree, or packets off).
     int packetWidth() const;
 

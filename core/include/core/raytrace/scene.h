@@ -53,6 +53,31 @@ class Aggregate {
                 found |= unsigned(intersect(rays[j], tMin[j], tMax[j], hits[j])) << j;
         return found;
     }
+    // Issue 21: whether occludedPacket below walks the rays together (Bvh); false: the
+    // default asks forEachBlocker ray by ray, and a caller may as well do that itself. (A
+    // virtual, not a dynamic_cast to Bvh in the tracer: a student's object that compiles
+    // tracer.cpp in, under -fsanitize=vptr, would need Bvh's typeinfo from core.)
+    virtual bool hasOccludedPacket() const { return false; }
+    // Bit j, for each bit j of `lanes`: some primitive meets rays[j] in (tMin[j], tMax[j]]
+    // (skip[j], when `skip` is given, not asked; the same flat-primitive rule as
+    // forEachBlocker's).
+    virtual unsigned occludedPacket(const Ray* rays, const double* tMin, const double* tMax,
+                                    const Primitive* const* skip, unsigned lanes) const {
+        unsigned blocked = 0;
+        for (int j = 0; j < kMaxPacket; ++j)
+            if ((lanes >> j) & 1) {
+                bool any = false;
+                forEachBlocker(
+                    rays[j], tMin[j], tMax[j],
+                    [&](const Primitive&) {
+                        any = true;
+                        return false;
+                    },
+                    skip ? skip[j] : nullptr);
+                blocked |= unsigned(any) << j;
+            }
+        return blocked;
+    }
 };
 
 class BruteForce : public Aggregate {
