@@ -11,8 +11,9 @@
 
 namespace wb::rt::sse2lanes {
 
+constexpr int kWidth = 2; // lanes in a D
 // The packet path's lanes go in pairs: lanes i and i + 1 for even i < kMaxPacket.
-static_assert(kMaxPacket % 2 == 0, "packets are shaded two lanes at a time");
+static_assert(kMaxPacket % kWidth == 0, "packets are shaded two lanes at a time");
 
 struct D2 {
     __m128d v;
@@ -32,7 +33,7 @@ inline D2 operator/(D2 a, D2 b) {
 inline D2 operator-(D2 a) { // −x flips the sign bit, as the scalar negation does
     return {_mm_xor_pd(a.v, _mm_set1_pd(-0.0))};
 }
-inline D2 sqrt2(D2 a) {
+inline D2 sqrtOf(D2 a) {
     return {_mm_sqrt_pd(a.v)};
 }
 inline D2 splat(double x) {
@@ -82,4 +83,42 @@ inline V2 pair(const glm::dvec3& a, const glm::dvec3& b) {
 inline D2 pair(double a, double b) {
     return {_mm_set_pd(a, b)};
 }
+// phong_lanes_impl.h's names (lanes_avx.h has the same): comparisons all ones or all zeros
+// lane by lane, greater and equal ordered (false with a NaN), notEqualOrNaN unordered (true
+// with a NaN, as C's !=); lane k is element k (the low element is lane 0 here, unlike
+// pair's order).
+using Mask = __m128d;
+inline Mask greater(D2 a, D2 b) {
+    return _mm_cmpgt_pd(a.v, b.v);
+}
+inline Mask equal(D2 a, D2 b) {
+    return _mm_cmpeq_pd(a.v, b.v);
+}
+inline Mask notEqualOrNaN(D2 a, D2 b) {
+    return _mm_cmpneq_pd(a.v, b.v);
+}
+inline Mask isNaN(D2 a) {
+    return _mm_cmpunord_pd(a.v, a.v);
+}
+inline Mask maskAnd(Mask a, Mask b) {
+    return _mm_and_pd(a, b);
+}
+inline Mask maskOr(Mask a, Mask b) {
+    return _mm_or_pd(a, b);
+}
+inline unsigned maskBits(Mask m) { // bit k: lane k
+    return unsigned(_mm_movemask_pd(m));
+}
+// Lane k = f(k) (a number or a dvec3).
+template <class F> inline auto gather(F f) {
+    return pair(f(1), f(0));
+}
+inline D2 loadLanes(const double* p) { // p[k] to lane k, any alignment
+    return {_mm_loadu_pd(p)};
+}
+inline void storeLanes(double* p, D2 a) { // p: 16-byte aligned
+    _mm_store_pd(p, a.v);
+}
+using D = D2;
+using V = V2;
 } // namespace wb::rt::sse2lanes

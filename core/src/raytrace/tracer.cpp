@@ -390,7 +390,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
     for (int i = 0; i < kMaxPacket; i += 2) {
         const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
         const V2 d = V2{load(ox), load(oy), load(oz)} - V2{load(px), load(py), load(pz)};
-        _mm_store_pd(&eps[i], sqrt2(dot(d, d)).v);
+        _mm_store_pd(&eps[i], sqrtOf(dot(d, d)).v);
     }
     const Primitive* self[kMaxPacket]; // feelerBase's: the hit's primitive when flat
     for (unsigned m = lanes; m; m &= m - 1) {
@@ -415,7 +415,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
             const V2 normal{load(nx), load(ny), load(nz)};
             const V2 v = splat(lp) - V2{load(px), load(py), load(pz)};
-            const D2 d = sqrt2(dot(v, v));
+            const D2 d = sqrtOf(dot(v, v));
             // The light exactly at the point: the normal (the select only when a lane is).
             const __m128d away = _mm_cmpgt_pd(d.v, _mm_setzero_pd());
             const V2 toLight = _mm_movemask_pd(away) == 3 ? v / d : select(away, v / d, normal);
