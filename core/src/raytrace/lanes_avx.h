@@ -19,6 +19,8 @@ constexpr int kWidth = 4; // lanes in a D
 struct D4 {
     __m256d v;
 };
+using D = D4;
+using Mask = __m256d; // a comparison's lanes: all ones or all zeros
 inline D4 operator+(D4 a, D4 b) {
     return {_mm256_add_pd(a.v, b.v)};
 }
@@ -42,7 +44,6 @@ inline D4 splat(double x) {
 }
 // The comparisons of lanes_sse2.h, lane by lane all ones or all zeros: greater and equal
 // ordered (false with a NaN), notEqualOrNaN unordered (true with a NaN, as C's !=).
-using Mask = __m256d;
 inline Mask greater(D4 a, D4 b) {
     return _mm256_cmp_pd(a.v, b.v, _CMP_GT_OS);
 }
@@ -72,33 +73,8 @@ inline D4 select(__m256d m, D4 a, D4 b) {
 inline D4 maxOf(D4 x, D4 lo) {
     return {_mm256_max_pd(lo.v, x.v)};
 }
-struct V4 { // a dvec3 of four hits
-    D4 x, y, z;
-};
-inline V4 operator+(const V4& a, const V4& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-inline V4 operator-(const V4& a, const V4& b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-inline V4 operator*(const V4& a, const V4& b) {
-    return {a.x * b.x, a.y * b.y, a.z * b.z};
-}
-inline V4 operator*(D4 k, const V4& a) {
-    return {k * a.x, k * a.y, k * a.z};
-}
-inline V4 operator/(const V4& a, D4 k) {
-    return {a.x / k, a.y / k, a.z / k};
-}
-inline D4 dot(const V4& a, const V4& b) { // glm: (x·x' + y·y') + z·z'
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-inline V4 select(__m256d m, const V4& a, const V4& b) {
-    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
-}
-inline V4 splat(const glm::dvec3& v) {
-    return {splat(v.x), splat(v.y), splat(v.z)};
-}
+#include "lanes_vec3_body.h"
+using V4 = V;
 // Element k of the result is lane k's value (_mm256_set_pd takes the highest element first).
 inline D4 quad(double a, double b, double c, double d) {
     return {_mm256_set_pd(d, c, b, a)};
@@ -116,8 +92,7 @@ inline D4 loadLanes(const double* p) { // p[k] to lane k, any alignment
 inline void storeLanes(double* p, D4 a) { // p: 32-byte aligned
     _mm256_store_pd(p, a.v);
 }
-using D = D4;
-using V = V4;
+
 } // namespace wb::rt::avxlanes
 
 #pragma GCC pop_options

@@ -18,6 +18,8 @@ static_assert(kMaxPacket % kWidth == 0, "packets are shaded two lanes at a time"
 struct D2 {
     __m128d v;
 };
+using D = D2;
+using Mask = __m128d; // a comparison's lanes: all ones or all zeros
 inline D2 operator+(D2 a, D2 b) {
     return {_mm_add_pd(a.v, b.v)};
 }
@@ -49,33 +51,8 @@ inline D2 select(__m128d m, D2 a, D2 b) {
 inline D2 maxOf(D2 x, D2 lo) {
     return {_mm_max_pd(lo.v, x.v)};
 }
-struct V2 { // a dvec3 of two hits
-    D2 x, y, z;
-};
-inline V2 operator+(const V2& a, const V2& b) {
-    return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-inline V2 operator-(const V2& a, const V2& b) {
-    return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-inline V2 operator*(const V2& a, const V2& b) {
-    return {a.x * b.x, a.y * b.y, a.z * b.z};
-}
-inline V2 operator*(D2 k, const V2& a) {
-    return {k * a.x, k * a.y, k * a.z};
-}
-inline V2 operator/(const V2& a, D2 k) {
-    return {a.x / k, a.y / k, a.z / k};
-}
-inline D2 dot(const V2& a, const V2& b) { // glm: (x·x' + y·y') + z·z'
-    return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-inline V2 select(__m128d m, const V2& a, const V2& b) {
-    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
-}
-inline V2 splat(const glm::dvec3& v) {
-    return {splat(v.x), splat(v.y), splat(v.z)};
-}
+#include "lanes_vec3_body.h"
+using V2 = V;
 // Lanes a and b of a per-hit vector or number.
 inline V2 pair(const glm::dvec3& a, const glm::dvec3& b) {
     return {{_mm_set_pd(a.x, b.x)}, {_mm_set_pd(a.y, b.y)}, {_mm_set_pd(a.z, b.z)}};
@@ -87,7 +64,6 @@ inline D2 pair(double a, double b) {
 // lane by lane, greater and equal ordered (false with a NaN), notEqualOrNaN unordered (true
 // with a NaN, as C's !=); lane k is element k (the low element is lane 0 here, unlike
 // pair's order).
-using Mask = __m128d;
 inline Mask greater(D2 a, D2 b) {
     return _mm_cmpgt_pd(a.v, b.v);
 }
@@ -119,6 +95,5 @@ inline D2 loadLanes(const double* p) { // p[k] to lane k, any alignment
 inline void storeLanes(double* p, D2 a) { // p: 16-byte aligned
     _mm_store_pd(p, a.v);
 }
-using D = D2;
-using V = V2;
+
 } // namespace wb::rt::sse2lanes
