@@ -16,6 +16,8 @@
 // The outward rounding shared by the build and the wide tree (internal header).
 #include "../../../core/src/raytrace/bvh_internal.h"
 
+#include "random_scene.h"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -25,13 +27,9 @@
 #include <set>
 
 using namespace wb::rt;
+using wb::test::rnd3;
 
 namespace {
-
-glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
-    std::uniform_real_distribution<double> u(lo, hi);
-    return {u(g), u(g), u(g)};
-}
 
 void randomScene(Scene& s, int n, std::mt19937_64& g, bool withPlane) {
     std::uniform_real_distribution<double> r(0.05, 0.6);

@@ -35,6 +35,8 @@
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
+#include "random_scene.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -45,10 +47,10 @@
 #include <vector>
 
 using namespace wb::rt;
+using wb::test::kInf;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kU = 0x1p-24;    // float's unit roundoff
 constexpr double kStep = 0x1p-13; // float's spacing in [1024, 2048)
 // A coordinate this far from a float of [1024, 2048) (or a multiple of kStep) is 1/64 of a

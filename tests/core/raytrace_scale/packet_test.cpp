@@ -22,6 +22,8 @@
 #include "core/raytrace/sphere.h"
 #include "core/raytrace/triangle.h"
 
+#include "random_scene.h"
+
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -33,46 +35,11 @@
 #include <utility>
 
 using namespace wb::rt;
+using wb::test::kInf;
+using wb::test::mixedScene;
+using wb::test::rnd3;
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
-    std::uniform_real_distribution<double> u(lo, hi);
-    return {u(g), u(g), u(g)};
-}
-
-void mixedScene(Scene& sc, int n, std::mt19937_64& g, double s) {
-    std::uniform_real_distribution<double> r(0.05 * s, 0.6 * s);
-    for (int i = 0; i < n; ++i) {
-        const glm::dvec3 c = rnd3(g, -10 * s, 10 * s);
-        switch (i % 7) {
-        case 0:
-        case 6:
-            sc.add(Sphere(c, r(g)), 0);
-            break;
-        case 1:
-            sc.add(Cone(c, r(g), c + rnd3(g, -s, s) + glm::dvec3(0.01 * s), r(g)), 0);
-            break;
-        case 2:
-            sc.add(Triangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s)), 0);
-            break;
-        case 3:
-            sc.add(SmoothTriangle(c, c + rnd3(g, -s, s), c + rnd3(g, -s, s), rnd3(g, -1, 1),
-                                  rnd3(g, -1, 1), rnd3(g, -1, 1)),
-                   0);
-            break;
-        case 4:
-            sc.add(Quadric(Quadric::Kind::Ellipsoid, c, glm::dvec3(r(g), r(g), r(g))), 0);
-            break;
-        default:
-            sc.add(Box::axisAligned(c, c + glm::abs(rnd3(g, 0.1 * s, s))), 0);
-            break;
-        }
-    }
-    sc.add(Plane({0, 0, -11 * s}, {0, 0, 1}), 0);
-}
 
 bool sameBits(const glm::dvec3& a, const glm::dvec3& b) {
     return std::memcmp(&a, &b, sizeof a) == 0;

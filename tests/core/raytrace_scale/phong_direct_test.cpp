@@ -10,6 +10,8 @@
 #include "core/raytrace/phong_model.h"
 #include "core/raytrace/scene.h"
 
+#include "random_scene.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -19,6 +21,7 @@
 #include <random>
 
 using namespace wb::rt;
+using wb::test::rnd3;
 
 namespace {
 
@@ -104,11 +107,6 @@ Color referenceDirect(const Scene& scene, const Ray& view, const Hit& hit, const
                                  t.specular * glm::dvec3(gm.specular) * l.colour));
     }
     return c;
-}
-
-glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
-    std::uniform_real_distribution<double> u(lo, hi);
-    return {u(g), u(g), u(g)};
 }
 
 } // namespace

@@ -21,6 +21,8 @@
 #include "core/raytrace/tracer.h"
 #include "core/raytrace/triangle.h"
 
+#include "random_scene.h"
+
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -30,15 +32,10 @@
 #include <set>
 
 using namespace wb::rt;
+using wb::test::kInf;
+using wb::test::rnd3;
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-glm::dvec3 rnd3(std::mt19937_64& g, double lo, double hi) {
-    std::uniform_real_distribution<double> u(lo, hi);
-    return {u(g), u(g), u(g)};
-}
 
 // The reference: every primitive but `skip`, asked in scene order.
 bool referenceOccluded(const Scene& sc, const Ray& ray, double tMin, double tMax,
