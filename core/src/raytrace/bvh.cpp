@@ -1267,9 +1267,12 @@ void Bvh::traverse(const Ray& ray, double tMin, double& tMax, Visit&& visit) con
     const int neg[3] = {std::signbit(inv.x), std::signbit(inv.y), std::signbit(inv.z)};
     constexpr double inf = std::numeric_limits<double>::infinity();
     // The root box (scalar). NaN (0·inf for a ray in a slab's plane) compares false:
-    // that slab is not a limit.
+    // that slab is not a limit. Its far end is tMax widened as the nodes' (limit() below):
+    // a hit on the root box's face at t == tMax has a rounded entry distance up to γ(3)
+    // past tMax, and was lost here when the segment ended at the hit (a feeler to a point
+    // on the box, the tests' tMax = hit.t).
     {
-        double t0 = tMin, t1 = tMax;
+        double t0 = tMin, t1 = tMax * kFarScale;
         for (int a = 0; a < 3; ++a) {
             const double near = ((neg[a] ? rootHi_[a] : rootLo_[a]) - o[a]) * inv[a];
             const double far = ((neg[a] ? rootLo_[a] : rootHi_[a]) - o[a]) * inv[a] * kFarScale;
