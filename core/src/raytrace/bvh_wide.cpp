@@ -448,6 +448,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     for (const unsigned bits : seen)
         for (int r = 0; r < 3; ++r)
             has[r] = has[r] || ((bits >> r) & 1);
+    triOnly_ = has[kRunTriangle] && !has[kRunSphere] && !has[kRunOther];
     // The float arrays of the kinds present only (a leaf test reads its own kind's):
     // the collapse writes less memory for a scene of one kind. Zeroed beside the
     // collapse's tasks (collapseInto), which do not read them.

@@ -286,6 +286,9 @@ class Bvh : public Aggregate {
     std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
     // At the first of a run of one float test: its length.
     bvh_detail::KeptVector<std::uint16_t> run_;
+    // Every primitive a (plain or smooth) triangle: the float-only single walks take an
+    // instance without the leaves' kind dispatch (bvh_wide_impl.h, visitLeaf's kTri).
+    bool triOnly_ = false;
     using Floats = bvh_detail::KeptVector<float>;
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
