@@ -1775,9 +1775,18 @@ template <class L, bool Q> struct Bvh::WideWalk {
             FloatStart f;
             const Start k = startRay<true>(f, b, ray, tMin, limitOf(tMax));
             if (k == kMissed) return false;
-            if (k == kFloat)
-                return b.triOnly_ ? nearestFrom<true, true>(b, ray, tMin, tMax, hit, &f)
-                                  : nearestFrom<true>(b, ray, tMin, tMax, hit, &f);
+            if (k == kFloat) return nearestFrom<true>(b, ray, tMin, tMax, hit, &f);
+        }
+        return nearestFrom<false>(b, ray, tMin, tMax, hit, nullptr);
+    }
+    // intersect for a tree of triangles only (pathTri: the path's entry chosen at the build,
+    // so the other trees' intersect has no test of Bvh::triOnly_ per ray).
+    static bool intersectTri(const Bvh& b, const Ray& ray, double tMin, double tMax, Hit& hit) {
+        if (b.unbounded_.empty() && b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
+            FloatStart f;
+            const Start k = startRay<true>(f, b, ray, tMin, limitOf(tMax));
+            if (k == kMissed) return false;
+            if (k == kFloat) return nearestFrom<true, true>(b, ray, tMin, tMax, hit, &f);
         }
         return nearestFrom<false>(b, ray, tMin, tMax, hit, nullptr);
     }
@@ -1799,13 +1808,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // compared by pointer, so the test of its neighbours in the leaf is untouched.
     static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax,
                          const Primitive* skip) {
-        if (b.triOnly_) return occludedTri(b, ray, tMin, tMax, skip);
         return occludedOf<false>(b, ray, tMin, tMax, skip);
     }
-    // A tree of triangles only: its own copy of the query (its float walk without the leaves'
-    // kind dispatch), out of line, so the general one's code is as it was.
-    __attribute__((noinline)) static bool occludedTri(const Bvh& b, const Ray& ray, double tMin,
-                                                      double tMax, const Primitive* skip) {
+    // A tree of triangles only (pathTri): its float walk without the leaves' kind dispatch.
+    static bool occludedTri(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                            const Primitive* skip) {
         return occludedOf<true>(b, ray, tMin, tMax, skip);
     }
     template <bool kTri>
@@ -1862,6 +1869,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
         });
     }
 
+    // The path's entries for a tree of triangles only (Bvh::triOnly_; WidePath::tri).
+    static const WidePath* pathTri(bool avx2) {
+        static const WidePath p{W,
+                                avx2,
+                                &intersectTri,
+                                &occludedTri,
+                                &forEachHit,
+                                &forEachBlocker,
+                                &intersectPacket,
+                                &occludedPacket,
+                                nullptr};
+        return &p;
+    }
     static const WidePath* path(bool avx2) {
         static const WidePath p{W,
                                 avx2,
@@ -1870,7 +1890,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                 &forEachHit,
                                 &forEachBlocker,
                                 &intersectPacket,
-                                &occludedPacket};
+                                &occludedPacket,
+                                pathTri(avx2)};
         return &p;
     }
 };
