@@ -314,9 +314,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 // The lanes past the leaf's end cleared without a branch (a min, a shift):
                 // the branch on a leaf's last group mispredicted on a third of the mesh's
                 // shadow rays' leaf visits (callgrind --branch-sim).
-                const int mask =
-                    ~triangleRejects<Quad>(b, tri, r.mo, r.md, r.mx, r.my, r.mz) &
-                    int(0xFu >> (4 - std::min(end - i, std::uint32_t(4))));
+                const int mask = ~triangleRejects<Quad>(b, tri, r.mo, r.md, r.mx, r.my, r.mz) &
+                                 int(0xFu >> (4 - std::min(end - i, std::uint32_t(4))));
                 for (int m = mask; m; m &= m - 1)
                     if (!visit(i + std::uint32_t(__builtin_ctz(unsigned(m))), &r)) return false;
             }
@@ -706,8 +705,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const int c = __builtin_ctz(unsigned(mask));
                     mask &= mask - 1;
                     if (nd.count[c] > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[c], nd.count[c], flim,
-                                                          leaf))
+                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[c], nd.count[c],
+                                                                flim, leaf))
                             return;
                     } else {
                         if (haveNext) stack[sp++] = {cur, 0, 0.0f};
@@ -800,8 +799,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[next], nd.count[next], flim,
-                                                      leaf))
+                    if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[next], nd.count[next],
+                                                            flim, leaf))
                         return;
                     flim = limitF();
                 }
@@ -813,7 +812,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (e.t > flim) continue;
                     const std::uint32_t child = e.child, count = e.count;
                     if (count > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, child, count, flim, leaf)) return;
+                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, child, count, flim, leaf))
+                            return;
                         flim = limitF();
                         continue;
                     }
@@ -1816,9 +1816,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return occludedOf<true>(b, ray, tMin, tMax, skip);
     }
     template <bool kTri>
-    __attribute__((always_inline)) static bool occludedOf(const Bvh& b, const Ray& ray,
-                                                          double tMin, double tMax,
-                                                          const Primitive* skip) {
+    __attribute__((always_inline)) static bool occludedOf(const Bvh& b, const Ray& ray, double tMin,
+                                                          double tMax, const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
             if (p != skip && p->occluded(ray, tMin, tMax)) return true;
         if (b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
@@ -1831,7 +1830,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
     }
     // occluded's walk. kFloatOnly (pre given, as nearestFrom<true>): without the checks
     // occluded has made, the double box test and the per-node test of useFloat (issue 21,
-    // eighth session); else the general walk. Both instances are inlined into occluded.
+    // eighth session); else the general walk. Both instances are inlined into occludedOf.
     template <bool kFloatOnly, bool kTri = false>
     __attribute__((always_inline)) static bool
     blockedFrom(const Bvh& b, const Ray& ray, double tMin, double tMax, const Primitive* skip,
