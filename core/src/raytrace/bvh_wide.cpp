@@ -448,6 +448,8 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
     for (const unsigned bits : seen)
         for (int r = 0; r < 3; ++r)
             has[r] = has[r] || ((bits >> r) & 1);
+    triOnly_ = has[kRunTriangle] && !has[kRunSphere] && !has[kRunOther];
+    if (triOnly_) path_ = path_->tri;
     // The float arrays of the kinds present only (a leaf test reads its own kind's):
     // the collapse writes less memory for a scene of one kind. Zeroed beside the
     // collapse's tasks (collapseInto), which do not read them.
@@ -517,6 +519,7 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
             stats_.quantised = true;
             stats_.nodeBytes = qnodes8_.size() * sizeof(QuantNode8);
             path_ = pc.avx512 ? avx512Path(true) : avx2Path(8, true);
+            if (triOnly_) path_ = path_->tri;
         }
     } else {
         wnodes_.reserve(std::min<std::size_t>(count / 3 + 1, 4096));

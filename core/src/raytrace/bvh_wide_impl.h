@@ -294,7 +294,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
     // kFloatOnly: r.useFloat is known to be true (the float-only walks), so not tested.
     // kStart: the ray's float values are r.start's (the walk's kFold), not r's lanes.
-    template <bool kFloatOnly = false, bool kStart = false, class Visit>
+    // kTri: the tree holds triangles only (Bvh::triOnly_) and the walk is float-only: every
+    // leaf is one triangle run, so no run lengths, kinds or useFloat are read.
+    template <bool kFloatOnly = false, bool kStart = false, bool kTri = false, class Visit>
     // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
     // no change with SSE2 (driver, alternated medians).
     __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
@@ -302,6 +304,23 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                                          float limit, Visit&& visit) {
         using namespace bvh_detail;
         const std::uint32_t end = first + count;
+        if constexpr (kTri) {
+            // The triangle run's filter below, the same operations on the same values.
+            if (!r.mtReady) r.mtSetup();
+            for (std::uint32_t i = first; i < end; i += 4) {
+                auto tri = [&](const float* a) __attribute__((always_inline)) {
+                    return _mm_loadu_ps(a + i);
+                };
+                // The lanes past the leaf's end cleared without a branch (a min, a shift):
+                // the branch on a leaf's last group mispredicted on a third of the mesh's
+                // shadow rays' leaf visits (callgrind --branch-sim).
+                const int mask = ~triangleRejects<Quad>(b, tri, r.mo, r.md, r.mx, r.my, r.mz) &
+                                 int(0xFu >> (4 - std::min(end - i, std::uint32_t(4))));
+                for (int m = mask; m; m &= m - 1)
+                    if (!visit(i + std::uint32_t(__builtin_ctz(unsigned(m))), &r)) return false;
+            }
+            return true;
+        }
         for (std::uint32_t run = first; run < end;) {
             const std::uint32_t rEnd = run + b.run_[run];
             const std::uint8_t runKind = runOf(b.kind_[run]);
@@ -548,13 +567,15 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // kFloat for this tMin and tMax), else null.
     // kFloatOnly: pre is given, the tree has nodes (no rootLeafCount_) and every box test is
     // in float (no per-node check of useFloat).
-    template <bool kAnyHit, bool kFloatOnly = false, class Leaf>
+    // kTri (with kFloatOnly): the tree holds triangles only (visitLeaf's kTri).
+    template <bool kAnyHit, bool kFloatOnly = false, bool kTri = false, class Leaf>
     // Inlined into its one caller per instantiation (intersect, occluded, forEachHit,
     // forEachBlocker): one call and one prologue less per ray (issue 21).
     __attribute__((always_inline)) static void walk(const Bvh& b, const Ray& ray, double tMin,
                                                     double& tMax, Leaf&& leaf,
                                                     const FloatStart* pre = nullptr) {
         using namespace bvh_detail;
+        static_assert(kFloatOnly || !kTri);
         if (!kFloatOnly && b.stats_.primitives == 0) return;
         if (!kFloatOnly && b.rootLeafCount_ > 0) {
             // A tree of one leaf (up to maxLeafSize primitives): the root box in double and
@@ -684,8 +705,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const int c = __builtin_ctz(unsigned(mask));
                     mask &= mask - 1;
                     if (nd.count[c] > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold>(b, r, nd.child[c], nd.count[c], flim,
-                                                          leaf))
+                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[c], nd.count[c],
+                                                                flim, leaf))
                             return;
                     } else {
                         if (haveNext) stack[sp++] = {cur, 0, 0.0f};
@@ -778,8 +799,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf<kLeafFloat, kFold>(b, r, nd.child[next], nd.count[next], flim,
-                                                      leaf))
+                    if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[next], nd.count[next],
+                                                            flim, leaf))
                         return;
                     flim = limitF();
                 }
@@ -791,7 +812,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (e.t > flim) continue;
                     const std::uint32_t child = e.child, count = e.count;
                     if (count > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold>(b, r, child, count, flim, leaf)) return;
+                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, child, count, flim, leaf))
+                            return;
                         flim = limitF();
                         continue;
                     }
@@ -1757,9 +1779,20 @@ template <class L, bool Q> struct Bvh::WideWalk {
         }
         return nearestFrom<false>(b, ray, tMin, tMax, hit, nullptr);
     }
+    // intersect for a tree of triangles only (pathTri: the path's entry chosen at the build,
+    // so the other trees' intersect has no test of Bvh::triOnly_ per ray).
+    static bool intersectTri(const Bvh& b, const Ray& ray, double tMin, double tMax, Hit& hit) {
+        if (b.unbounded_.empty() && b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
+            FloatStart f;
+            const Start k = startRay<true>(f, b, ray, tMin, limitOf(tMax));
+            if (k == kMissed) return false;
+            if (k == kFloat) return nearestFrom<true, true>(b, ray, tMin, tMax, hit, &f);
+        }
+        return nearestFrom<false>(b, ray, tMin, tMax, hit, nullptr);
+    }
     // kFloatOnly (pre given): a walk of its own, without the checks intersect has made and
     // without the double box test; else the general walk.
-    template <bool kFloatOnly>
+    template <bool kFloatOnly, bool kTri = false>
     __attribute__((noinline)) static bool nearestFrom(const Bvh& b, const Ray& ray, double tMin,
                                                       double tMax, Hit& hit,
                                                       const FloatStart* pre) {
@@ -1767,7 +1800,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
         if constexpr (!kFloatOnly)
             for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
                 s.offer(*b.unbounded_[i], bvh_detail::kOther, b.unboundedIndex_[i], nullptr);
-        walk<false, kFloatOnly>(b, ray, tMin, s.tMax, s, pre);
+        walk<false, kFloatOnly, kTri>(b, ray, tMin, s.tMax, s, pre);
         return s.best.p != nullptr;
     }
 
@@ -1775,25 +1808,35 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // compared by pointer, so the test of its neighbours in the leaf is untouched.
     static bool occluded(const Bvh& b, const Ray& ray, double tMin, double tMax,
                          const Primitive* skip) {
+        return occludedOf<false>(b, ray, tMin, tMax, skip);
+    }
+    // A tree of triangles only (pathTri): its float walk without the leaves' kind dispatch.
+    static bool occludedTri(const Bvh& b, const Ray& ray, double tMin, double tMax,
+                            const Primitive* skip) {
+        return occludedOf<true>(b, ray, tMin, tMax, skip);
+    }
+    template <bool kTri>
+    __attribute__((always_inline)) static bool occludedOf(const Bvh& b, const Ray& ray, double tMin,
+                                                          double tMax, const Primitive* skip) {
         for (const Primitive* p : b.unbounded_)
             if (p != skip && p->occluded(ray, tMin, tMax)) return true;
         if (b.stats_.primitives != 0 && b.rootLeafCount_ == 0) {
             FloatStart f;
             // No root-box test (kRoot false): feelers start inside the box; the limit is unused.
             if (startRay<false>(f, b, ray, tMin, 0.0f) == kFloat)
-                return blockedFrom<true>(b, ray, tMin, tMax, skip, &f);
+                return blockedFrom<true, kTri>(b, ray, tMin, tMax, skip, &f);
         }
         return blockedFrom<false>(b, ray, tMin, tMax, skip, nullptr);
     }
     // occluded's walk. kFloatOnly (pre given, as nearestFrom<true>): without the checks
     // occluded has made, the double box test and the per-node test of useFloat (issue 21,
-    // eighth session); else the general walk. Both instances are inlined into occluded.
-    template <bool kFloatOnly>
+    // eighth session); else the general walk. Both instances are inlined into occludedOf.
+    template <bool kFloatOnly, bool kTri = false>
     __attribute__((always_inline)) static bool
     blockedFrom(const Bvh& b, const Ray& ray, double tMin, double tMax, const Primitive* skip,
                 const FloatStart* pre) {
         bool any = false;
-        walk<true, kFloatOnly>(
+        walk<true, kFloatOnly, kTri>(
             b, ray, tMin, tMax,
             [&](std::uint32_t i, const RayData* r) {
                 const Primitive* p = b.order_[i];
@@ -1825,6 +1868,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
         });
     }
 
+    // The path's entries for a tree of triangles only (Bvh::triOnly_; WidePath::tri).
+    static const WidePath* pathTri(bool avx2) {
+        static const WidePath p{W,
+                                avx2,
+                                &intersectTri,
+                                &occludedTri,
+                                &forEachHit,
+                                &forEachBlocker,
+                                &intersectPacket,
+                                &occludedPacket,
+                                nullptr};
+        return &p;
+    }
     static const WidePath* path(bool avx2) {
         static const WidePath p{W,
                                 avx2,
@@ -1833,7 +1889,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                 &forEachHit,
                                 &forEachBlocker,
                                 &intersectPacket,
-                                &occludedPacket};
+                                &occludedPacket,
+                                pathTri(avx2)};
         return &p;
     }
 };

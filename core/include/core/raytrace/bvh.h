@@ -223,6 +223,9 @@ class Bvh : public Aggregate {
                                     unsigned);
         unsigned (*occludedPacket)(const Bvh&, const Ray*, const double*, const double*,
                                    const Primitive* const*, unsigned);
+        // The same path for a tree of triangles only (triOnly_): its single-ray entries
+        // skip the leaves' kind dispatch. Null in that path itself.
+        const WidePath* tri;
     };
     template <class Lanes, bool Quantised = false> struct WideWalk;
     static const WidePath* ssePath(int width);  // bvh_wide.cpp: width 4 only
@@ -286,6 +289,9 @@ class Bvh : public Aggregate {
     std::vector<std::uint8_t> sceneKind_; // the build's kinds per scene index, until collapsed
     // At the first of a run of one float test: its length.
     bvh_detail::KeptVector<std::uint16_t> run_;
+    // Every primitive a (plain or smooth) triangle: path_ is its path's `tri`, whose
+    // float-only single walks skip the leaves' kind dispatch (bvh_wide_impl.h, visitLeaf's kTri).
+    bool triOnly_ = false;
     using Floats = bvh_detail::KeptVector<float>;
     Floats sx_, sy_, sz_, sr_, sm_; // spheres at their order_ index: float centre,
                                     // radius, their part of the float test's margin
