@@ -1359,7 +1359,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
             m &= active;
             if (__builtin_popcount(m) >= kTransposeLanes) {
                 using namespace bvh_detail;
-                const unsigned entered = m;
+                unsigned offered = 0; // lanes a primitive was offered to (their tMax may be lower)
                 // A lane done (any hit): out of the leaf and the walk.
                 auto done = [&](int j) {
                     m &= ~(1u << j);
@@ -1388,9 +1388,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                       [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
                         if (kAnyHit && !more) done(j);
                     }
+                    offered |= m & ~mt;
                     for (std::uint32_t i = run; i < rEnd && mt; ++i) {
                         unsigned cand = mt & (runKind == kRunSphere ? sphereLanesTest(b, p, i)
                                                                     : triangleLanesTest(b, p, i));
+                        offered |= cand;
                         for (; cand; cand &= cand - 1) {
                             const int j = __builtin_ctz(cand);
                             if (!leaf(j, i, &p.r[j]) && kAnyHit) {
@@ -1401,9 +1403,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     }
                     run = rEnd;
                 }
-                if constexpr (!kAnyHit)
-                    for (unsigned k = entered; k; k &= k - 1)
+                if constexpr (!kAnyHit) {
+                    // Only a lane offered a primitive can have lowered its tMax.
+                    if (!offered) return true;
+                    for (unsigned k = offered; k; k &= k - 1)
                         p.lim[__builtin_ctz(k)] = limitOf(tMax[__builtin_ctz(k)]);
+                } else {
+                    (void)offered;
+                }
                 limV = L::load(p.lim);
                 limHi = maxLim();
                 return active != 0;
