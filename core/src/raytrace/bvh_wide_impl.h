@@ -1514,28 +1514,35 @@ template <class L, bool Q> struct Bvh::WideWalk {
             } else if (mask) {
                 // Nearest first: sorted by the packet's smallest entry distance, the farther
                 // ones pushed farthest first; a leaf met as the nearest is visited at once.
-                int order[W], n = 0;
-                while (mask) {
+                // The entries go straight onto the stack, each sorted in among this node's
+                // (the same stable order as sorting indices first, then pushing: issue 21,
+                // eleventh session, callgrind), and the nearest is popped back; one child
+                // (most nodes) skips the stack.
+                Entry next;
+                if (!(mask & (mask - 1))) {
                     const int c = __builtin_ctz(unsigned(mask));
-                    mask &= mask - 1;
-                    int k = n++;
-                    while (k > 0 && tc[order[k - 1]] < tc[c]) {
-                        order[k] = order[k - 1];
-                        --k;
+                    next = {nd.child[c], nd.count[c], std::uint16_t(rays[c]), 0.0f};
+                } else {
+                    const int base = sp;
+                    while (mask) {
+                        const int c = __builtin_ctz(unsigned(mask));
+                        mask &= mask - 1;
+                        const Entry e{nd.child[c], nd.count[c], std::uint16_t(rays[c]), tc[c]};
+                        int k = sp++;
+                        while (k > base && stack[k - 1].t < e.t) {
+                            stack[k] = stack[k - 1];
+                            --k;
+                        }
+                        stack[k] = e;
                     }
-                    order[k] = c;
+                    next = stack[--sp];
                 }
-                for (int k = 0; k + 1 < n; ++k) {
-                    const int c = order[k];
-                    stack[sp++] = {nd.child[c], nd.count[c], std::uint16_t(rays[c]), tc[c]};
-                }
-                const int next = order[n - 1];
-                if (nd.count[next] == 0) {
-                    cur = nd.child[next];
-                    curRays = rays[next];
+                if (next.count == 0) {
+                    cur = next.child;
+                    curRays = next.rays;
                     haveNext = true;
                 } else {
-                    visitLeaves(nd.child[next], nd.count[next], rays[next]);
+                    visitLeaves(next.child, next.count, next.rays);
                 }
             }
             if (haveNext) continue;
