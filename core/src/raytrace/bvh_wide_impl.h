@@ -844,6 +844,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
     // transposed triangle set-up became cheap; 1 measured worse on every scene).
     static constexpr int kTransposeLanes = 2;
+    // A triangle run of n is tested ray by ray, four triangles at a time
+    // (triangleQuadTest), when popcount · ceil(n / 4) · kQuadCost < n · kLanesCost: the
+    // instructions of one ray against four triangles and of one triangle against the lanes
+    // (callgrind, the mesh's eye packets: ~55 and ~47; issue 21, eleventh session).
+    static constexpr unsigned kQuadCost = 6, kLanesCost = 5;
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
@@ -982,6 +987,22 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int reject =
             triangleRejects<L>(b, tri, o, d, L::load(p.tmx), L::load(p.tmy), L::load(p.tmz));
         return ~unsigned(reject) & ((1u << W) - 1);
+    }
+
+    // Triangles i..i+3 against the ray of lane j: the single walk's filter (triangleRejects
+    // with Quad, visitLeaf's) with the ray's values from the packet's lanes (triangleLanes:
+    // mtSetup's values, the same bits). Returns the candidates' mask (4 bits).
+    __attribute__((always_inline)) static int triangleQuadTest(const Bvh& b, const Packet& p, int j,
+                                                               std::uint32_t i) {
+        const __m128 o[3] = {_mm_set1_ps(p.tmo[0][j]), _mm_set1_ps(p.tmo[1][j]),
+                             _mm_set1_ps(p.tmo[2][j])};
+        const __m128 d[3] = {_mm_set1_ps(p.tmd[0][j]), _mm_set1_ps(p.tmd[1][j]),
+                             _mm_set1_ps(p.tmd[2][j])};
+        auto tri = [&](const float* a) __attribute__((always_inline)) {
+            return _mm_loadu_ps(a + i);
+        };
+        return 0xF & ~triangleRejects<Quad>(b, tri, o, d, _mm_set1_ps(p.tmx[j]),
+                                            _mm_set1_ps(p.tmy[j]), _mm_set1_ps(p.tmz[j]));
     }
 
     // joinPacket's per-ray part for 8 lanes, four rays at a time: each ray's origin and
@@ -1357,7 +1378,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m)
             __attribute__((always_inline)) {
             m &= active;
-            if (__builtin_popcount(m) >= kTransposeLanes) {
+            const int nm = __builtin_popcount(m);
+            // A leaf whose first run is of triangles takes the run loop for any number of
+            // rays: its triangle runs are tested from the packet's lanes (below), without
+            // the ray's own set-up (fillLane, mtSetup).
+            if (nm >= kTransposeLanes ||
+                bvh_detail::runOf(b.kind_[first]) == bvh_detail::kRunTriangle) {
                 using namespace bvh_detail;
                 unsigned offered = 0; // lanes a primitive was offered to (their tMax may be lower)
                 // A lane done (any hit): out of the leaf and the walk.
@@ -1372,11 +1398,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const std::uint8_t runKind = runOf(b.kind_[run]);
                     unsigned mt = 0; // lanes tested transposed
                     if (runKind == kRunSphere) {
-                        if (!p.sphSet) sphereLanes(p, lanes);
-                        mt = m & p.sphLanes;
+                        if (nm >= kTransposeLanes) {
+                            if (!p.sphSet) sphereLanes(p, lanes);
+                            mt = m & p.sphLanes;
+                        }
                     } else if (runKind == kRunTriangle) {
                         if (!p.triSet) triangleLanes(p, lanes);
                         mt = m & p.triLanes;
+                        // Few rays against the run: each ray against four triangles at a
+                        // time (the single walk's filter, its values from the packet's
+                        // lanes) costs less than each triangle against the eight lanes.
+                        const std::uint32_t n = rEnd - run;
+                        if (unsigned(__builtin_popcount(mt)) * ((n + 3) / 4) * kQuadCost <
+                            n * kLanesCost) {
+                            for (unsigned k = mt; k; k &= k - 1) {
+                                const int j = __builtin_ctz(k);
+                                for (std::uint32_t i = run; i < rEnd; i += 4) {
+                                    int cand = triangleQuadTest(b, p, j, i);
+                                    if (rEnd - i < 4) cand &= (1 << (rEnd - i)) - 1;
+                                    if (cand) offered |= 1u << j;
+                                    for (; cand; cand &= cand - 1) {
+                                        const std::uint32_t t =
+                                            i + std::uint32_t(__builtin_ctz(unsigned(cand)));
+                                        if (!leaf(j, t, &p.r[j]) && kAnyHit) {
+                                            done(j);
+                                            i = rEnd;
+                                            break;
+                                        }
+                                    }
+                                }
+                            }
+                            run = rEnd;
+                            continue;
+                        }
                     }
                     // The other lanes (and the other kinds): each ray's own tests of this
                     // run (visitLeaf of one run: run_[run] ends it at rEnd).
