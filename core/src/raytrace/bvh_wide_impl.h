@@ -1502,54 +1502,74 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const Node& nd = nodes[cur];
             if constexpr (sizeof(Node) > 128)
                 _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
-            alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
-            const float* nearP[3];
-            const float* farP[3];
-            // The interval test: the W children against the whole packet at once.
-            V t0 = iaTMin, t1 = limHi;
-            for (int a = 0; a < 3; ++a) {
-                const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
-                if constexpr (Q) {
-                    L::store(nearA[a], n);
-                    L::store(farA[a], f);
-                    nearP[a] = nearA[a];
-                    farP[a] = farA[a];
-                } else {
-                    const char* base = reinterpret_cast<const char*>(&nd);
-                    nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
-                    farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
-                }
-                t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
-                t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
-            }
-            int cand = L::le(t0, t1) & validMask(nd);
-            // Each candidate child against each ray (lane j: ray j's own test). A child's
-            // distance (its order, and its drop once nearer hits are known) is the interval
-            // test's entry, at most every ray's own entry (monotonic rounding, as above).
             unsigned rays[W];
             alignas(32) float tc[W];
-            if constexpr (!kAnyHit) L::store(tc, t0);
             int mask = 0;
             curRays &= active;
-            while (cand) {
-                const int c = __builtin_ctz(unsigned(cand));
-                cand &= cand - 1;
-                V r0 = tMinV, r1 = limV;
+            if (curRays && !(curRays & (curRays - 1))) {
+                // One ray left (a fifth of the mesh's nodes): its own test of the W children
+                // at once, the lanes' operations of the per-ray test below with the ray's
+                // values broadcast (the same verdicts), without the interval test. A
+                // child's distance is the ray's own entry (a lower bound of it, as the
+                // drop test needs).
+                const int j = __builtin_ctz(curRays);
+                V r0 = L::set1(p.tMin[j]), r1 = L::set1(p.lim[j]);
                 for (int a = 0; a < 3; ++a) {
-                    // The packet's lanes read from p at each use (memory operands): held in
-                    // locals, GCC copied all twelve vectors to its stack at every packet's
-                    // start (~50 moves; issue 21, eighth session).
-                    r0 = L::max(
-                        L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])), L::load(p.inv[a])),
-                        r0);
-                    r1 = L::min(
-                        L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])), L::load(p.invFar[a])),
-                        r1);
+                    const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
+                    r0 = L::max(L::mul(L::sub(n, L::set1(p.on[a][j])), L::set1(p.inv[a][j])), r0);
+                    r1 =
+                        L::min(L::mul(L::sub(f, L::set1(p.of[a][j])), L::set1(p.invFar[a][j])), r1);
                 }
-                const unsigned m = unsigned(L::le(r0, r1)) & curRays;
-                if (!m) continue;
-                mask |= 1 << c;
-                rays[c] = m;
+                mask = L::le(r0, r1) & validMask(nd);
+                if constexpr (!kAnyHit) L::store(tc, r0);
+                for (int k = mask; k; k &= k - 1)
+                    rays[__builtin_ctz(unsigned(k))] = curRays;
+            } else {
+                alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
+                const float* nearP[3];
+                const float* farP[3];
+                // The interval test: the W children against the whole packet at once.
+                V t0 = iaTMin, t1 = limHi;
+                for (int a = 0; a < 3; ++a) {
+                    const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
+                    if constexpr (Q) {
+                        L::store(nearA[a], n);
+                        L::store(farA[a], f);
+                        nearP[a] = nearA[a];
+                        farP[a] = farA[a];
+                    } else {
+                        const char* base = reinterpret_cast<const char*>(&nd);
+                        nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
+                        farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
+                    }
+                    t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
+                    t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
+                }
+                int cand = L::le(t0, t1) & validMask(nd);
+                // Each candidate child against each ray (lane j: ray j's own test). A child's
+                // distance (its order, and its drop once nearer hits are known) is the interval
+                // test's entry, at most every ray's own entry (monotonic rounding, as above).
+                if constexpr (!kAnyHit) L::store(tc, t0);
+                while (cand) {
+                    const int c = __builtin_ctz(unsigned(cand));
+                    cand &= cand - 1;
+                    V r0 = tMinV, r1 = limV;
+                    for (int a = 0; a < 3; ++a) {
+                        // The packet's lanes read from p at each use (memory operands): held in
+                        // locals, GCC copied all twelve vectors to its stack at every packet's
+                        // start (~50 moves; issue 21, eighth session).
+                        r0 = L::max(L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])),
+                                           L::load(p.inv[a])),
+                                    r0);
+                        r1 = L::min(L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])),
+                                           L::load(p.invFar[a])),
+                                    r1);
+                    }
+                    const unsigned m = unsigned(L::le(r0, r1)) & curRays;
+                    if (!m) continue;
+                    mask |= 1 << c;
+                    rays[c] = m;
+                }
             }
             bool haveNext = false;
             if constexpr (kAnyHit) {
