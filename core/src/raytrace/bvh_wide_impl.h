@@ -848,7 +848,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // (triangleQuadTest), when popcount · ceil(n / 4) · kQuadCost < n · kLanesCost: the
     // instructions of one ray against four triangles and of one triangle against the lanes
     // (callgrind, the mesh's eye packets: ~55 and ~47; issue 21, eleventh session).
-    static constexpr unsigned kQuadCost = 6, kLanesCost = 5;
+    // With AVX-512 (kFold) the transposed test's eleven triangle broadcasts that feed a
+    // product fold into it as {1to8} operands: one triangle against the lanes costs less.
+    static constexpr unsigned kQuadCost = 6, kLanesCost = FoldOf<L>::value ? 4 : 5;
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
