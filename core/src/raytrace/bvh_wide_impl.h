@@ -1753,13 +1753,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
         }
         if (!packet) return blocked;
-        walkPacket<true>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
-            const Primitive* q = b.order_[i];
-            if (q == skipOf(j) || !exactOccluded(*q, b.kind_[i], r, rays[j], tMin[j], tMax[j]))
-                return true;
-            blocked |= 1u << j;
-            return false;
-        });
+        // As intersectPacket's PacketNearest: the arrays' pointers held, not captured.
+        PacketOccluded visit{b.order_.data(), b.kind_.data(), rays, tMin, tMax, skip, &blocked};
+        walkPacket<true>(b, p, packet, tMax, visit);
         return blocked;
     }
 
@@ -1836,6 +1832,24 @@ template <class L, bool Q> struct Bvh::WideWalk {
             offerNearest(*order[i], kind[i], orderIndex[i], r, rays[j], tMin[j], tMax[j], hits[j],
                          best[j]);
             return true;
+        }
+    };
+    // occludedPacket's leaf visitor: occluded()'s test for ray j; false once it is blocked.
+    struct PacketOccluded {
+        const Primitive* const* order;
+        const std::uint8_t* kind;
+        const Ray* rays;
+        const double* tMin;
+        const double* tMax;
+        const Primitive* const* skip;
+        unsigned* blocked;
+        __attribute__((always_inline)) bool operator()(int j, std::uint32_t i,
+                                                       const RayData* r) const {
+            const Primitive* q = order[i];
+            if ((skip && q == skip[j]) || !exactOccluded(*q, kind[i], r, rays[j], tMin[j], tMax[j]))
+                return true;
+            *blocked |= 1u << j;
+            return false;
         }
     };
     // intersect()'s leaf visitor. Its state (the nearest so far, the limit) lives in its own
