@@ -1595,9 +1595,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 // eleventh session, callgrind), and the nearest is popped back; one child
                 // (most nodes) skips the stack.
                 Entry next;
-                if (!(mask & (mask - 1))) {
-                    const int c = __builtin_ctz(unsigned(mask));
-                    next = {nd.child[c], nd.count[c], std::uint16_t(rays[c]), 0.0f};
+                const int c0 = __builtin_ctz(unsigned(mask));
+                const int rest = mask & (mask - 1);
+                if (!rest) {
+                    next = {nd.child[c0], nd.count[c0], std::uint16_t(rays[c0]), 0.0f};
+                } else if (!(rest & (rest - 1))) {
+                    // Two: the nearer is next, the other pushed (on equal or unordered
+                    // distances the second, as the stable sort below has it).
+                    const int c1 = __builtin_ctz(unsigned(rest));
+                    const Entry e0{nd.child[c0], nd.count[c0], std::uint16_t(rays[c0]), tc[c0]};
+                    const Entry e1{nd.child[c1], nd.count[c1], std::uint16_t(rays[c1]), tc[c1]};
+                    const bool firstNearer = e0.t < e1.t;
+                    stack[sp++] = firstNearer ? e1 : e0;
+                    next = firstNearer ? e0 : e1;
                 } else {
                     const int base = sp;
                     while (mask) {
