@@ -866,6 +866,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
     // transposed triangle set-up became cheap; 1 measured worse on every scene).
     static constexpr int kTransposeLanes = 2;
+    // A triangle run of n is tested ray by ray, four triangles at a time
+    // (triangleQuadTest), when popcount · ceil(n / 4) · kQuadCost < n · kLanesCost: the
+    // instructions of one ray against four triangles and of one triangle against the lanes
+    // (callgrind, the mesh's eye packets: ~55 and ~47; issue 21, eleventh session).
+    // With AVX-512 (kFold) the transposed test's eleven triangle broadcasts that feed a
+    // product fold into it as {1to8} operands: one triangle against the lanes costs less.
+    static constexpr unsigned kQuadCost = 6, kLanesCost = FoldOf<L>::value ? 4 : 5;
 
     // The smallest and largest lane, in every lane (the packets' intervals over their
     // rays; no lane NaN). V is __m256 for W = 8 (the AVX2 and AVX-512 files), else __m128.
@@ -1004,6 +1011,22 @@ template <class L, bool Q> struct Bvh::WideWalk {
         const int reject =
             triangleRejects<L>(b, tri, o, d, L::load(p.tmx), L::load(p.tmy), L::load(p.tmz));
         return ~unsigned(reject) & ((1u << W) - 1);
+    }
+
+    // Triangles i..i+3 against the ray of lane j: the single walk's filter (triangleRejects
+    // with Quad, visitLeaf's) with the ray's values from the packet's lanes (triangleLanes:
+    // mtSetup's values, the same bits). Returns the candidates' mask (4 bits).
+    __attribute__((always_inline)) static int triangleQuadTest(const Bvh& b, const Packet& p, int j,
+                                                               std::uint32_t i) {
+        const __m128 o[3] = {_mm_set1_ps(p.tmo[0][j]), _mm_set1_ps(p.tmo[1][j]),
+                             _mm_set1_ps(p.tmo[2][j])};
+        const __m128 d[3] = {_mm_set1_ps(p.tmd[0][j]), _mm_set1_ps(p.tmd[1][j]),
+                             _mm_set1_ps(p.tmd[2][j])};
+        auto tri = [&](const float* a) __attribute__((always_inline)) {
+            return _mm_loadu_ps(a + i);
+        };
+        return 0xF & ~triangleRejects<Quad>(b, tri, o, d, _mm_set1_ps(p.tmx[j]),
+                                            _mm_set1_ps(p.tmy[j]), _mm_set1_ps(p.tmz[j]));
     }
 
     // joinPacket's per-ray part for 8 lanes, four rays at a time: each ray's origin and
@@ -1379,9 +1402,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
         auto visitLeaves = [&](std::uint32_t first, std::uint32_t count, unsigned m)
             __attribute__((always_inline)) {
             m &= active;
-            if (__builtin_popcount(m) >= kTransposeLanes) {
+            const int nm = __builtin_popcount(m);
+            // A leaf whose first run is of triangles takes the run loop for any number of
+            // rays: its triangle runs are tested from the packet's lanes (below), without
+            // the ray's own set-up (fillLane, mtSetup).
+            if (nm >= kTransposeLanes ||
+                bvh_detail::runOf(b.kind_[first]) == bvh_detail::kRunTriangle) {
                 using namespace bvh_detail;
-                const unsigned entered = m;
+                unsigned offered = 0; // lanes a primitive was offered to (their tMax may be lower)
                 // A lane done (any hit): out of the leaf and the walk.
                 auto done = [&](int j) {
                     m &= ~(1u << j);
@@ -1394,11 +1422,39 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const std::uint8_t runKind = runOf(b.kind_[run]);
                     unsigned mt = 0; // lanes tested transposed
                     if (runKind == kRunSphere) {
-                        if (!p.sphSet) sphereLanes(p, lanes);
-                        mt = m & p.sphLanes;
+                        if (nm >= kTransposeLanes) {
+                            if (!p.sphSet) sphereLanes(p, lanes);
+                            mt = m & p.sphLanes;
+                        }
                     } else if (runKind == kRunTriangle) {
                         if (!p.triSet) triangleLanes(p, lanes);
                         mt = m & p.triLanes;
+                        // Few rays against the run: each ray against four triangles at a
+                        // time (the single walk's filter, its values from the packet's
+                        // lanes) costs less than each triangle against the eight lanes.
+                        const std::uint32_t n = rEnd - run;
+                        if (unsigned(__builtin_popcount(mt)) * ((n + 3) / 4) * kQuadCost <
+                            n * kLanesCost) {
+                            for (unsigned k = mt; k; k &= k - 1) {
+                                const int j = __builtin_ctz(k);
+                                for (std::uint32_t i = run; i < rEnd; i += 4) {
+                                    int cand = triangleQuadTest(b, p, j, i);
+                                    if (rEnd - i < 4) cand &= (1 << (rEnd - i)) - 1;
+                                    if (cand) offered |= 1u << j;
+                                    for (; cand; cand &= cand - 1) {
+                                        const std::uint32_t t =
+                                            i + std::uint32_t(__builtin_ctz(unsigned(cand)));
+                                        if (!leaf(j, t, &p.r[j]) && kAnyHit) {
+                                            done(j);
+                                            i = rEnd;
+                                            break;
+                                        }
+                                    }
+                                }
+                            }
+                            run = rEnd;
+                            continue;
+                        }
                     }
                     // The other lanes (and the other kinds): each ray's own tests of this
                     // run (visitLeaf of one run: run_[run] ends it at rEnd).
@@ -1410,9 +1466,11 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                       [&](std::uint32_t i, RayData* r) { return leaf(j, i, r); });
                         if (kAnyHit && !more) done(j);
                     }
+                    offered |= m & ~mt;
                     for (std::uint32_t i = run; i < rEnd && mt; ++i) {
                         unsigned cand = mt & (runKind == kRunSphere ? sphereLanesTest(b, p, i)
                                                                     : triangleLanesTest(b, p, i));
+                        offered |= cand;
                         for (; cand; cand &= cand - 1) {
                             const int j = __builtin_ctz(cand);
                             if (!leaf(j, i, &p.r[j]) && kAnyHit) {
@@ -1423,9 +1481,14 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     }
                     run = rEnd;
                 }
-                if constexpr (!kAnyHit)
-                    for (unsigned k = entered; k; k &= k - 1)
+                if constexpr (!kAnyHit) {
+                    // Only a lane offered a primitive can have lowered its tMax.
+                    if (!offered) return true;
+                    for (unsigned k = offered; k; k &= k - 1)
                         p.lim[__builtin_ctz(k)] = limitOf(tMax[__builtin_ctz(k)]);
+                } else {
+                    (void)offered;
+                }
                 limV = L::load(p.lim);
                 limHi = maxLim();
                 return active != 0;
@@ -1463,54 +1526,74 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const Node& nd = nodes[cur];
             if constexpr (sizeof(Node) > 128)
                 _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
-            alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
-            const float* nearP[3];
-            const float* farP[3];
-            // The interval test: the W children against the whole packet at once.
-            V t0 = iaTMin, t1 = limHi;
-            for (int a = 0; a < 3; ++a) {
-                const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
-                if constexpr (Q) {
-                    L::store(nearA[a], n);
-                    L::store(farA[a], f);
-                    nearP[a] = nearA[a];
-                    farP[a] = farA[a];
-                } else {
-                    const char* base = reinterpret_cast<const char*>(&nd);
-                    nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
-                    farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
-                }
-                t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
-                t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
-            }
-            int cand = L::le(t0, t1) & validMask(nd);
-            // Each candidate child against each ray (lane j: ray j's own test). A child's
-            // distance (its order, and its drop once nearer hits are known) is the interval
-            // test's entry, at most every ray's own entry (monotonic rounding, as above).
             unsigned rays[W];
             alignas(32) float tc[W];
-            if constexpr (!kAnyHit) L::store(tc, t0);
             int mask = 0;
             curRays &= active;
-            while (cand) {
-                const int c = __builtin_ctz(unsigned(cand));
-                cand &= cand - 1;
-                V r0 = tMinV, r1 = limV;
+            if (curRays && !(curRays & (curRays - 1))) {
+                // One ray left (a fifth of the mesh's nodes): its own test of the W children
+                // at once, the lanes' operations of the per-ray test below with the ray's
+                // values broadcast (the same verdicts), without the interval test. A
+                // child's distance is the ray's own entry (a lower bound of it, as the
+                // drop test needs).
+                const int j = __builtin_ctz(curRays);
+                V r0 = L::set1(p.tMin[j]), r1 = L::set1(p.lim[j]);
                 for (int a = 0; a < 3; ++a) {
-                    // The packet's lanes read from p at each use (memory operands): held in
-                    // locals, GCC copied all twelve vectors to its stack at every packet's
-                    // start (~50 moves; issue 21, eighth session).
-                    r0 = L::max(
-                        L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])), L::load(p.inv[a])),
-                        r0);
-                    r1 = L::min(
-                        L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])), L::load(p.invFar[a])),
-                        r1);
+                    const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
+                    r0 = L::max(L::mul(L::sub(n, L::set1(p.on[a][j])), L::set1(p.inv[a][j])), r0);
+                    r1 =
+                        L::min(L::mul(L::sub(f, L::set1(p.of[a][j])), L::set1(p.invFar[a][j])), r1);
                 }
-                const unsigned m = unsigned(L::le(r0, r1)) & curRays;
-                if (!m) continue;
-                mask |= 1 << c;
-                rays[c] = m;
+                mask = L::le(r0, r1) & validMask(nd);
+                if constexpr (!kAnyHit) L::store(tc, r0);
+                for (int k = mask; k; k &= k - 1)
+                    rays[__builtin_ctz(unsigned(k))] = curRays;
+            } else {
+                alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
+                const float* nearP[3];
+                const float* farP[3];
+                // The interval test: the W children against the whole packet at once.
+                V t0 = iaTMin, t1 = limHi;
+                for (int a = 0; a < 3; ++a) {
+                    const V n = planes(nd, p.off[a], a), f = planes(nd, p.off[3 + a], a);
+                    if constexpr (Q) {
+                        L::store(nearA[a], n);
+                        L::store(farA[a], f);
+                        nearP[a] = nearA[a];
+                        farP[a] = farA[a];
+                    } else {
+                        const char* base = reinterpret_cast<const char*>(&nd);
+                        nearP[a] = reinterpret_cast<const float*>(base + p.off[a]);
+                        farP[a] = reinterpret_cast<const float*>(base + p.off[3 + a]);
+                    }
+                    t0 = L::max(minProduct(L::sub(n, iaOn[a]), iaInvLo[a], iaInvHi[a]), t0);
+                    t1 = L::min(maxProduct(L::sub(f, iaOf[a]), iaFarLo[a], iaFarHi[a]), t1);
+                }
+                int cand = L::le(t0, t1) & validMask(nd);
+                // Each candidate child against each ray (lane j: ray j's own test). A child's
+                // distance (its order, and its drop once nearer hits are known) is the interval
+                // test's entry, at most every ray's own entry (monotonic rounding, as above).
+                if constexpr (!kAnyHit) L::store(tc, t0);
+                while (cand) {
+                    const int c = __builtin_ctz(unsigned(cand));
+                    cand &= cand - 1;
+                    V r0 = tMinV, r1 = limV;
+                    for (int a = 0; a < 3; ++a) {
+                        // The packet's lanes read from p at each use (memory operands): held in
+                        // locals, GCC copied all twelve vectors to its stack at every packet's
+                        // start (~50 moves; issue 21, eighth session).
+                        r0 = L::max(L::mul(L::sub(L::set1(nearP[a][c]), L::load(p.on[a])),
+                                           L::load(p.inv[a])),
+                                    r0);
+                        r1 = L::min(L::mul(L::sub(L::set1(farP[a][c]), L::load(p.of[a])),
+                                           L::load(p.invFar[a])),
+                                    r1);
+                    }
+                    const unsigned m = unsigned(L::le(r0, r1)) & curRays;
+                    if (!m) continue;
+                    mask |= 1 << c;
+                    rays[c] = m;
+                }
             }
             bool haveNext = false;
             if constexpr (kAnyHit) {
@@ -1529,28 +1612,45 @@ template <class L, bool Q> struct Bvh::WideWalk {
             } else if (mask) {
                 // Nearest first: sorted by the packet's smallest entry distance, the farther
                 // ones pushed farthest first; a leaf met as the nearest is visited at once.
-                int order[W], n = 0;
-                while (mask) {
-                    const int c = __builtin_ctz(unsigned(mask));
-                    mask &= mask - 1;
-                    int k = n++;
-                    while (k > 0 && tc[order[k - 1]] < tc[c]) {
-                        order[k] = order[k - 1];
-                        --k;
+                // The entries go straight onto the stack, each sorted in among this node's
+                // (the same stable order as sorting indices first, then pushing: issue 21,
+                // eleventh session, callgrind), and the nearest is popped back; one child
+                // (most nodes) skips the stack.
+                Entry next;
+                const int c0 = __builtin_ctz(unsigned(mask));
+                const int rest = mask & (mask - 1);
+                if (!rest) {
+                    next = {nd.child[c0], nd.count[c0], std::uint16_t(rays[c0]), 0.0f};
+                } else if (!(rest & (rest - 1))) {
+                    // Two: the nearer is next, the other pushed (on equal or unordered
+                    // distances the second, as the stable sort below has it).
+                    const int c1 = __builtin_ctz(unsigned(rest));
+                    const Entry e0{nd.child[c0], nd.count[c0], std::uint16_t(rays[c0]), tc[c0]};
+                    const Entry e1{nd.child[c1], nd.count[c1], std::uint16_t(rays[c1]), tc[c1]};
+                    const bool firstNearer = e0.t < e1.t;
+                    stack[sp++] = firstNearer ? e1 : e0;
+                    next = firstNearer ? e0 : e1;
+                } else {
+                    const int base = sp;
+                    while (mask) {
+                        const int c = __builtin_ctz(unsigned(mask));
+                        mask &= mask - 1;
+                        const Entry e{nd.child[c], nd.count[c], std::uint16_t(rays[c]), tc[c]};
+                        int k = sp++;
+                        while (k > base && stack[k - 1].t < e.t) {
+                            stack[k] = stack[k - 1];
+                            --k;
+                        }
+                        stack[k] = e;
                     }
-                    order[k] = c;
+                    next = stack[--sp];
                 }
-                for (int k = 0; k + 1 < n; ++k) {
-                    const int c = order[k];
-                    stack[sp++] = {nd.child[c], nd.count[c], std::uint16_t(rays[c]), tc[c]};
-                }
-                const int next = order[n - 1];
-                if (nd.count[next] == 0) {
-                    cur = nd.child[next];
-                    curRays = rays[next];
+                if (next.count == 0) {
+                    cur = next.child;
+                    curRays = next.rays;
                     haveNext = true;
                 } else {
-                    visitLeaves(nd.child[next], nd.count[next], rays[next]);
+                    visitLeaves(next.child, next.count, next.rays);
                 }
             }
             if (haveNext) continue;
@@ -1619,11 +1719,20 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 for (std::size_t i = 0; i < b.unbounded_.size(); ++i)
                     offer(__builtin_ctz(m), *b.unbounded_[i], bvh_detail::kOther,
                           b.unboundedIndex_[i], nullptr);
-        if (walk)
-            walkPacket<false>(b, p, walk, tMax, [&](int j, std::uint32_t i, const RayData* r) {
-                offer(j, *b.order_[i], b.kind_[i], b.orderIndex_[i], r);
-                return true;
-            });
+        if (walk) {
+            // The walk's leaf visitor holds the arrays' pointers themselves: a lambda
+            // capturing by reference read each through the closure and then the variable,
+            // ~8 loads more at every exact test (issue 21, eleventh session, callgrind).
+            PacketNearest visit{b.order_.data(),
+                                b.kind_.data(),
+                                b.orderIndex_.data(),
+                                rays,
+                                tMin,
+                                tMax,
+                                hits,
+                                best};
+            walkPacket<false>(b, p, walk, tMax, visit);
+        }
         // Every lane at once, no loop over the packet's bits (a branch and ~8 instructions a
         // ray): the lanes outside the packet kept their cleared best (issue 21, eighth session).
         if constexpr (W == 8) {
@@ -1676,13 +1785,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
             blocked |= unsigned(occluded(b, rays[j], tMin[j], tMax[j], skipOf(j))) << j;
         }
         if (!packet) return blocked;
-        walkPacket<true>(b, p, packet, tMax, [&](int j, std::uint32_t i, const RayData* r) {
-            const Primitive* q = b.order_[i];
-            if (q == skipOf(j) || !exactOccluded(*q, b.kind_[i], r, rays[j], tMin[j], tMax[j]))
-                return true;
-            blocked |= 1u << j;
-            return false;
-        });
+        // As intersectPacket's PacketNearest: the arrays' pointers held, not captured.
+        PacketOccluded visit{b.order_.data(), b.kind_.data(), rays, tMin, tMax, skip, &blocked};
+        walkPacket<true>(b, p, packet, tMax, visit);
         return blocked;
     }
 
@@ -1744,6 +1849,41 @@ template <class L, bool Q> struct Bvh::WideWalk {
         tMax = hit.t;
     }
 
+    // intersectPacket's leaf visitor: intersect()'s offer (offerNearest) for ray j.
+    struct PacketNearest {
+        const Primitive* const* order;
+        const std::uint8_t* kind;
+        const std::uint32_t* orderIndex;
+        const Ray* rays;
+        const double* tMin;
+        double* tMax;
+        Hit* hits;
+        Best* best;
+        __attribute__((always_inline)) bool operator()(int j, std::uint32_t i,
+                                                       const RayData* r) const {
+            offerNearest(*order[i], kind[i], orderIndex[i], r, rays[j], tMin[j], tMax[j], hits[j],
+                         best[j]);
+            return true;
+        }
+    };
+    // occludedPacket's leaf visitor: occluded()'s test for ray j; false once it is blocked.
+    struct PacketOccluded {
+        const Primitive* const* order;
+        const std::uint8_t* kind;
+        const Ray* rays;
+        const double* tMin;
+        const double* tMax;
+        const Primitive* const* skip;
+        unsigned* blocked;
+        __attribute__((always_inline)) bool operator()(int j, std::uint32_t i,
+                                                       const RayData* r) const {
+            const Primitive* q = order[i];
+            if ((skip && q == skip[j]) || !exactOccluded(*q, kind[i], r, rays[j], tMin[j], tMax[j]))
+                return true;
+            *blocked |= 1u << j;
+            return false;
+        }
+    };
     // intersect()'s leaf visitor. Its state (the nearest so far, the limit) lives in its own
     // members rather than in references to the caller's locals: with a lambda capturing
     // them by reference GCC kept the closure in memory, stored ~10 pointers per ray and read
