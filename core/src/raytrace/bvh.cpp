@@ -786,12 +786,23 @@ constexpr std::size_t kPage = 4096;
 // triangles, about 450 MiB with each mapping's rounding to 2 MiB and its 2 MiB of room).
 // Tenth session: 128 mappings: those from kSmallKept on are kept too (jacks 5: ~13 a tree, and
 // the build table keeps three trees alive at once).
+// Eleventh session: 768 MiB (was 512), and a mapping freed when the cap is reached pushes out
+// the longest-kept ones instead of being unmapped itself. The build table's million-triangle
+// row frees 519 MiB a round (three trees and a build's scratch); with 512 one 10 MiB mapping
+// (order_'s) was unmapped every round and the next two-thread build mapped it afresh. On
+// this VM (Firecracker, free page reporting) fresh memory is backed by the host at its first
+// touch: a 2 MiB page took 0.3-24 ms to zero (a scratch loop: 64 MiB in 11-580 ms), and the
+// TBB worker zeroed order_'s pages inside buildSubtree for up to 75 ms of a ~200 ms build.
+// Mappings an earlier, other-sized build left (balls 6's before the million triangles) are
+// the ones pushed out.
 struct KeptMappings {
     static constexpr int kKept = 128;
-    static constexpr std::size_t kKeptBytes = std::size_t(512) << 20;
+    static constexpr std::size_t kKeptBytes = std::size_t(768) << 20;
     std::mutex lock;
     void* base[kKept] = {};
     std::size_t length[kKept] = {};
+    std::uint64_t stamp[kKept] = {}; // when kept: the smallest is pushed out first
+    std::uint64_t clock = 0;
     std::size_t bytes = 0;
     // A kept mapping of at least `need` bytes and at most twice that (so a small array
     // does not hold a large mapping), the smallest one; null if none.
@@ -809,18 +820,39 @@ struct KeptMappings {
         base[best] = nullptr;
         return p;
     }
-    // Keeps the mapping; false (the caller unmaps it) when the cap would be passed.
+    // Keeps the mapping, unmapping the longest-kept ones while the cap would be passed or
+    // no place is free; false (the caller unmaps it) when it alone passes the cap.
     bool keep(void* p, std::size_t len) {
-        std::lock_guard<std::mutex> g(lock);
-        if (bytes + len > kKeptBytes) return false;
-        for (int k = 0; k < kKept; ++k)
-            if (!base[k]) {
-                base[k] = p;
-                length[k] = len;
-                bytes += len;
-                return true;
+        if (len > kKeptBytes) return false;
+        void* out[kKept];
+        std::size_t outLength[kKept];
+        int nOut = 0;
+        {
+            std::lock_guard<std::mutex> g(lock);
+            auto freeSlot = [&] {
+                for (int k = 0; k < kKept; ++k)
+                    if (!base[k]) return k;
+                return -1;
+            };
+            int slot = freeSlot();
+            while (bytes + len > kKeptBytes || slot < 0) {
+                int oldest = -1;
+                for (int k = 0; k < kKept; ++k)
+                    if (base[k] && (oldest < 0 || stamp[k] < stamp[oldest])) oldest = k;
+                out[nOut] = base[oldest];
+                outLength[nOut++] = length[oldest];
+                bytes -= length[oldest];
+                base[oldest] = nullptr;
+                slot = freeSlot();
             }
-        return false;
+            base[slot] = p;
+            length[slot] = len;
+            stamp[slot] = ++clock;
+            bytes += len;
+        }
+        for (int k = 0; k < nOut; ++k)
+            munmap(out[k], outLength[k]);
+        return true;
     }
 };
 // Never destroyed (a build may run while the process exits); the mappings are not
