@@ -802,27 +802,37 @@ struct KeptMappings {
     void* base[kKept] = {};
     std::size_t length[kKept] = {};
     std::uint64_t stamp[kKept] = {}; // when kept: the smallest is pushed out first
+    std::size_t asked[kKept] = {};   // the largest array the mapping has held
     std::uint64_t clock = 0;
     std::size_t bytes = 0;
     // A kept mapping of at least `need` bytes and at most twice that (so a small array
-    // does not hold a large mapping), the smallest one; null if none.
-    void* take(std::size_t need, std::size_t& got) {
+    // does not hold a large mapping); of those, one that has held an array of `array`
+    // bytes or more, then the smallest; null if none. Eleventh session: a mapping an
+    // array of another size left (balls 6's leaf arrays of 2.4 MB in mappings of 6 MiB,
+    // taken for a million triangles' 4 MB ones) has pages no array has touched, and the
+    // next build faulted them in: 393-1,179 faults in the tasks step of the million-
+    // triangle row's second to fourth two-thread builds after balls 6 and jacks 5.
+    void* take(std::size_t need, std::size_t array, std::size_t& got, std::size_t& held) {
         std::lock_guard<std::mutex> g(lock);
         int best = -1;
-        for (int k = 0; k < kKept; ++k)
-            if (base[k] && length[k] >= need && length[k] / 2 <= need &&
-                (best < 0 || length[k] < length[best]))
+        for (int k = 0; k < kKept; ++k) {
+            if (!base[k] || length[k] < need || length[k] / 2 > need) continue;
+            const bool full = asked[k] >= array;
+            const bool bestFull = best >= 0 && asked[best] >= array;
+            if (best < 0 || full > bestFull || (full == bestFull && length[k] < length[best]))
                 best = k;
+        }
         if (best < 0) return nullptr;
         void* p = base[best];
         got = length[best];
+        held = asked[best];
         bytes -= got;
         base[best] = nullptr;
         return p;
     }
     // Keeps the mapping, unmapping the longest-kept ones while the cap would be passed or
     // no place is free; false (the caller unmaps it) when it alone passes the cap.
-    bool keep(void* p, std::size_t len) {
+    bool keep(void* p, std::size_t len, std::size_t held) {
         if (len > kKeptBytes) return false;
         void* out[kKept];
         std::size_t outLength[kKept];
@@ -847,6 +857,7 @@ struct KeptMappings {
             }
             base[slot] = p;
             length[slot] = len;
+            asked[slot] = held;
             stamp[slot] = ++clock;
             bytes += len;
         }
@@ -868,10 +879,10 @@ namespace bvh_detail {
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
-        // Room for the alignment and, just below the aligned start, the mapping's base
-        // and length (the mapping starts at least a 4 KiB page below it).
-        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0;
-        void* base = keptMappings().take(length, kept);
+        // Room for the alignment and, just below the aligned start, the mapping's base,
+        // length and largest array (the mapping starts at least a 4 KiB page below it).
+        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0, held = 0;
+        void* base = keptMappings().take(length, bytes, kept, held);
         const bool fresh = base == nullptr;
         if (!fresh) length = kept;
         if (fresh) {
@@ -885,15 +896,18 @@ void* bigAlloc(std::size_t bytes) {
         // at its first touch, so a tail in one (balls 5's 2.1 MB reference buffers: two
         // pages, 4 MiB zeroed each) cost more clearing than its faults save; the tail
         // takes 4 KiB pages, zeroed as touched (issue 21: clear_page was 8% in perf).
-        if (fresh) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        // A kept mapping has the hint over its largest array's whole pages so far.
+        if (bytes > held) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        held = std::max(held, bytes);
+        std::memcpy(p - 24, &held, sizeof held);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
     }
     if (bytes >= kMapFrom) {
         // 4 KiB pages; the base and length in the first page, the array from the second.
-        std::size_t length = (bytes + kPage - 1) / kPage * kPage + kPage, kept = 0;
-        void* base = keptMappings().take(length, kept);
+        std::size_t length = (bytes + kPage - 1) / kPage * kPage + kPage, kept = 0, held = 0;
+        void* base = keptMappings().take(length, bytes, kept, held);
         if (base) {
             length = kept;
         } else {
@@ -902,6 +916,8 @@ void* bigAlloc(std::size_t bytes) {
             if (base == MAP_FAILED) throw std::bad_alloc();
         }
         char* p = static_cast<char*>(base) + kPage;
+        held = std::max(held, bytes);
+        std::memcpy(p - 24, &held, sizeof held);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
@@ -917,10 +933,11 @@ void bigFree(void* p, std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kMapFrom) {
         void* base;
-        std::size_t length;
+        std::size_t length, held;
+        std::memcpy(&held, static_cast<char*>(p) - 24, sizeof held);
         std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
         std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
-        if (!keptMappings().keep(base, length)) munmap(base, length);
+        if (!keptMappings().keep(base, length, held)) munmap(base, length);
         return;
     }
 #endif
