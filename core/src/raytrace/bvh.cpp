@@ -786,41 +786,84 @@ constexpr std::size_t kPage = 4096;
 // triangles, about 450 MiB with each mapping's rounding to 2 MiB and its 2 MiB of room).
 // Tenth session: 128 mappings: those from kSmallKept on are kept too (jacks 5: ~13 a tree, and
 // the build table keeps three trees alive at once).
+// Eleventh session: 768 MiB (was 512), and a mapping freed when the cap is reached pushes out
+// the longest-kept ones instead of being unmapped itself. The build table's million-triangle
+// row frees 519 MiB a round (three trees and a build's scratch); with 512 one 10 MiB mapping
+// (order_'s) was unmapped every round and the next two-thread build mapped it afresh. On
+// this VM (Firecracker, free page reporting) fresh memory is backed by the host at its first
+// touch: a 2 MiB page took 0.3-24 ms to zero (a scratch loop: 64 MiB in 11-580 ms), and the
+// TBB worker zeroed order_'s pages inside buildSubtree for up to 75 ms of a ~200 ms build.
+// Mappings an earlier, other-sized build left (balls 6's before the million triangles) are
+// the ones pushed out.
 struct KeptMappings {
     static constexpr int kKept = 128;
-    static constexpr std::size_t kKeptBytes = std::size_t(512) << 20;
+    static constexpr std::size_t kKeptBytes = std::size_t(768) << 20;
     std::mutex lock;
     void* base[kKept] = {};
     std::size_t length[kKept] = {};
+    std::uint64_t stamp[kKept] = {}; // when kept: the smallest is pushed out first
+    std::size_t asked[kKept] = {};   // the largest array the mapping has held
+    std::uint64_t clock = 0;
     std::size_t bytes = 0;
     // A kept mapping of at least `need` bytes and at most twice that (so a small array
-    // does not hold a large mapping), the smallest one; null if none.
-    void* take(std::size_t need, std::size_t& got) {
+    // does not hold a large mapping); of those, one that has held an array of `array`
+    // bytes or more, then the smallest; null if none. Eleventh session: a mapping an
+    // array of another size left (balls 6's leaf arrays of 2.4 MB in mappings of 6 MiB,
+    // taken for a million triangles' 4 MB ones) has pages no array has touched, and the
+    // next build faulted them in: 393-1,179 faults in the tasks step of the million-
+    // triangle row's second to fourth two-thread builds after balls 6 and jacks 5.
+    void* take(std::size_t need, std::size_t array, std::size_t& got, std::size_t& held) {
         std::lock_guard<std::mutex> g(lock);
         int best = -1;
-        for (int k = 0; k < kKept; ++k)
-            if (base[k] && length[k] >= need && length[k] / 2 <= need &&
-                (best < 0 || length[k] < length[best]))
+        for (int k = 0; k < kKept; ++k) {
+            if (!base[k] || length[k] < need || length[k] / 2 > need) continue;
+            const bool full = asked[k] >= array;
+            const bool bestFull = best >= 0 && asked[best] >= array;
+            if (best < 0 || full > bestFull || (full == bestFull && length[k] < length[best]))
                 best = k;
+        }
         if (best < 0) return nullptr;
         void* p = base[best];
         got = length[best];
+        held = asked[best];
         bytes -= got;
         base[best] = nullptr;
         return p;
     }
-    // Keeps the mapping; false (the caller unmaps it) when the cap would be passed.
-    bool keep(void* p, std::size_t len) {
-        std::lock_guard<std::mutex> g(lock);
-        if (bytes + len > kKeptBytes) return false;
-        for (int k = 0; k < kKept; ++k)
-            if (!base[k]) {
-                base[k] = p;
-                length[k] = len;
-                bytes += len;
-                return true;
+    // Keeps the mapping, unmapping the longest-kept ones while the cap would be passed or
+    // no place is free; false (the caller unmaps it) when it alone passes the cap.
+    bool keep(void* p, std::size_t len, std::size_t held) {
+        if (len > kKeptBytes) return false;
+        void* out[kKept];
+        std::size_t outLength[kKept];
+        int nOut = 0;
+        {
+            std::lock_guard<std::mutex> g(lock);
+            auto freeSlot = [&] {
+                for (int k = 0; k < kKept; ++k)
+                    if (!base[k]) return k;
+                return -1;
+            };
+            int slot = freeSlot();
+            while (bytes + len > kKeptBytes || slot < 0) {
+                int oldest = -1;
+                for (int k = 0; k < kKept; ++k)
+                    if (base[k] && (oldest < 0 || stamp[k] < stamp[oldest])) oldest = k;
+                out[nOut] = base[oldest];
+                outLength[nOut++] = length[oldest];
+                bytes -= length[oldest];
+                base[oldest] = nullptr;
+                slot = freeSlot();
             }
-        return false;
+            base[slot] = p;
+            length[slot] = len;
+            asked[slot] = held;
+            stamp[slot] = ++clock;
+            bytes += len;
+        }
+        for (int k = 0; k < nOut; ++k)
+            munmap(out[k], outLength[k]);
+        return true;
     }
 };
 // Never destroyed (a build may run while the process exits); the mappings are not
@@ -836,10 +879,10 @@ namespace bvh_detail {
 void* bigAlloc(std::size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kHuge) {
-        // Room for the alignment and, just below the aligned start, the mapping's base
-        // and length (the mapping starts at least a 4 KiB page below it).
-        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0;
-        void* base = keptMappings().take(length, kept);
+        // Room for the alignment and, just below the aligned start, the mapping's base,
+        // length and largest array (the mapping starts at least a 4 KiB page below it).
+        std::size_t length = (bytes + kHuge - 1) / kHuge * kHuge + kHuge, kept = 0, held = 0;
+        void* base = keptMappings().take(length, bytes, kept, held);
         const bool fresh = base == nullptr;
         if (!fresh) length = kept;
         if (fresh) {
@@ -853,15 +896,18 @@ void* bigAlloc(std::size_t bytes) {
         // at its first touch, so a tail in one (balls 5's 2.1 MB reference buffers: two
         // pages, 4 MiB zeroed each) cost more clearing than its faults save; the tail
         // takes 4 KiB pages, zeroed as touched (issue 21: clear_page was 8% in perf).
-        if (fresh) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        // A kept mapping has the hint over its largest array's whole pages so far.
+        if (bytes > held) madvise(p, bytes / kHuge * kHuge, MADV_HUGEPAGE);
+        held = std::max(held, bytes);
+        std::memcpy(p - 24, &held, sizeof held);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
     }
     if (bytes >= kMapFrom) {
         // 4 KiB pages; the base and length in the first page, the array from the second.
-        std::size_t length = (bytes + kPage - 1) / kPage * kPage + kPage, kept = 0;
-        void* base = keptMappings().take(length, kept);
+        std::size_t length = (bytes + kPage - 1) / kPage * kPage + kPage, kept = 0, held = 0;
+        void* base = keptMappings().take(length, bytes, kept, held);
         if (base) {
             length = kept;
         } else {
@@ -870,6 +916,8 @@ void* bigAlloc(std::size_t bytes) {
             if (base == MAP_FAILED) throw std::bad_alloc();
         }
         char* p = static_cast<char*>(base) + kPage;
+        held = std::max(held, bytes);
+        std::memcpy(p - 24, &held, sizeof held);
         std::memcpy(p - 16, &base, sizeof base);
         std::memcpy(p - 8, &length, sizeof length);
         return p;
@@ -885,10 +933,11 @@ void bigFree(void* p, std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     if (bytes >= kMapFrom) {
         void* base;
-        std::size_t length;
+        std::size_t length, held;
+        std::memcpy(&held, static_cast<char*>(p) - 24, sizeof held);
         std::memcpy(&base, static_cast<char*>(p) - 16, sizeof base);
         std::memcpy(&length, static_cast<char*>(p) - 8, sizeof length);
-        if (!keptMappings().keep(base, length)) munmap(base, length);
+        if (!keptMappings().keep(base, length, held)) munmap(base, length);
         return;
     }
 #endif

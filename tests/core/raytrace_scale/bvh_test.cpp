@@ -468,6 +468,52 @@ TEST_CASE("rt_bvh: leaf arrays over 2 MiB (kept mappings) hold the next build's 
     }
 }
 
+TEST_CASE("rt_bvh: kept mappings: the one freed longest ago goes when the cap is reached",
+          "[raytrace][bvh]") {
+    // Issue 21 (eleventh session): bigAlloc keeps up to 768 MiB of freed mappings, and a
+    // mapping freed at the cap pushes out the longest-kept ones (it was itself unmapped, and
+    // the next build of that size mapped fresh memory). Three arrays of 300 MiB (each a
+    // mapping of 302 MiB with bigAlloc's rounding and room; never touched, so only address
+    // space): freed in the order a, b, c, the third passes the cap, so a goes and b and c
+    // are the next two arrays of that size. With the old rule (512 MiB, the newest refused)
+    // the next two were a and a fresh mapping. Linux only: elsewhere bigAlloc is malloc's.
+#if defined(__linux__)
+    constexpr std::size_t kBytes = std::size_t(300) << 20;
+    void* a = bvh_detail::bigAlloc(kBytes);
+    void* b = bvh_detail::bigAlloc(kBytes);
+    void* c = bvh_detail::bigAlloc(kBytes);
+    bvh_detail::bigFree(a, kBytes);
+    bvh_detail::bigFree(b, kBytes);
+    bvh_detail::bigFree(c, kBytes);
+    void* x = bvh_detail::bigAlloc(kBytes);
+    void* y = bvh_detail::bigAlloc(kBytes);
+    CHECK(x != a);
+    CHECK(y != a);
+    CHECK(std::set<void*>{x, y} == std::set<void*>{b, c});
+    bvh_detail::bigFree(x, kBytes);
+    bvh_detail::bigFree(y, kBytes);
+#endif
+}
+
+TEST_CASE("rt_bvh: kept mappings: an array gets one that has held an array as large",
+          "[raytrace][bvh]") {
+    // Issue 21 (eleventh session): a kept mapping that held a smaller array has pages no
+    // array touched, which the next array faults in; bigAlloc prefers one that has held an
+    // array at least as large. Both mappings here are 6 MiB (2.4 MB and 4 MB rounded up to
+    // 2 MiB pages, plus 2 MiB of room), the smaller array's freed first; with the old rule
+    // (the smallest mapping, the first kept of equal ones) the 4 MB array got that one.
+#if defined(__linux__)
+    constexpr std::size_t kSmall = 2400000, kLarge = 4000000;
+    void* small = bvh_detail::bigAlloc(kSmall);
+    void* large = bvh_detail::bigAlloc(kLarge);
+    bvh_detail::bigFree(small, kSmall);
+    bvh_detail::bigFree(large, kLarge);
+    void* again = bvh_detail::bigAlloc(kLarge);
+    CHECK(again == large);
+    bvh_detail::bigFree(again, kLarge);
+#endif
+}
+
 TEST_CASE("rt_bvh: 70,000 coincident centroids (blocked node, object median) stay shallow",
           "[raytrace][bvh]") {
     Scene s;
