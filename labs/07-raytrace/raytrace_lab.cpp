@@ -269,10 +269,12 @@ class RaytraceLab : public Lab {
     void draw(const View& view) override;
     void gui() override;
     // The scene's background (what a ray that misses returns): the band a tall window leaves
-    // above the traced image continues the sky, as the raster view's clear does.
+    // above the traced image continues the sky, as the raster view's clear does. Under the
+    // heat map the band is black, the map's "no difference": the sky there read as part of
+    // the map, half of it at 1024x768.
     void background(float& r, float& g, float& b) const override {
         r = g = b = 0.0f;
-        if (!scene_.scene || ex_.on()) return;
+        if (!scene_.scene || ex_.on() || heatMapShown_) return;
         r = float(scene_.scene->background.x);
         g = float(scene_.scene->background.y);
         b = float(scene_.scene->background.z);
@@ -487,6 +489,7 @@ class RaytraceLab : public Lab {
 
     // Difference.
     bool diffValid_ = false;
+    bool heatMapShown_ = false; // the last frame drew the heat map (background() reads it)
     ImageDiff diff_;
     Image diffImage_;
     uint64_t diffVersion_ = 0;
@@ -768,6 +771,7 @@ void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
 
 void RaytraceLab::draw(const View& view) {
     lastView_ = view;
+    heatMapShown_ = false;
     ex_.poll(!view.headless);
     if (ex_.on()) { // your intersection, normal, lighting and reflection (exercise_view.cpp)
         glViewport(0, 0, view.width, view.height);
@@ -856,7 +860,8 @@ void RaytraceLab::draw(const View& view) {
         job_.fetch(traceImage_, traceVersion_);
         const TraceStatus st = job_.status();
         if (st.finished) lastTraceSeconds_ = st.seconds;
-        if (s.showDiff && st.finished && traceImage_.width == tc.width) {
+        heatMapShown_ = s.showDiff && st.finished && traceImage_.width == tc.width;
+        if (heatMapShown_) {
             if (!diffValid_ || diffVersion_ != traceVersion_) {
                 // Raster pixels at the trace's resolution (every divisor-th pixel centre).
                 const Image raster = readFramebuffer(view.width, view.height);
