@@ -156,22 +156,32 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 }
                 continue;
             }
-            // Eye rays of up to kMaxPacket neighbouring pixels of the row share one walk;
-            // each is then shaded from its hit as trace() would (the same colour), their
-            // feelers to each light through one shadow cache along the row (the last
+            // Eye rays of up to kMaxPacket neighbouring pixels share one walk; each is then
+            // shaded from its hit as trace() would (the same colour), their feelers to each
+            // light through one shadow cache along the two rows (the last
             // opaque blocker: Tracer::traceFrom), their direct light in lanes
             // (Tracer::traceFromPacket).
             std::fill(lastBlockers.begin(), lastBlockers.end(), nullptr);
-            for (int x = x0; x < x1; x += kMaxPacket) {
-                const int n = std::min(kMaxPacket, x1 - x);
+            // A packet is two rows of kMaxPacket / 2 rays (one row on a tile's odd last row):
+            // the 4×2 pixels' rays and their hits' feelers are closer together than a row
+            // of 8, so the packet walks visit fewer nodes (balls 4's eye level, 512², avx8:
+            // 693.1 -> 679.5 M instructions, the feeler walk 177.5 -> 164.5 M).
+            const int rows = y + 1 < y1 ? 2 : 1;
+            const int wide = kMaxPacket / rows;
+            for (int x = x0; x < x1; x += wide) {
+                const int w = std::min(wide, x1 - x);
+                const int n = w * rows;
                 Ray rays[kMaxPacket];
                 Hit hits[kMaxPacket];
                 double tMin[kMaxPacket], tMax[kMaxPacket];
-                if (opt.cornerRays) lookAt->rowRays(x, y, n, width, height, rays);
-                for (int j = 0; j < n; ++j) {
-                    if (!opt.cornerRays) rays[j] = camera.primaryRay(x + j, y, width, height);
-                    tMin[j] = 0.0;
-                    tMax[j] = std::numeric_limits<double>::infinity();
+                for (int r = 0; r < rows; ++r) {
+                    if (opt.cornerRays) lookAt->rowRays(x, y + r, w, width, height, rays + r * w);
+                    for (int j = 0; j < w; ++j) {
+                        if (!opt.cornerRays)
+                            rays[r * w + j] = camera.primaryRay(x + j, y + r, width, height);
+                        tMin[r * w + j] = 0.0;
+                        tMax[r * w + j] = std::numeric_limits<double>::infinity();
+                    }
                 }
                 const unsigned found = agg.intersectPacket(rays, tMin, tMax, hits, (1u << n) - 1);
                 for (int j = 0; j < n; ++j)
@@ -179,8 +189,9 @@ Image renderParallel(const Scene& scene, const Camera& camera, const ShadingMode
                 Color colours[kMaxPacket];
                 tracer.traceFromPacket(rays, hits, n, counts, lastBlockers.data(), colours);
                 for (int j = 0; j < n; ++j)
-                    store(x + j, y, colours[j]);
+                    store(x + j % w, y + j / w, colours[j]);
             }
+            y += rows - 1;
         }
         // The pixels whose four corners are all this tile's, at once (in parallel, and
         // while they are in the cache); those on the tile's last corner row or column

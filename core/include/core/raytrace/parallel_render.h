@@ -30,7 +30,7 @@ struct ParallelRenderOptions {
     // each pixel centre (camera.primaryRay).
     bool cornerRays = false;
     TraceSettings trace; // depth limit, weight cut-off
-    // Eye rays in packets of 8 neighbouring pixels of a row, one walk per packet
+    // Eye rays in packets of 4×2 neighbouring pixels (two rows of 4), one walk per packet
     // (Aggregate::intersectPacket; issue 21); the same picture as one by one (false).
     bool packets = true;
     // Called after each finished tile, from a worker thread, serialised by a mutex.
