@@ -433,7 +433,7 @@ struct Builder {
     // read of prims, barely faster with two threads than with one).
     const Primitive** leafPrim = nullptr;
     const std::unique_ptr<Primitive>* prims = nullptr;
-    bool parallel = false;          // blocks and subtrees as TBB tasks
+    bool parallel = false; // blocks and subtrees as TBB tasks
     // Wide trees (issue 21): the collapse makes every subtree of at most 4 primitives
     // (8 when all are exactly Sphere) one wide leaf whatever its inner splits
     // (Bvh::collapseInto, mergedCount), so the build stops there: such a node becomes a
@@ -886,7 +886,8 @@ void* bigAlloc(std::size_t bytes) {
         const bool fresh = base == nullptr;
         if (!fresh) length = kept;
         if (fresh) {
-            base = mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            base =
+                mmap(nullptr, length, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             if (base == MAP_FAILED) throw std::bad_alloc();
         }
         const auto start =
@@ -1015,7 +1016,7 @@ void buildSubtree(const Builder& b, const Task& t, BuildNode* nodes, std::uint32
 //    them into the final one (the stitch: balls 5 0.28 ms at two threads, with its
 //    allocations, part of the two-thread build's serial time); now nothing is copied.
 struct TopTally {
-    Tally own;                          // split: this node only; else the subtree's
+    Tally own; // split: this node only; else the subtree's
     std::unique_ptr<TopTally> left, right;
     void sumInto(Tally& total) const {
         total.maxDepth = std::max(total.maxDepth, own.maxDepth);
@@ -1479,7 +1480,8 @@ bool Bvh::intersect(const Ray& ray, double tMin, double tMax, Hit& hit) const {
             return true;
         });
         return found;
-    }();
+    }
+    ();
 }
 
 void Bvh::forEachHit(const Ray& ray, double tMin, double tMax,
@@ -1521,7 +1523,8 @@ bool Bvh::occluded(const Ray& ray, double tMin, double tMax, const Primitive* sk
             return !any;
         });
         return any;
-    }();
+    }
+    ();
 }
 
 int Bvh::packetWidth() const {
@@ -1540,7 +1543,8 @@ unsigned Bvh::intersectPacket(const Ray* rays, const double* tMin, const double*
     unsigned found = 0;
     for (int k = 0; k < kMaxPacket; k += w)
         if (const unsigned part = (lanes >> k) & ((1u << w) - 1))
-            found |= path_->intersectPacket(*this, rays + k, tMin + k, tMax + k, hits + k, part) << k;
+            found |= path_->intersectPacket(*this, rays + k, tMin + k, tMax + k, hits + k, part)
+                     << k;
     return found;
 }
 

@@ -73,8 +73,7 @@ class Tokens {
     double number(const char* what, int cmdLine) {
         std::string tok;
         int line;
-        if (!next(tok, line))
-            fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
+        if (!next(tok, line)) fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
         const char* s = tok.c_str();
         char* end = nullptr;
         errno = 0;
@@ -83,7 +82,8 @@ class Tokens {
         if (end == s || end != s + tok.size())
             unexpected(tok, line, trf("a number (%s)", tr(what)));
         if (std::isnan(v) || (std::isinf(v) && errno != ERANGE))
-            fail(line, trf("non-finite number '%s' for %s", escapeForMessage(tok).c_str(), tr(what)));
+            fail(line,
+                 trf("non-finite number '%s' for %s", escapeForMessage(tok).c_str(), tr(what)));
         if (std::isinf(v))
             fail(line, trf("number '%s' for %s is beyond the range of a double",
                            escapeForMessage(tok).c_str(), tr(what)));
@@ -124,8 +124,7 @@ class Tokens {
     long long integer(const char* what, int cmdLine) {
         std::string tok;
         int line;
-        if (!next(tok, line))
-            fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
+        if (!next(tok, line)) fail(cmdLine, trf("unexpected end of file, expected %s", tr(what)));
         const char* s = tok.c_str();
         char* end = nullptr;
         errno = 0;
@@ -133,7 +132,8 @@ class Tokens {
         if (end == s || end != s + tok.size())
             unexpected(tok, line, trf("an integer (%s)", tr(what)));
         if (errno == ERANGE)
-            fail(line, trf("integer '%s' (%s) out of range", escapeForMessage(tok).c_str(), tr(what)));
+            fail(line,
+                 trf("integer '%s' (%s) out of range", escapeForMessage(tok).c_str(), tr(what)));
         return v;
     }
     const std::string& name() const { return name_; }

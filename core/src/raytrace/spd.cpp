@@ -641,7 +641,9 @@ NffDocument spdTeapot(int sf) {
                 if ((i + j) % 2 != colour) continue;
                 const double x0 = -half + i * cell, y0 = -half + j * cell;
                 polygon(doc,
-                        {{x0, y0, 0.0}, {x0 + cell, y0, 0.0}, {x0 + cell, y0 + cell, 0.0},
+                        {{x0, y0, 0.0},
+                         {x0 + cell, y0, 0.0},
+                         {x0 + cell, y0 + cell, 0.0},
                          {x0, y0 + cell, 0.0}},
                         colour == 0 ? red : white);
             }
@@ -662,7 +664,8 @@ NffDocument spdTeapot(int sf) {
 }
 
 std::vector<std::string> spdSceneNames() {
-    return {"balls", "jacks", "gears", "tetra", "rings", "lattice", "shells", "tree", "mount", "teapot"};
+    return {"balls",   "jacks",  "gears", "tetra", "rings",
+            "lattice", "shells", "tree",  "mount", "teapot"};
 }
 
 NffDocument spdScene(const std::string& name, int sf) {

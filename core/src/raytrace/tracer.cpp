@@ -47,16 +47,19 @@ double Tracer::feelerTransmittance(const glm::dvec3& origin, const glm::dvec3& d
     // Only the blockers' materials matter: no hit records (Primitive::occluded). A flat
     // primitive cannot shadow its own point: the aggregate never asks it (issue 21; the
     // visitor skipped it before, after its exact test had run: the same answers).
-    scene_.aggregate().forEachBlocker(feeler, tMin, dist, [&walk](const Primitive& p) {
-        const double kt = walk.materials[size_t(p.material)].kt;
-        if (kt < walk.opaqueKt) {
-            walk.k = 0.0; // an opaque blocker: no need to look further
-            walk.opaque = &p;
-            return false;
-        }
-        walk.k *= kt;
-        return true;
-    }, self);
+    scene_.aggregate().forEachBlocker(
+        feeler, tMin, dist,
+        [&walk](const Primitive& p) {
+            const double kt = walk.materials[size_t(p.material)].kt;
+            if (kt < walk.opaqueKt) {
+                walk.k = 0.0; // an opaque blocker: no need to look further
+                walk.opaque = &p;
+                return false;
+            }
+            walk.k *= kt;
+            return true;
+        },
+        self);
     if (blocker) *blocker = walk.opaque;
     return walk.k;
 }

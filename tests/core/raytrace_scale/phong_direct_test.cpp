@@ -299,9 +299,9 @@ TEST_CASE("rt_phong: toRgb8 rounds as lround(clamp(c)·255)", "[raytrace][phong]
 // (emission, exponents clamped to 0..128, ka/kd/ks 0 and random), point lights with and
 // without attenuation (a denominator of exactly 1, of 0, random), shadowed and lit
 // samples, normals facing away, random lane masks (a lane outside the mask is neither
-// read nor written), packets whose lanes share one material; and the degenerate lanes: the light at the hit point (d = 0), the
-// viewer at the hit point (no eye direction), the light exactly behind the viewer (a zero
-// half vector), huge and tiny scales.
+// read nor written), packets whose lanes share one material; and the degenerate lanes: the light at
+// the hit point (d = 0), the viewer at the hit point (no eye direction), the light exactly behind
+// the viewer (a zero half vector), huge and tiny scales.
 TEST_CASE("rt_phong: directLanes equals direct() lane by lane, bit for bit", "[raytrace][phong]") {
     std::mt19937_64 g(21);
     std::uniform_real_distribution<double> u(0, 1);

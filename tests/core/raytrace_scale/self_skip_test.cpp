@@ -217,8 +217,7 @@ TEST_CASE("shadow self-skip: the same pictures as the visitor-side filter", "[bv
         INFO(name);
         SceneFile sf = toScene(spdScene(name, 1));
         auto bvh = makeAggregate(*sf.scene);
-        const Aggregate& base = bvh ? static_cast<const Aggregate&>(*bvh)
-                                    : sf.scene->aggregate();
+        const Aggregate& base = bvh ? static_cast<const Aggregate&>(*bvh) : sf.scene->aggregate();
         IgnoresSkip old(base);
         PhongModel model;
         ParallelRenderOptions opt;

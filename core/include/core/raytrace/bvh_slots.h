@@ -13,7 +13,8 @@ namespace wb::rt {
 
 namespace detail {
 template <class Node, class A>
-void wideSlots(const std::vector<Node, A>& nodes, std::uint32_t i, std::vector<std::uint64_t>& out) {
+void wideSlots(const std::vector<Node, A>& nodes, std::uint32_t i,
+               std::vector<std::uint64_t>& out) {
     constexpr int W = sizeof(Node{}.child) / sizeof(std::uint32_t);
     const Node& n = nodes[i];
     for (int c = 0; c < W; ++c) {

@@ -21,9 +21,9 @@ class PhongModel : public ShadingModel {
     // has AVX, else two at a time in SSE2's (`width`): for each lane j of `lanes`, out[j]
     // is direct(scene, views[j], hits[j], its material, the material's colour, samples)
     // bit for bit — the same IEEE operations in the same order (no FMA: the library is
-    // built for baseline x86-64 and the AVX code enables AVX alone), std::pow per lane. The samples are given
-    // by their transmittances alone, transmittance[li * kMaxPacket + j] for scene light li;
-    // every scene light must be a point light without a spot cone and no hit's material
+    // built for baseline x86-64 and the AVX code enables AVX alone), std::pow per lane. The samples
+    // are given by their transmittances alone, transmittance[li * kMaxPacket + j] for scene light
+    // li; every scene light must be a point light without a spot cone and no hit's material
     // textured (lanesApply() says whether a scene qualifies). Other lanes are not read.
     // Static (the model has no state): a call through a PhongModel reference in the tracer
     // made UBSan's vptr check refer to this class's type info (see isExactly).

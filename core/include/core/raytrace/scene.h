@@ -37,9 +37,8 @@ class Aggregate {
     virtual void forEachBlocker(const Ray& ray, double tMin, double tMax,
                                 const std::function<bool(const Primitive&)>& visit,
                                 const Primitive* skip = nullptr) const {
-        forEachHit(ray, tMin, tMax, [&](const Hit& h) {
-            return h.primitive == skip || visit(*h.primitive);
-        });
+        forEachHit(ray, tMin, tMax,
+                   [&](const Hit& h) { return h.primitive == skip || visit(*h.primitive); });
     }
     // Nearest hits of up to kMaxPacket rays at once (issue 21: coherent rays, e.g. a row
     // of eye rays, share one walk in a Bvh): for each bit j of `lanes`, hits[j] and bit j
