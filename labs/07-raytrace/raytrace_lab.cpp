@@ -271,10 +271,14 @@ class RaytraceLab : public Lab {
     // The scene's background (what a ray that misses returns): the band a tall window leaves
     // above the traced image continues the sky, as the raster view's clear does. Under the
     // heat map the band is black, the map's "no difference": the sky there read as part of
-    // the map, half of it at 1024x768.
+    // the map, half of it at 1024x768. Asked before draw(), so it reads the trace's state,
+    // not what the last frame drew (a heat map drawn first in a frame with nothing after it
+    // kept a sky band). A trace that ends between here and draw() leaves busy() mid-frame:
+    // the shell then draws one more frame.
     void background(float& r, float& g, float& b) const override {
         r = g = b = 0.0f;
-        if (!scene_.scene || ex_.on() || heatMapShown_) return;
+        if (!scene_.scene || ex_.on()) return;
+        if (s.showDiff && s.traced && traceStarted_ && job_.status().finished) return;
         r = float(scene_.scene->background.x);
         g = float(scene_.scene->background.y);
         b = float(scene_.scene->background.z);
@@ -489,7 +493,6 @@ class RaytraceLab : public Lab {
 
     // Difference.
     bool diffValid_ = false;
-    bool heatMapShown_ = false; // the last frame drew the heat map (background() reads it)
     ImageDiff diff_;
     Image diffImage_;
     uint64_t diffVersion_ = 0;
@@ -771,7 +774,6 @@ void RaytraceLab::drawImage(const Image& rgba, int w, int h, bool blend) {
 
 void RaytraceLab::draw(const View& view) {
     lastView_ = view;
-    heatMapShown_ = false;
     ex_.poll(!view.headless);
     if (ex_.on()) { // your intersection, normal, lighting and reflection (exercise_view.cpp)
         glViewport(0, 0, view.width, view.height);
@@ -860,8 +862,7 @@ void RaytraceLab::draw(const View& view) {
         job_.fetch(traceImage_, traceVersion_);
         const TraceStatus st = job_.status();
         if (st.finished) lastTraceSeconds_ = st.seconds;
-        heatMapShown_ = s.showDiff && st.finished && traceImage_.width == tc.width;
-        if (heatMapShown_) {
+        if (s.showDiff && st.finished && traceImage_.width == tc.width) {
             if (!diffValid_ || diffVersion_ != traceVersion_) {
                 // Raster pixels at the trace's resolution (every divisor-th pixel centre).
                 const Image raster = readFramebuffer(view.width, view.height);
