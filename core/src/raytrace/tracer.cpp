@@ -431,16 +431,29 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         const V2 d = V2{load(ox), load(oy), load(oz)} - V2{load(px), load(py), load(pz)};
         _mm_store_pd(&eps[i], sqrtOf(dot(d, d)).v);
     }
-    const Primitive* self[kMaxPacket]; // feelerBase's: the hit's primitive when flat
-    glm::dvec3 selfF[kMaxPacket];      // feelerBase's f and c for the lanes in `curved`
-    double selfC[kMaxPacket];
-    unsigned curved = 0;
+    // feelerBase's per lane: the hit's primitive, `flat` its lanes that are planar, `curved`
+    // those whose feelerSelfTerms gave f and c (0 in the other lanes once there is one:
+    // numbers; a packet without one, as the mesh's, does not clear them).
+    const Primitive* prim[kMaxPacket];
+    alignas(16) double fx[kMaxPacket], fy[kMaxPacket], fz[kMaxPacket], selfC[kMaxPacket];
+    unsigned flat = 0, curved = 0;
     for (unsigned m = lanes; m; m &= m - 1) {
         const int j = __builtin_ctz(m);
         ++counts.primary;
-        const Primitive* p = hits[j].primitive;
-        self[j] = p->planar() ? p : nullptr;
-        if (!self[j] && p->feelerSelfTerms(hits[j].point, selfF[j], selfC[j])) curved |= 1u << j;
+        const Primitive* p = prim[j] = hits[j].primitive;
+        glm::dvec3 f;
+        double c;
+        if (p->planar()) {
+            flat |= 1u << j;
+        } else if (p->feelerSelfTerms(hits[j].point, f, c)) {
+            if (!curved)
+                for (double* a : {fx, fy, fz, selfC}) std::fill(a, a + kMaxPacket, 0.0);
+            curved |= 1u << j;
+            selfC[j] = c;
+            fx[j] = f.x;
+            fy[j] = f.y;
+            fz[j] = f.z;
+        }
     }
     // sampleLightsFrom's samples, light by light (each light's feelers in row order, as
     // its shadow cache entry sees them from traceFrom): the unit vector to the point light,
@@ -478,17 +491,25 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             _mm_store_pd(&dz[i], toLight.z.v);
         }
         ask &= lanes;
+        // The feelers that skip their own primitive: flat, or sphereCannotBlock (two lanes at
+        // a time: glm::dot's order, the same IEEE operations, the same bits).
+        unsigned own = flat;
+        for (int i = 0; (ask & curved) && i < kMaxPacket; i += 2) {
+            if (!(((ask & curved) >> i) & 3u)) continue;
+            const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
+            const D2 h = dot(V2{load(fx), load(fy), load(fz)}, V2{load(dx), load(dy), load(dz)});
+            const __m128d can =
+                _mm_and_pd(_mm_cmpgt_pd(h.v, _mm_setzero_pd()),
+                           _mm_cmple_pd((splat(2) * -load(selfC)).v, (load(t0) * h).v));
+            own |= (unsigned(_mm_movemask_pd(can)) << i) & curved;
+        }
         if (!feelerPacket) {
             const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
             for (unsigned m = ask; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
                 ++counts.shadow;
-                const glm::dvec3 d(dx[j], dy[j], dz[j]);
-                const Primitive* own = self[j] || ((curved >> j) & 1u &&
-                                                   sphereCannotBlock(selfF[j], selfC[j], d, t0[j]))
-                                           ? hits[j].primitive
-                                           : nullptr;
-                tr[j] = cachedFeeler(hits[j].point, d, t0[j], dist[j], own, entry);
+                tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
+                                     (own >> j) & 1u ? prim[j] : nullptr, entry);
             }
             continue;
         }
@@ -502,10 +523,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const int j = __builtin_ctz(m);
             ++counts.shadow;
             feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
-            skip[j] = self[j] || ((curved >> j) & 1u && sphereCannotBlock(selfF[j], selfC[j],
-                                                                         feelers[j].direction, t0[j]))
-                          ? hits[j].primitive
-                          : nullptr;
+            skip[j] = (own >> j) & 1u ? prim[j] : nullptr;
         }
         const unsigned blocked = aggregate.occludedPacket(feelers, t0, dist, skip, ask);
         for (unsigned m = blocked; m; m &= m - 1)
