@@ -447,7 +447,8 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             flat |= 1u << j;
         } else if (p->feelerSelfTerms(hits[j].point, f, c)) {
             if (!curved)
-                for (double* a : {fx, fy, fz, selfC}) std::fill(a, a + kMaxPacket, 0.0);
+                for (double* a : {fx, fy, fz, selfC})
+                    std::fill(a, a + kMaxPacket, 0.0);
             curved |= 1u << j;
             selfC[j] = c;
             fx[j] = f.x;

@@ -256,8 +256,8 @@ TEST_CASE("shadow self-skip: a sphere's feeler skips it only where its exact tes
     for (int k = 0; k < 1200; ++k) {
         Ray eye;
         eye.origin = {0.25 + 3 * u(g), -0.5 + 3 * u(g), 6};
-        eye.direction = glm::normalize(glm::dvec3(0.25, -0.5, 0.125) + 0.6 * rnd3(g, -1, 1) -
-                                       eye.origin);
+        eye.direction =
+            glm::normalize(glm::dvec3(0.25, -0.5, 0.125) + 0.6 * rnd3(g, -1, 1) - eye.origin);
         Hit h;
         if (!sc.intersect(eye, 0.0, kInf, h) || h.primitive != sc.primitives[0].get()) continue;
         // A tangent direction, tilted off the surface by cos.
