@@ -106,6 +106,15 @@ bool Sphere::occluded(const Ray& ray, double tMin, double tMax) const {
     return nearest<false>(centre, radius, ray, tMin, tMax, t, n);
 }
 
+bool Sphere::feelerSelfTerms(const glm::dvec3& point, glm::dvec3& f, double& c) const {
+    // nearest's expressions for ray.origin = point, in the same order (this file is built
+    // without FMA contraction, as nearest is: the same bits).
+    f = point - centre;
+    const double fl = len(f);
+    c = (fl - radius) * (fl + radius);
+    return true;
+}
+
 Aabb Sphere::bounds() const {
     return Aabb{centre - glm::dvec3(radius), centre + glm::dvec3(radius)};
 }

@@ -75,10 +75,41 @@ double feelerStartAt(double eps, const glm::dvec3& n, const glm::dvec3& dir) {
 struct FeelerBase {
     double eps;            // |offsetOrigin − point|, feelerStartAt's eps
     const Primitive* self; // the hit's primitive when flat (a feeler cannot meet it again)
+    bool curved = false;   // else: the hit's Primitive::feelerSelfTerms gave f and c
+    glm::dvec3 f{};
+    double c = 0;
 };
 FeelerBase feelerBase(const Hit& hit, const glm::dvec3& offsetOrigin) {
-    return {glm::length(offsetOrigin - hit.point),
-            hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr};
+    FeelerBase b{glm::length(offsetOrigin - hit.point),
+                 hit.primitive && hit.primitive->planar() ? hit.primitive : nullptr};
+    if (hit.primitive && !b.self) b.curved = hit.primitive->feelerSelfTerms(hit.point, b.f, b.c);
+    return b;
+}
+
+// True only if the sphere's own exact test (Sphere::occluded, sphere.cpp's nearest) of the
+// feeler from the hit point (f = point − centre and c = |f|² − r² from feelerSelfTerms,
+// the bits nearest computes) along unit `dir` on (t0, dist], t0 > 0, answers "no": then the
+// walk need not ask it (issue 21, twelfth session; rtframe7 skipped it unconditionally,
+// which a grazing feeler from a point rounded to just inside the sphere breaks: its exit
+// root ≈ −(|f| − r)/cos can pass t0 = eps / max(cos, 1e-3) once cos < ~1e-3·|f − r|/eps).
+// Proof, with h = f·dir computed as nearest does (glm::dot on the same bits; this file
+// and sphere.cpp are built without FMA contraction), A = |c|, u = 2^-53:
+//  - nearest returns false for disc < 0 or non-finite h or c; else, h > 0 makes
+//    q = −fl(h + √disc) ≤ −h < 0 (rounding is monotone and h representable), so the
+//    root q is < 0 < t0, and the other root is fl(c / q).
+//  - c ≥ 0: c / q ≤ 0 < t0. No hit.
+//  - c < 0: the test below, fl(2A) ≤ fl(t0·h), gives A ≤ t0·h: if 2A is finite it is
+//    exact, and fl(t0·h) ≤ t0·h·(1 + u) + 2^-1075 (underflow) with A ≥ 2^-1074, so
+//    2A ≤ t0·h·(1 + u) + A/2, A ≤ (2/3)(1 + u)·t0·h; if 2A overflows, fl(t0·h) = inf,
+//    t0·h ≥ DBL_MAX ≥ A. Then A / |q| ≤ A / h ≤ t0, its rounding too (t0 is a double):
+//    the root is not > t0. No hit.
+// The typical feeler: cos ≥ 1e-3, h ≈ r·cos, A ≈ 2r·|ε| with ε the refined point's
+// distance from the surface (a few ULPs), t0·h ≈ eps·r with eps ~ 2^20 ULPs: true with
+// a margin of ~10^5. Grazing or inward feelers (h ≤ 0: the inside of a sphere, a light
+// behind the tangent plane) fail it and keep the exact test.
+inline bool sphereCannotBlock(const glm::dvec3& f, double c, const glm::dvec3& dir, double t0) {
+    const double h = glm::dot(f, dir);
+    return h > 0 && 2 * -c <= t0 * h;
 }
 } // namespace
 
@@ -124,7 +155,8 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
                               const Primitive** lastBlockers) const {
     out.clear();
     out.reserve(scene_.lights.size());
-    const auto [eps, self] = feelerBase(hit, offsetOrigin);
+    const FeelerBase base = feelerBase(hit, offsetOrigin);
+    const double eps = base.eps;
     for (std::size_t li = 0; li < scene_.lights.size(); ++li) {
         const Light& l = scene_.lights[li];
         LightSample s;
@@ -146,6 +178,10 @@ void Tracer::sampleLightsFrom(const Hit& hit, const glm::dvec3& offsetOrigin,
             const double t0 = feelerStartAt(eps, hit.normal, s.toLight);
             if (t0 < s.distance) {
                 ++counts.shadow;
+                const Primitive* self =
+                    base.self || (base.curved && sphereCannotBlock(base.f, base.c, s.toLight, t0))
+                        ? hit.primitive
+                        : nullptr;
                 s.transmittance = cachedFeeler(hit.point, s.toLight, t0, s.distance, self,
                                                lastBlockers ? &lastBlockers[li] : nullptr);
             } else {
@@ -395,11 +431,30 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         const V2 d = V2{load(ox), load(oy), load(oz)} - V2{load(px), load(py), load(pz)};
         _mm_store_pd(&eps[i], sqrtOf(dot(d, d)).v);
     }
-    const Primitive* self[kMaxPacket]; // feelerBase's: the hit's primitive when flat
+    // feelerBase's per lane: the hit's primitive, `flat` its lanes that are planar, `curved`
+    // those whose feelerSelfTerms gave f and c (0 in the other lanes once there is one:
+    // numbers; a packet without one, as the mesh's, does not clear them).
+    const Primitive* prim[kMaxPacket];
+    alignas(16) double fx[kMaxPacket], fy[kMaxPacket], fz[kMaxPacket], selfC[kMaxPacket];
+    unsigned flat = 0, curved = 0;
     for (unsigned m = lanes; m; m &= m - 1) {
         const int j = __builtin_ctz(m);
         ++counts.primary;
-        self[j] = hits[j].primitive->planar() ? hits[j].primitive : nullptr;
+        const Primitive* p = prim[j] = hits[j].primitive;
+        glm::dvec3 f;
+        double c;
+        if (p->planar()) {
+            flat |= 1u << j;
+        } else if (p->feelerSelfTerms(hits[j].point, f, c)) {
+            if (!curved)
+                for (double* a : {fx, fy, fz, selfC})
+                    std::fill(a, a + kMaxPacket, 0.0);
+            curved |= 1u << j;
+            selfC[j] = c;
+            fx[j] = f.x;
+            fy[j] = f.y;
+            fz[j] = f.z;
+        }
     }
     // sampleLightsFrom's samples, light by light (each light's feelers in row order, as
     // its shadow cache entry sees them from traceFrom): the unit vector to the point light,
@@ -437,13 +492,25 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             _mm_store_pd(&dz[i], toLight.z.v);
         }
         ask &= lanes;
+        // The feelers that skip their own primitive: flat, or sphereCannotBlock (two lanes at
+        // a time: glm::dot's order, the same IEEE operations, the same bits).
+        unsigned own = flat;
+        for (int i = 0; (ask & curved) && i < kMaxPacket; i += 2) {
+            if (!(((ask & curved) >> i) & 3u)) continue;
+            const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
+            const D2 h = dot(V2{load(fx), load(fy), load(fz)}, V2{load(dx), load(dy), load(dz)});
+            const __m128d can =
+                _mm_and_pd(_mm_cmpgt_pd(h.v, _mm_setzero_pd()),
+                           _mm_cmple_pd((splat(2) * -load(selfC)).v, (load(t0) * h).v));
+            own |= (unsigned(_mm_movemask_pd(can)) << i) & curved;
+        }
         if (!feelerPacket) {
             const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
             for (unsigned m = ask; m; m &= m - 1) {
                 const int j = __builtin_ctz(m);
                 ++counts.shadow;
                 tr[j] = cachedFeeler(hits[j].point, glm::dvec3(dx[j], dy[j], dz[j]), t0[j], dist[j],
-                                     self[j], entry);
+                                     (own >> j) & 1u ? prim[j] : nullptr, entry);
             }
             continue;
         }
@@ -457,7 +524,7 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
             const int j = __builtin_ctz(m);
             ++counts.shadow;
             feelers[j].direction = glm::dvec3(dx[j], dy[j], dz[j]);
-            skip[j] = self[j];
+            skip[j] = (own >> j) & 1u ? prim[j] : nullptr;
         }
         const unsigned blocked = aggregate.occludedPacket(feelers, t0, dist, skip, ask);
         for (unsigned m = blocked; m; m &= m - 1)

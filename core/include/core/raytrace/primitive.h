@@ -43,6 +43,15 @@ class Primitive {
     // than the error of its intersection with its own surface (acne from ~1e5 on).
     virtual bool planar() const { return false; }
 
+    // For a shadow feeler from `point` (a hit on this non-flat primitive): false, or true
+    // with the terms a caller needs to prove, feeler by feeler, that this primitive's own
+    // exact test cannot report it blocking (the Sphere's: f = point − centre and
+    // c = |f|² − r² exactly as its test computes them; the tracer's sphereCannotBlock).
+    virtual bool feelerSelfTerms(const glm::dvec3& point, glm::dvec3& f, double& c) const {
+        (void)point, (void)f, (void)c;
+        return false;
+    }
+
     int material = 0; // index into Scene::materials
 
   protected:

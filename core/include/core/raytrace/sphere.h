@@ -16,6 +16,9 @@ class Sphere : public Primitive {
     glm::dvec2 textureCoords(const Hit& hit) const override;
     Aabb bounds() const override;
     bool solid() const final { return true; } // final: intersect passes true
+    // f = point − centre and c = (|f| − r)(|f| + r), the bits occluded() computes for a
+    // feeler from `point` (nearest's f and c): the tracer's sphereCannotBlock.
+    bool feelerSelfTerms(const glm::dvec3& point, glm::dvec3& f, double& c) const override;
 
     glm::dvec3 centre;
     double radius;
