@@ -1416,6 +1416,31 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     active &= ~(1u << j);
                     p.lim[j] = -std::numeric_limits<float>::infinity();
                 };
+                // Nearest hit: the run's candidates (lane, primitive) are kept in the order
+                // the filters give them and confirmed after the run by one out-of-line call
+                // (the visitor's confirm): each exact test inlined here cost ~84
+                // instructions around its call (arguments, the walk's state spilled and
+                // reloaded; issue 21, eleventh session). The same exact tests in the same
+                // order: within a leaf the filters read only the lanes' limits, which change
+                // after the leaf. Any hit keeps its test in place (a blocked lane leaves the
+                // run at once), and so do spheres (jacks 4's short sphere runs: the call per
+                // run cost more than it saved, callgrind).
+                constexpr int kDeferred = 32; // flushed when full: a run may be long
+                std::uint32_t deferI[kAnyHit ? 1 : kDeferred];
+                std::uint8_t deferJ[kAnyHit ? 1 : kDeferred];
+                int deferred = 0;
+                auto flush = [&]() __attribute__((always_inline)) {
+                    if constexpr (!kAnyHit) {
+                        if (deferred) leaf.confirm(p.r, deferI, deferJ, deferred);
+                        deferred = 0;
+                    }
+                };
+                auto defer = [&](int j, std::uint32_t i) __attribute__((always_inline)) {
+                    deferI[deferred] = i;
+                    deferJ[deferred] = std::uint8_t(j);
+                    if (++deferred == kDeferred) flush();
+                };
+                (void)defer;
                 const std::uint32_t end = first + count;
                 for (std::uint32_t run = first; run < end && m;) {
                     const std::uint32_t rEnd = run + b.run_[run];
@@ -1444,14 +1469,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                     for (; cand; cand &= cand - 1) {
                                         const std::uint32_t t =
                                             i + std::uint32_t(__builtin_ctz(unsigned(cand)));
-                                        if (!leaf(j, t, &p.r[j]) && kAnyHit) {
-                                            done(j);
-                                            i = rEnd;
-                                            break;
+                                        if constexpr (kAnyHit) {
+                                            if (!leaf(j, t, &p.r[j])) {
+                                                done(j);
+                                                i = rEnd;
+                                                break;
+                                            }
+                                        } else {
+                                            defer(j, t);
                                         }
                                     }
                                 }
                             }
+                            flush();
                             run = rEnd;
                             continue;
                         }
@@ -1467,6 +1497,17 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         if (kAnyHit && !more) done(j);
                     }
                     offered |= m & ~mt;
+                    if (!kAnyHit && runKind == kRunTriangle) {
+                        for (std::uint32_t i = run; i < rEnd && mt; ++i) {
+                            unsigned cand = mt & triangleLanesTest(b, p, i);
+                            offered |= cand;
+                            for (; cand; cand &= cand - 1)
+                                defer(__builtin_ctz(cand), i);
+                        }
+                        flush();
+                        run = rEnd;
+                        continue;
+                    }
                     for (std::uint32_t i = run; i < rEnd && mt; ++i) {
                         unsigned cand = mt & (runKind == kRunSphere ? sphereLanesTest(b, p, i)
                                                                     : triangleLanesTest(b, p, i));
@@ -1864,6 +1905,43 @@ template <class L, bool Q> struct Bvh::WideWalk {
             offerNearest(*order[i], kind[i], orderIndex[i], r, rays[j], tMin[j], tMax[j], hits[j],
                          best[j]);
             return true;
+        }
+        // The offers of n candidates, in order: primitive i[k] to ray j[k] (walkPacket's
+        // deferred exact tests).
+        // A plain triangle (nearly all of them) takes offerNearest's steps written out with
+        // the fields held in locals (not reloaded after each call).
+        __attribute__((noinline)) void confirm(const RayData* r, const std::uint32_t* ci,
+                                               const std::uint8_t* cj, int n) const {
+            const Primitive* const* const ord = order;
+            const std::uint8_t* const kd = kind;
+            const std::uint32_t* const oi = orderIndex;
+            for (int k = 0; k < n; ++k) {
+                const int j = cj[k];
+                const std::uint32_t i = ci[k];
+                const RayData* const rj = r + j;
+                if (kd[i] != bvh_detail::kTriangle) {
+                    (*this)(j, i, rj);
+                    continue;
+                }
+                if (!rj->shReady) { // inlined here: this function is already out of line
+                    rj->sh = triangleShear(rj->ray->direction);
+                    rj->shReady = true;
+                }
+                const Triangle& t = static_cast<const Triangle&>(*ord[i]);
+                Hit& hit = hits[j];
+                const double before = tMax[j];
+                if (!t.intersectSheared(rays[j], rj->sh, tMin[j], before, hit)) continue;
+                Best& bj = best[j];
+                const std::uint32_t index = oi[i];
+                if (bj.p && hit.t == before && index < bj.index) {
+                    exactIntersect(*bj.p, bj.kind, rj, rays[j], tMin[j], before, hit);
+                    continue;
+                }
+                bj.p = &t;
+                bj.kind = bvh_detail::kTriangle;
+                bj.index = index;
+                tMax[j] = hit.t;
+            }
         }
     };
     // occludedPacket's leaf visitor: occluded()'s test for ray j; false once it is blocked.
