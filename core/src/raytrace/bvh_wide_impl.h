@@ -866,7 +866,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
     // transposed triangle set-up became cheap; 1 measured worse on every scene).
     static constexpr int kTransposeLanes = 2;
-    // A node reached by up to this many rays tests each ray against the W children (walkPacket).
+    // A node of the any-hit walk reached by 2 to this many rays tests each ray against the W
+    // children (walkPacket; 4 measured worse on the mesh and jacks 4).
     static constexpr int kRayMajorRays = 3;
     // A triangle run of n is tested ray by ray, four triangles at a time
     // (triangleQuadTest), when popcount · ceil(n / 4) · kQuadCost < n · kLanesCost: the
@@ -1418,15 +1419,16 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     active &= ~(1u << j);
                     p.lim[j] = -std::numeric_limits<float>::infinity();
                 };
-                // Nearest hit: the run's candidates (lane, primitive) are kept in the order
-                // the filters give them and confirmed after the run by one out-of-line call
-                // (the visitor's confirm): each exact test inlined here cost ~84
-                // instructions around its call (arguments, the walk's state spilled and
-                // reloaded; issue 21, eleventh session). The same exact tests in the same
-                // order: within a leaf the filters read only the lanes' limits, which change
-                // after the leaf. Any hit keeps its test in place (a blocked lane leaves the
-                // run at once), and so do spheres (jacks 4's short sphere runs: the call per
-                // run cost more than it saved, callgrind).
+                // Nearest hit: a triangle run's candidates (lane, primitive) are kept in the
+                // order the filters give them and confirmed after the run by one out-of-line
+                // call (the visitor's confirm). Inlined here, each exact test cost ~84
+                // instructions around its call and lengthened the walk's code; the loop in
+                // confirm takes ~68 a candidate and ~25 a call (mesh eye packets 324.6 ->
+                // 319.9 instructions a ray; issue 21, twelfth session, callgrind). The same
+                // exact tests in the same order: within a leaf the filters read only the
+                // lanes' limits, which change after the leaf. Any hit keeps its test in place
+                // (a blocked lane leaves the run at once), and so do spheres (jacks 4's short
+                // sphere runs: the call per run cost more than it saved).
                 constexpr int kDeferred = 32; // flushed when full: a run may be long
                 std::uint32_t deferI[kAnyHit ? 1 : kDeferred];
                 std::uint8_t deferJ[kAnyHit ? 1 : kDeferred];
@@ -1942,10 +1944,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
                          best[j]);
             return true;
         }
-        // The offers of n candidates, in order: primitive i[k] to ray j[k] (walkPacket's
-        // deferred exact tests).
-        // A plain triangle (nearly all of them) takes offerNearest's steps written out with
-        // the fields held in locals (not reloaded after each call).
+        // The offers of n candidates, in order: primitive ci[k] to ray cj[k] (walkPacket's
+        // deferred exact tests). A plain triangle (nearly all of them) takes offerNearest's
+        // steps written out, the visitor's fields held in locals (not reloaded after each
+        // call); the other kinds go through operator().
         __attribute__((noinline)) void confirm(const RayData* r, const std::uint32_t* ci,
                                                const std::uint8_t* cj, int n) const {
             const Primitive* const* const ord = order;
