@@ -866,6 +866,9 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // docs/raytrace-scale.md has the measurements: 3 until the eighth session, 2 since the
     // transposed triangle set-up became cheap; 1 measured worse on every scene).
     static constexpr int kTransposeLanes = 2;
+    // A node of the any-hit walk reached by 2 to this many rays tests each ray against the W
+    // children (walkPacket; 4 measured worse on the mesh and jacks 4).
+    static constexpr int kRayMajorRays = 3;
     // A triangle run of n is tested ray by ray, four triangles at a time
     // (triangleQuadTest), when popcount · ceil(n / 4) · kQuadCost < n · kLanesCost: the
     // instructions of one ray against four triangles and of one triangle against the lanes
@@ -1416,6 +1419,32 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     active &= ~(1u << j);
                     p.lim[j] = -std::numeric_limits<float>::infinity();
                 };
+                // Nearest hit: a triangle run's candidates (lane, primitive) are kept in the
+                // order the filters give them and confirmed after the run by one out-of-line
+                // call (the visitor's confirm). Inlined here, each exact test cost ~84
+                // instructions around its call and lengthened the walk's code; the loop in
+                // confirm takes ~68 a candidate and ~25 a call (mesh eye packets 324.6 ->
+                // 319.9 instructions a ray; issue 21, twelfth session, callgrind). The same
+                // exact tests in the same order: within a leaf the filters read only the
+                // lanes' limits, which change after the leaf. Any hit keeps its test in place
+                // (a blocked lane leaves the run at once), and so do spheres (jacks 4's short
+                // sphere runs: the call per run cost more than it saved).
+                constexpr int kDeferred = 32; // flushed when full: a run may be long
+                std::uint32_t deferI[kAnyHit ? 1 : kDeferred];
+                std::uint8_t deferJ[kAnyHit ? 1 : kDeferred];
+                int deferred = 0;
+                auto flush = [&]() __attribute__((always_inline)) {
+                    if constexpr (!kAnyHit) {
+                        if (deferred) leaf.confirm(p.r, deferI, deferJ, deferred);
+                        deferred = 0;
+                    }
+                };
+                auto defer = [&](int j, std::uint32_t i) __attribute__((always_inline)) {
+                    deferI[deferred] = i;
+                    deferJ[deferred] = std::uint8_t(j);
+                    if (++deferred == kDeferred) flush();
+                };
+                (void)defer;
                 const std::uint32_t end = first + count;
                 for (std::uint32_t run = first; run < end && m;) {
                     const std::uint32_t rEnd = run + b.run_[run];
@@ -1444,14 +1473,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
                                     for (; cand; cand &= cand - 1) {
                                         const std::uint32_t t =
                                             i + std::uint32_t(__builtin_ctz(unsigned(cand)));
-                                        if (!leaf(j, t, &p.r[j]) && kAnyHit) {
-                                            done(j);
-                                            i = rEnd;
-                                            break;
+                                        if constexpr (kAnyHit) {
+                                            if (!leaf(j, t, &p.r[j])) {
+                                                done(j);
+                                                i = rEnd;
+                                                break;
+                                            }
+                                        } else {
+                                            defer(j, t);
                                         }
                                     }
                                 }
                             }
+                            flush();
                             run = rEnd;
                             continue;
                         }
@@ -1467,6 +1501,17 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         if (kAnyHit && !more) done(j);
                     }
                     offered |= m & ~mt;
+                    if (!kAnyHit && runKind == kRunTriangle) {
+                        for (std::uint32_t i = run; i < rEnd && mt; ++i) {
+                            unsigned cand = mt & triangleLanesTest(b, p, i);
+                            offered |= cand;
+                            for (; cand; cand &= cand - 1)
+                                defer(__builtin_ctz(cand), i);
+                        }
+                        flush();
+                        run = rEnd;
+                        continue;
+                    }
                     for (std::uint32_t i = run; i < rEnd && mt; ++i) {
                         unsigned cand = mt & (runKind == kRunSphere ? sphereLanesTest(b, p, i)
                                                                     : triangleLanesTest(b, p, i));
@@ -1526,7 +1571,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const Node& nd = nodes[cur];
             if constexpr (sizeof(Node) > 128)
                 _mm_prefetch(reinterpret_cast<const char*>(&nd.child[0]), _MM_HINT_T0);
-            unsigned rays[W];
+            // A child's rays: lane bits, a byte a child where the few-ray test below writes
+            // them whole (any hit); the nearest-hit walk keeps unsigned (bytes there cost
+            // ~2 instructions a ray in its node loop, callgrind).
+            static_assert(W <= 8, "a child's rays are a byte of lane bits");
+            using RayBits = std::conditional_t<kAnyHit, std::uint8_t, unsigned>;
+            alignas(8) RayBits rays[W];
             alignas(32) float tc[W];
             int mask = 0;
             curRays &= active;
@@ -1547,7 +1597,36 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 mask = L::le(r0, r1) & validMask(nd);
                 if constexpr (!kAnyHit) L::store(tc, r0);
                 for (int k = mask; k; k &= k - 1)
-                    rays[__builtin_ctz(unsigned(k))] = curRays;
+                    rays[__builtin_ctz(unsigned(k))] = RayBits(curRays);
+            } else if (kAnyHit && __builtin_popcount(curRays) <= kRayMajorRays) {
+                // Any hit, two or three rays: each ray's own test of the W children at once
+                // (the one-ray test above, the same verdicts as the per-child lane test
+                // below), without the interval test; the rays' child masks turned into each
+                // child's ray mask, a byte a child (kSpread). Not for the nearest hit: there
+                // the children's order comes from the interval test's entries, and the
+                // rays' smallest entry instead (with bytes for rays) cost more than it
+                // saved (mesh eye packets 319.9 -> 322.8 instructions a ray, callgrind).
+                V n[3], f[3];
+                for (int a = 0; a < 3; ++a) {
+                    n[a] = planes(nd, p.off[a], a);
+                    f[a] = planes(nd, p.off[3 + a], a);
+                }
+                std::uint64_t spread = 0;
+                for (unsigned k = curRays; k; k &= k - 1) {
+                    const int j = __builtin_ctz(k);
+                    V r0 = L::set1(p.tMin[j]), r1 = L::set1(p.lim[j]);
+                    for (int a = 0; a < 3; ++a) {
+                        r0 = L::max(L::mul(L::sub(n[a], L::set1(p.on[a][j])), L::set1(p.inv[a][j])),
+                                    r0);
+                        r1 = L::min(
+                            L::mul(L::sub(f[a], L::set1(p.of[a][j])), L::set1(p.invFar[a][j])), r1);
+                    }
+                    const int mj = L::le(r0, r1);
+                    mask |= mj;
+                    spread |= bvh_detail::kSpread[mj] << j;
+                }
+                mask &= validMask(nd);
+                std::memcpy(rays, &spread, W);
             } else {
                 alignas(32) float nearA[3][W], farA[3][W]; // the decoded planes (Q)
                 const float* nearP[3];
@@ -1592,7 +1671,7 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     const unsigned m = unsigned(L::le(r0, r1)) & curRays;
                     if (!m) continue;
                     mask |= 1 << c;
-                    rays[c] = m;
+                    rays[c] = RayBits(m);
                 }
             }
             bool haveNext = false;
@@ -1864,6 +1943,43 @@ template <class L, bool Q> struct Bvh::WideWalk {
             offerNearest(*order[i], kind[i], orderIndex[i], r, rays[j], tMin[j], tMax[j], hits[j],
                          best[j]);
             return true;
+        }
+        // The offers of n candidates, in order: primitive ci[k] to ray cj[k] (walkPacket's
+        // deferred exact tests). A plain triangle (nearly all of them) takes offerNearest's
+        // steps written out, the visitor's fields held in locals (not reloaded after each
+        // call); the other kinds go through operator().
+        __attribute__((noinline)) void confirm(const RayData* r, const std::uint32_t* ci,
+                                               const std::uint8_t* cj, int n) const {
+            const Primitive* const* const ord = order;
+            const std::uint8_t* const kd = kind;
+            const std::uint32_t* const oi = orderIndex;
+            for (int k = 0; k < n; ++k) {
+                const int j = cj[k];
+                const std::uint32_t i = ci[k];
+                const RayData* const rj = r + j;
+                if (kd[i] != bvh_detail::kTriangle) {
+                    (*this)(j, i, rj);
+                    continue;
+                }
+                if (!rj->shReady) { // inlined here: this function is already out of line
+                    rj->sh = triangleShear(rj->ray->direction);
+                    rj->shReady = true;
+                }
+                const Triangle& t = static_cast<const Triangle&>(*ord[i]);
+                Hit& hit = hits[j];
+                const double before = tMax[j];
+                if (!t.intersectSheared(rays[j], rj->sh, tMin[j], before, hit)) continue;
+                Best& bj = best[j];
+                const std::uint32_t index = oi[i];
+                if (bj.p && hit.t == before && index < bj.index) {
+                    exactIntersect(*bj.p, bj.kind, rj, rays[j], tMin[j], before, hit);
+                    continue;
+                }
+                bj.p = &t;
+                bj.kind = bvh_detail::kTriangle;
+                bj.index = index;
+                tMax[j] = hit.t;
+            }
         }
     };
     // occludedPacket's leaf visitor: occluded()'s test for ray j; false once it is blocked.

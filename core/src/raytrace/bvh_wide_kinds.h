@@ -24,6 +24,19 @@ constexpr std::uint8_t kOther = 0, kSphere = 1, kTriangle = 2, kSmoothTriangle =
 // Runs of a leaf sorted by their float test: spheres, triangles (both kinds), the rest
 // (a float test of their own box).
 constexpr std::uint8_t kRunSphere = 0, kRunTriangle = 1, kRunOther = 2;
+// Bit c of the index as byte c (0 or 1) of the entry: a ray's mask of the W <= 8 children
+// it enters, shifted by its lane, ORs into each child's mask of rays, a byte a child
+// (walkPacket's nodes of a few rays; little-endian, as x86).
+struct SpreadTable {
+    std::uint64_t v[256];
+    constexpr SpreadTable() : v() {
+        for (int m = 0; m < 256; ++m)
+            for (int c = 0; c < 8; ++c)
+                if ((m >> c) & 1) v[m] |= std::uint64_t(1) << (8 * c);
+    }
+    constexpr std::uint64_t operator[](int m) const { return v[m]; }
+};
+inline constexpr SpreadTable kSpread{};
 // The leaves' float filters (visitLeaf in bvh_wide_impl.h) may only over-report: a
 // primitive the exact double code hits is never rejected. u = 2^-24 is float's unit
 // roundoff; every bound below is a sum of such roundings, taken with room to spare.
