@@ -221,15 +221,6 @@ template <class L, bool Q> struct Bvh::WideWalk {
         else
             return (1 << W) - 1;
     }
-    // The slots whose count is 0 (inner children and empty slots), bit c for slot c: the
-    // counts compared to 0 in one SSE2 compare.
-    __attribute__((always_inline)) static int innerMask(const Node& nd) {
-        static_assert(sizeof(nd.count[0]) == 2 && (W == 4 || W == 8));
-        const __m128i c = W == 8 ? _mm_loadu_si128(reinterpret_cast<const __m128i*>(nd.count))
-                                 : _mm_loadl_epi64(reinterpret_cast<const __m128i*>(nd.count));
-        const __m128i z = _mm_cmpeq_epi16(c, _mm_setzero_si128());
-        return _mm_movemask_epi8(_mm_packs_epi16(z, z)) & ((1 << W) - 1);
-    }
     // Child c's box on axis a, as the lanes decode it.
     static float boxLo(const Node& nd, int a, int c) {
         if constexpr (Q)
@@ -707,46 +698,23 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 }
             }
             if constexpr (kAnyHit) {
-                if constexpr (kTri) {
-                    // Any order: leaves visited as met, inner children pushed, the last one
-                    // descended into. (The split below measured slower on the mesh's shadow
-                    // rows, ours/Embree 1.01-1.02 -> 0.96-0.99; issue 21, twelfth session.)
-                    bool haveNext = false;
-                    while (mask) {
-                        const int c = __builtin_ctz(unsigned(mask));
-                        mask &= mask - 1;
-                        if (nd.count[c] > 0) {
-                            if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[c], nd.count[c],
-                                                                    flim, leaf))
-                                return;
-                        } else {
-                            if (haveNext) stack[sp++] = {cur, 0, 0.0f};
-                            cur = nd.child[c];
-                            haveNext = true;
-                        }
-                    }
-                    if (haveNext) continue;
-                } else {
-                    // The same order: the leaves visited in slot order, then the inner
-                    // children pushed in slot order, the last one descended into. Split by the
-                    // counts' mask: the per-slot test leaf or inner mispredicted on the balls 4
-                    // frame's reflected feelers (callgrind --branch-sim; issue 21, twelfth
-                    // session).
-                    const int inner = mask & innerMask(nd);
-                    for (int m = mask & ~inner; m; m &= m - 1) {
-                        const int c = __builtin_ctz(unsigned(m));
+                // Any order: leaves visited as met, inner children pushed, the last one
+                // descended into.
+                bool haveNext = false;
+                while (mask) {
+                    const int c = __builtin_ctz(unsigned(mask));
+                    mask &= mask - 1;
+                    if (nd.count[c] > 0) {
                         if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[c], nd.count[c],
                                                                 flim, leaf))
                             return;
-                    }
-                    if (inner) {
-                        int m = inner;
-                        for (; m & (m - 1); m &= m - 1)
-                            stack[sp++] = {nd.child[__builtin_ctz(unsigned(m))], 0, 0.0f};
-                        cur = nd.child[__builtin_ctz(unsigned(m))];
-                        continue;
+                    } else {
+                        if (haveNext) stack[sp++] = {cur, 0, 0.0f};
+                        cur = nd.child[c];
+                        haveNext = true;
                     }
                 }
+                if (haveNext) continue;
                 if (sp == 0) return;
                 cur = stack[--sp].child;
                 continue;
