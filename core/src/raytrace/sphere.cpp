@@ -23,6 +23,14 @@ inline double len(const glm::dvec3& v) {
     return root(glm::dot(v, v));
 }
 
+// c = |f|² − r² as (|f| − r)(|f| + r), f the origin's offset from the centre: nearest's
+// constant term, and what Sphere::feelerSelfTerms hands the tracer's self-skip proof, which
+// needs these very bits (tracer.cpp, sphereCannotBlock). One expression for both.
+inline double offsetTerm(const glm::dvec3& f, double radius) {
+    const double fl = len(f);
+    return (fl - radius) * (fl + radius);
+}
+
 bool finite3(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -51,8 +59,7 @@ inline bool nearest(const glm::dvec3& centre, double radius, const Ray& ray, dou
     const double ll = len(l);
     const double disc = (radius - ll) * (radius + ll);
     if (!(disc >= 0) || !std::isfinite(h)) return false; // no real root
-    const double fl = len(f);
-    const double c = (fl - radius) * (fl + radius);
+    const double c = offsetTerm(f, radius);
     if (!std::isfinite(c)) return false;
     const double q = -(h + std::copysign(root(disc), h));
     double t0 = 0.0, t1 = 0.0; // q == 0: h == 0 and disc == 0, so c == 0: double root at 0
@@ -107,11 +114,10 @@ bool Sphere::occluded(const Ray& ray, double tMin, double tMax) const {
 }
 
 bool Sphere::feelerSelfTerms(const glm::dvec3& point, glm::dvec3& f, double& c) const {
-    // nearest's expressions for ray.origin = point, in the same order (this file is built
-    // without FMA contraction, as nearest is: the same bits).
+    // nearest's f and c for ray.origin = point: the same expressions (the library is built
+    // without FMA contraction: the same bits).
     f = point - centre;
-    const double fl = len(f);
-    c = (fl - radius) * (fl + radius);
+    c = offsetTerm(f, radius);
     return true;
 }
 
