@@ -21,8 +21,7 @@ target_sources(core PRIVATE
 )
 target_sources(core PRIVATE src/raytrace/bvh.cpp src/raytrace/bvh_wide.cpp
                             src/raytrace/bvh_wide_avx2.cpp src/raytrace/bvh_wide_avx512.cpp) # issues 6, 13, 21: BVH
-# AVX-512 implies FMA for GCC: no fused products in the float tests (their error bounds).
-set_source_files_properties(src/raytrace/bvh_wide_avx512.cpp PROPERTIES COMPILE_OPTIONS -ffp-contract=off)
+# AVX-512 implies FMA for GCC: core/CMakeLists.txt's -ffp-contract=off keeps the float tests unfused.
 # issue 6 (engineer F): scene files (NFF, OBJ via tinyobjloader), SPD generators, parallel render.
 find_package(tinyobjloader REQUIRED)
 target_sources(core PRIVATE

@@ -8,7 +8,7 @@
 // the walk itself is compiled for AVX-512. Not FMA: no product is fused with a sum, so
 // the float tests round exactly as their error bounds assume: GCC's avx512f turns FMA on
 // and contracted 143 products and sums into vfmadd, so this file is compiled with
-// -ffp-contract=off (core/raytrace.cmake); objdump shows no vfmadd in it.
+// -ffp-contract=off (the whole library is: core/CMakeLists.txt); objdump shows no vfmadd in it.
 #include "bvh_internal.h"
 #include "bvh_wide_kinds.h"
 #include "core/raytrace/bvh.h"
