@@ -42,10 +42,13 @@ inline D4 sqrtOf(D4 a) {
 inline D4 splat(double x) {
     return {_mm256_set1_pd(x)};
 }
-// The comparisons of lanes_sse2.h, lane by lane all ones or all zeros: greater and equal
-// ordered (false with a NaN), notEqualOrNaN unordered (true with a NaN, as C's !=).
+// The comparisons of lanes_sse2.h, lane by lane all ones or all zeros: greater, lessEqual and
+// equal ordered (false with a NaN), notEqualOrNaN unordered (true with a NaN, as C's !=).
 inline Mask greater(D4 a, D4 b) {
     return _mm256_cmp_pd(a.v, b.v, _CMP_GT_OS);
+}
+inline Mask lessEqual(D4 a, D4 b) {
+    return _mm256_cmp_pd(a.v, b.v, _CMP_LE_OS);
 }
 inline Mask equal(D4 a, D4 b) {
     return _mm256_cmp_pd(a.v, b.v, _CMP_EQ_OQ);

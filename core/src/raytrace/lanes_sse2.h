@@ -61,11 +61,14 @@ inline D2 pair(double a, double b) {
     return {_mm_set_pd(a, b)};
 }
 // phong_lanes_impl.h's names (lanes_avx.h has the same): comparisons all ones or all zeros
-// lane by lane, greater and equal ordered (false with a NaN), notEqualOrNaN unordered (true
-// with a NaN, as C's !=); lane k is element k (the low element is lane 0 here, unlike
-// pair's order).
+// lane by lane, greater, lessEqual and equal ordered (false with a NaN), notEqualOrNaN
+// unordered (true with a NaN, as C's !=); lane k is element k (the low element is lane 0
+// here, unlike pair's order).
 inline Mask greater(D2 a, D2 b) {
     return _mm_cmpgt_pd(a.v, b.v);
+}
+inline Mask lessEqual(D2 a, D2 b) {
+    return _mm_cmple_pd(a.v, b.v);
 }
 inline Mask equal(D2 a, D2 b) {
     return _mm_cmpeq_pd(a.v, b.v);

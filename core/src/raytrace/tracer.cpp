@@ -107,9 +107,33 @@ FeelerBase feelerBase(const Hit& hit, const glm::dvec3& offsetOrigin) {
 // distance from the surface (a few ULPs), t0·h ≈ eps·r with eps ~ 2^20 ULPs: true with
 // a margin of ~10^5. Grazing or inward feelers (h ≤ 0: the inside of a sphere, a light
 // behind the tangent plane) fail it and keep the exact test.
-inline bool sphereCannotBlock(const glm::dvec3& f, double c, const glm::dvec3& dir, double t0) {
-    const double h = glm::dot(f, dir);
-    return h > 0 && 2 * -c <= t0 * h;
+// Written once for one feeler (D = double, a bool) and for two in sse2lanes' lanes (D = D2,
+// a lane mask; traceFromPacket): the same operations in the same order, so every lane
+// answers as the single feeler would (lanes_sse2.h: glm's dot, one rounding each). The
+// scalar comparisons join sse2lanes' in one overload set (a Mask is a bare __m128d, which
+// argument-dependent lookup does not find).
+using sse2lanes::greater;
+using sse2lanes::lessEqual;
+using sse2lanes::maskAnd;
+inline double lit(double x, double) {
+    return x;
+}
+inline sse2lanes::D2 lit(double x, sse2lanes::D2) {
+    return sse2lanes::splat(x);
+}
+inline bool greater(double a, double b) {
+    return a > b;
+}
+inline bool lessEqual(double a, double b) {
+    return a <= b;
+}
+inline bool maskAnd(bool a, bool b) {
+    return a && b;
+}
+template <class D, class Vec>
+inline auto sphereCannotBlock(const Vec& f, D c, const Vec& dir, D t0) {
+    const D h = dot(f, dir); // glm::dot or lanes_sse2.h's, found by the argument's type
+    return maskAnd(greater(h, lit(0.0, h)), lessEqual(lit(2.0, h) * -c, t0 * h));
 }
 } // namespace
 
@@ -493,16 +517,14 @@ void Tracer::traceFromPacket(const Ray* rays, const Hit* hits, int n, RayCounts&
         }
         ask &= lanes;
         // The feelers that skip their own primitive: flat, or sphereCannotBlock (two lanes at
-        // a time: glm::dot's order, the same IEEE operations, the same bits).
+        // a time, the single feeler's body).
         unsigned own = flat;
         for (int i = 0; (ask & curved) && i < kMaxPacket; i += 2) {
             if (!(((ask & curved) >> i) & 3u)) continue;
             const auto load = [i](const double* from) { return D2{_mm_load_pd(&from[i])}; };
-            const D2 h = dot(V2{load(fx), load(fy), load(fz)}, V2{load(dx), load(dy), load(dz)});
-            const __m128d can =
-                _mm_and_pd(_mm_cmpgt_pd(h.v, _mm_setzero_pd()),
-                           _mm_cmple_pd((splat(2) * -load(selfC)).v, (load(t0) * h).v));
-            own |= (unsigned(_mm_movemask_pd(can)) << i) & curved;
+            const Mask can = sphereCannotBlock(V2{load(fx), load(fy), load(fz)}, load(selfC),
+                                               V2{load(dx), load(dy), load(dz)}, load(t0));
+            own |= (maskBits(can) << i) & curved;
         }
         if (!feelerPacket) {
             const Primitive** entry = lastBlockers ? &lastBlockers[li] : nullptr;
