@@ -1947,7 +1947,12 @@ template <class L, bool Q> struct Bvh::WideWalk {
         // The offers of n candidates, in order: primitive ci[k] to ray cj[k] (walkPacket's
         // deferred exact tests). A plain triangle (nearly all of them) takes offerNearest's
         // steps written out, the visitor's fields held in locals (not reloaded after each
-        // call); the other kinds go through operator().
+        // call); the other kinds go through operator(). Its tie rule must stay offerNearest's:
+        // "packets: a mesh with shared edges and vertices, ties" (packet_test.cpp) goes red
+        // when they differ. Not shared (thirteenth session, callgrind, mesh): the rule and the
+        // record in one inline helper cost confirm +3.8 instructions a candidate (the rare
+        // branch's arguments set up on every hit), the rule alone as a predicate cost the
+        // single walk +10 instructions a ray (GCC laid nearestFrom out anew).
         __attribute__((noinline)) void confirm(const RayData* r, const std::uint32_t* ci,
                                                const std::uint8_t* cj, int n) const {
             const Primitive* const* const ord = order;
