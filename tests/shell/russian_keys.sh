@@ -45,7 +45,15 @@ if [ "${1:-}" == --inside ]; then # in Xvfb: $2 lock tool, $3 keys, $4 log, then
   done
   [ -n "$win" ] || { echo "no window"; kill $pid; exit 4; }
   xdotool windowfocus $win
-  sleep 2 # the first frames (shaders, meshes) before the keys; less lost keys under a loaded CI
+  # The lab's first frame on screen (the shell prints it with WB_LOG_KEYS=1) before the keys:
+  # on a loaded machine a fixed sleep was not always enough (a key went missing once, under
+  # load ~5); then a little more for the focus and the panel's first layout.
+  for _ in $(seq 1 300); do
+    grep -q '^shell first frame' "$log" 2>/dev/null && break
+    sleep 0.1
+  done
+  grep -q '^shell first frame' "$log" || { echo "no first frame in 30 s"; kill $pid; exit 6; }
+  sleep 1
   if [ "$layout" != ru ]; then "$lock" 1 >/dev/null || exit 5; fi
   for ((k = 0; k < ${#keys}; k++)); do
     xdotool key --delay 80 "$(keysym "${keys:k:1}")"
