@@ -296,7 +296,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // kStart: the ray's float values are r.start's (the walk's kFold), not r's lanes.
     // kTri: the tree holds triangles only (Bvh::triOnly_) and the walk is float-only: every
     // leaf is one triangle run, so no run lengths, kinds or useFloat are read.
-    template <bool kFloatOnly = false, bool kStart = false, bool kTri = false, class Visit>
+    // kFew (the single nearest-hit walk): a run of one or two triangles met before the ray's
+    // triangle filter is set up (r.mtReady) goes to the exact tests unfiltered.
+    template <bool kFloatOnly = false, bool kStart = false, bool kTri = false, bool kFew = false,
+              class Visit>
     // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
     // no change with SSE2 (driver, alternated medians).
     __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
@@ -325,7 +328,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const std::uint32_t rEnd = run + b.run_[run];
             const std::uint8_t runKind = runOf(b.kind_[run]);
             if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
-            if (runKind == kRunSphere ? !r.unitD : !(kFloatOnly || r.useFloat)) {
+            // kFew: the filter's set-up (mtSetup, ~64 instructions) and one group (~72) cost
+            // more than an exact test that misses (~112 to its edge signs, the shear set-up
+            // shared with the hit), and such a run's box was hit. Balls 4's floor is such a run
+            // (a quad, two triangles in one leaf), the first and final one of 68% of its eye
+            // rays: per floor ray 893 -> 858 instructions (callgrind, AVX2 8-wide) and ~11% of
+            // the CPU time, the filter-then-call chain gone (issue 21, thirteenth session).
+            // Not in the any-hit walks: balls 4's floor feelers meet the run beside their own
+            // triangle, which the filter rejects; without it occluded took 4.8% more
+            // instructions there (jacks 4 0.9%), so they keep the filter.
+            if (runKind == kRunSphere
+                    ? !r.unitD
+                    : !(kFloatOnly || r.useFloat) ||
+                          (kFew && runKind == kRunTriangle && rEnd - run <= 2 && !r.mtReady)) {
                 for (std::uint32_t i = run; i < rEnd; ++i)
                     if (!visit(i, &r)) return false;
                 run = rEnd;
@@ -799,8 +814,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[next], nd.count[next],
-                                                            flim, leaf))
+                    if (!visitLeaf<kLeafFloat, kFold, kTri, true>(b, r, nd.child[next],
+                                                                  nd.count[next], flim, leaf))
                         return;
                     flim = limitF();
                 }
@@ -812,7 +827,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (e.t > flim) continue;
                     const std::uint32_t child = e.child, count = e.count;
                     if (count > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, child, count, flim, leaf))
+                        if (!visitLeaf<kLeafFloat, kFold, kTri, true>(b, r, child, count, flim,
+                                                                      leaf))
                             return;
                         flim = limitF();
                         continue;
