@@ -114,7 +114,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         bool neg(int a) const { return (signs >> a) & 1; }
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
-        __m128 fo[3], fd[3], om;
+        V fo[3], fd[3], om; // in W lanes: the 8-wide paths test eight spheres at a time
+
         // The watertight test's shear in double, set up at the first exact test of a plain
         // triangle, which reuses it: mutable, the exact tests get const RayData.
         mutable bool shReady = false;
@@ -167,10 +168,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const glm::dvec3& d = ray->direction;
             unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
             for (int a = 0; a < 3; ++a) {
-                fo[a] = _mm_set1_ps(float(o[a]));
-                fd[a] = _mm_set1_ps(float(d[a]));
+                fo[a] = L::set1(float(o[a]));
+                fd[a] = L::set1(float(d[a]));
             }
-            om = _mm_set1_ps(float(bvh_detail::l1Norm(o)) * bvh_detail::kSphereMargin);
+            om = L::set1(float(bvh_detail::l1Norm(o)) * bvh_detail::kSphereMargin);
             sphReady = true;
         }
     };
@@ -346,24 +347,59 @@ template <class L, bool Q> struct Bvh::WideWalk {
                 run = rEnd;
                 continue;
             }
+            if constexpr (W == 8) {
+                if (runKind == kRunSphere) {
+                    // The 4-wide test below in eight lanes (the same operations lane by lane):
+                    // a leaf's run of up to eight spheres in one group.
+                    for (std::uint32_t i = run; i < rEnd; i += 8) {
+                        const __m256 fx = _mm256_sub_ps(r.fo[0], _mm256_loadu_ps(&b.sx_[i]));
+                        const __m256 fy = _mm256_sub_ps(r.fo[1], _mm256_loadu_ps(&b.sy_[i]));
+                        const __m256 fz = _mm256_sub_ps(r.fo[2], _mm256_loadu_ps(&b.sz_[i]));
+                        const __m256 h = _mm256_add_ps(
+                            _mm256_add_ps(_mm256_mul_ps(fx, r.fd[0]), _mm256_mul_ps(fy, r.fd[1])),
+                            _mm256_mul_ps(fz, r.fd[2]));
+                        const __m256 lx = _mm256_sub_ps(fx, _mm256_mul_ps(h, r.fd[0]));
+                        const __m256 ly = _mm256_sub_ps(fy, _mm256_mul_ps(h, r.fd[1]));
+                        const __m256 lz = _mm256_sub_ps(fz, _mm256_mul_ps(h, r.fd[2]));
+                        const __m256 ll = _mm256_add_ps(
+                            _mm256_add_ps(_mm256_mul_ps(lx, lx), _mm256_mul_ps(ly, ly)),
+                            _mm256_mul_ps(lz, lz));
+                        const __m256 rm =
+                            _mm256_add_ps(_mm256_loadu_ps(&b.sr_[i]),
+                                          _mm256_add_ps(r.om, _mm256_loadu_ps(&b.sm_[i])));
+                        int mask = _mm256_movemask_ps(
+                            _mm256_cmp_ps(ll, _mm256_mul_ps(rm, rm), _CMP_NGT_UQ));
+                        if (rEnd - i < 8) mask &= (1 << (rEnd - i)) - 1;
+                        while (mask) {
+                            const int l = __builtin_ctz(unsigned(mask));
+                            mask &= mask - 1;
+                            if (!visit(i + std::uint32_t(l), &r)) return false;
+                        }
+                    }
+                    run = rEnd;
+                    continue;
+                }
+            }
             for (std::uint32_t i = run; i < rEnd; i += 4) {
                 int mask;
                 if (runKind == kRunSphere) {
                     // Squared distance of each centre from the ray's line against (r +
                     // margin)²: a sphere the exact code can hit (disc >= 0) is never rejected.
-                    const __m128 fx = _mm_sub_ps(r.fo[0], _mm_loadu_ps(&b.sx_[i]));
-                    const __m128 fy = _mm_sub_ps(r.fo[1], _mm_loadu_ps(&b.sy_[i]));
-                    const __m128 fz = _mm_sub_ps(r.fo[2], _mm_loadu_ps(&b.sz_[i]));
-                    const __m128 h =
-                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(fx, r.fd[0]), _mm_mul_ps(fy, r.fd[1])),
-                                   _mm_mul_ps(fz, r.fd[2]));
-                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, r.fd[0]));
-                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, r.fd[1]));
-                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, r.fd[2]));
+                    const __m128 fo0 = L::low(r.fo[0]), fo1 = L::low(r.fo[1]),
+                                 fo2 = L::low(r.fo[2]), fd0 = L::low(r.fd[0]),
+                                 fd1 = L::low(r.fd[1]), fd2 = L::low(r.fd[2]);
+                    const __m128 fx = _mm_sub_ps(fo0, _mm_loadu_ps(&b.sx_[i]));
+                    const __m128 fy = _mm_sub_ps(fo1, _mm_loadu_ps(&b.sy_[i]));
+                    const __m128 fz = _mm_sub_ps(fo2, _mm_loadu_ps(&b.sz_[i]));
+                    const __m128 h = _mm_add_ps(
+                        _mm_add_ps(_mm_mul_ps(fx, fd0), _mm_mul_ps(fy, fd1)), _mm_mul_ps(fz, fd2));
+                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, fd0));
+                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, fd1));
+                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, fd2));
                     const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
                                                  _mm_mul_ps(lz, lz));
                     const __m128 rm = _mm_add_ps(_mm_loadu_ps(&b.sr_[i]),
-                                                 _mm_add_ps(r.om, _mm_loadu_ps(&b.sm_[i])));
+                                                 _mm_add_ps(L::low(r.om), _mm_loadu_ps(&b.sm_[i])));
                     // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
                     // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
                     mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
