@@ -473,7 +473,8 @@ void Bvh::collapseWide(const void* buildNodes, std::size_t count) {
         for (auto& v : ob_)
             zeroed.push_back(&v);
     auto arrays = [&] {
-        auto zero = [&](std::size_t k) { zeroed[k]->assign(n + 4, 0.0f); };
+        // n + 8: the 8-wide sphere test reads up to seven floats past a run's last.
+        auto zero = [&](std::size_t k) { zeroed[k]->assign(n + 8, 0.0f); };
         if (options_.buildThreads == 1 || zeroed.size() < 2) {
             for (std::size_t k = 0; k < zeroed.size(); ++k)
                 zero(k);

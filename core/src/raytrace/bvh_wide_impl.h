@@ -114,7 +114,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
         bool neg(int a) const { return (signs >> a) & 1; }
         // Sphere test (set up at the first sphere run): unitD, origin, direction, |o|₁·margin.
         bool sphReady = false;
-        __m128 fo[3], fd[3], om;
+        V fo[3], fd[3], om; // in W lanes: the 8-wide paths test eight spheres at a time
+
         // The watertight test's shear in double, set up at the first exact test of a plain
         // triangle, which reuses it: mutable, the exact tests get const RayData.
         mutable bool shReady = false;
@@ -167,10 +168,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const glm::dvec3& d = ray->direction;
             unitD = std::abs(glm::dot(d, d) - 1) < 1e-6;
             for (int a = 0; a < 3; ++a) {
-                fo[a] = _mm_set1_ps(float(o[a]));
-                fd[a] = _mm_set1_ps(float(d[a]));
+                fo[a] = L::set1(float(o[a]));
+                fd[a] = L::set1(float(d[a]));
             }
-            om = _mm_set1_ps(float(bvh_detail::l1Norm(o)) * bvh_detail::kSphereMargin);
+            om = L::set1(float(bvh_detail::l1Norm(o)) * bvh_detail::kSphereMargin);
             sphReady = true;
         }
     };
@@ -296,7 +297,10 @@ template <class L, bool Q> struct Bvh::WideWalk {
     // kStart: the ray's float values are r.start's (the walk's kFold), not r's lanes.
     // kTri: the tree holds triangles only (Bvh::triOnly_) and the walk is float-only: every
     // leaf is one triangle run, so no run lengths, kinds or useFloat are read.
-    template <bool kFloatOnly = false, bool kStart = false, bool kTri = false, class Visit>
+    // kFew (the single nearest-hit walk): a run of one or two triangles met before the ray's
+    // triangle filter is set up (r.mtReady) goes to the exact tests unfiltered.
+    template <bool kFloatOnly = false, bool kStart = false, bool kTri = false, bool kFew = false,
+              class Visit>
     // Inlined into the walk (GCC would call it): +2–4% on shadow rays with AVX2 8-wide,
     // no change with SSE2 (driver, alternated medians).
     __attribute__((always_inline)) static bool visitLeaf(const Bvh& b, RayData& r,
@@ -325,30 +329,77 @@ template <class L, bool Q> struct Bvh::WideWalk {
             const std::uint32_t rEnd = run + b.run_[run];
             const std::uint8_t runKind = runOf(b.kind_[run]);
             if (runKind == kRunSphere && !r.sphReady) r.sphereSetup();
-            if (runKind == kRunSphere ? !r.unitD : !(kFloatOnly || r.useFloat)) {
+            // kFew: the filter's set-up (mtSetup, ~64 instructions) and one group (~72) cost
+            // more than an exact test that misses (~112 to its edge signs, the shear set-up
+            // shared with the hit), and such a run's box was hit. Balls 4's floor is such a run
+            // (a quad, two triangles in one leaf), the first and final one of 68% of its eye
+            // rays: per floor ray 893 -> 858 instructions (callgrind, AVX2 8-wide) and ~11% of
+            // the CPU time, the filter-then-call chain gone (issue 21, thirteenth session).
+            // Not in the any-hit walks: balls 4's floor feelers meet the run beside their own
+            // triangle, which the filter rejects; without it occluded took 4.8% more
+            // instructions there (jacks 4 0.9%), so they keep the filter.
+            if (runKind == kRunSphere
+                    ? !r.unitD
+                    : !(kFloatOnly || r.useFloat) ||
+                          (kFew && runKind == kRunTriangle && rEnd - run <= 2 && !r.mtReady)) {
                 for (std::uint32_t i = run; i < rEnd; ++i)
                     if (!visit(i, &r)) return false;
                 run = rEnd;
                 continue;
+            }
+            if constexpr (W == 8) {
+                if (runKind == kRunSphere) {
+                    // The 4-wide test below in eight lanes (the same operations lane by lane):
+                    // a leaf's run of up to eight spheres in one group.
+                    for (std::uint32_t i = run; i < rEnd; i += 8) {
+                        const __m256 fx = _mm256_sub_ps(r.fo[0], _mm256_loadu_ps(&b.sx_[i]));
+                        const __m256 fy = _mm256_sub_ps(r.fo[1], _mm256_loadu_ps(&b.sy_[i]));
+                        const __m256 fz = _mm256_sub_ps(r.fo[2], _mm256_loadu_ps(&b.sz_[i]));
+                        const __m256 h = _mm256_add_ps(
+                            _mm256_add_ps(_mm256_mul_ps(fx, r.fd[0]), _mm256_mul_ps(fy, r.fd[1])),
+                            _mm256_mul_ps(fz, r.fd[2]));
+                        const __m256 lx = _mm256_sub_ps(fx, _mm256_mul_ps(h, r.fd[0]));
+                        const __m256 ly = _mm256_sub_ps(fy, _mm256_mul_ps(h, r.fd[1]));
+                        const __m256 lz = _mm256_sub_ps(fz, _mm256_mul_ps(h, r.fd[2]));
+                        const __m256 ll = _mm256_add_ps(
+                            _mm256_add_ps(_mm256_mul_ps(lx, lx), _mm256_mul_ps(ly, ly)),
+                            _mm256_mul_ps(lz, lz));
+                        const __m256 rm =
+                            _mm256_add_ps(_mm256_loadu_ps(&b.sr_[i]),
+                                          _mm256_add_ps(r.om, _mm256_loadu_ps(&b.sm_[i])));
+                        int mask = _mm256_movemask_ps(
+                            _mm256_cmp_ps(ll, _mm256_mul_ps(rm, rm), _CMP_NGT_UQ));
+                        if (rEnd - i < 8) mask &= (1 << (rEnd - i)) - 1;
+                        while (mask) {
+                            const int l = __builtin_ctz(unsigned(mask));
+                            mask &= mask - 1;
+                            if (!visit(i + std::uint32_t(l), &r)) return false;
+                        }
+                    }
+                    run = rEnd;
+                    continue;
+                }
             }
             for (std::uint32_t i = run; i < rEnd; i += 4) {
                 int mask;
                 if (runKind == kRunSphere) {
                     // Squared distance of each centre from the ray's line against (r +
                     // margin)²: a sphere the exact code can hit (disc >= 0) is never rejected.
-                    const __m128 fx = _mm_sub_ps(r.fo[0], _mm_loadu_ps(&b.sx_[i]));
-                    const __m128 fy = _mm_sub_ps(r.fo[1], _mm_loadu_ps(&b.sy_[i]));
-                    const __m128 fz = _mm_sub_ps(r.fo[2], _mm_loadu_ps(&b.sz_[i]));
-                    const __m128 h =
-                        _mm_add_ps(_mm_add_ps(_mm_mul_ps(fx, r.fd[0]), _mm_mul_ps(fy, r.fd[1])),
-                                   _mm_mul_ps(fz, r.fd[2]));
-                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, r.fd[0]));
-                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, r.fd[1]));
-                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, r.fd[2]));
+                    const __m128 fo0 = L::low(r.fo[0]), fo1 = L::low(r.fo[1]),
+                                 fo2 = L::low(r.fo[2]), fd0 = L::low(r.fd[0]),
+                                 fd1 = L::low(r.fd[1]), fd2 = L::low(r.fd[2]);
+                    const __m128 fx = _mm_sub_ps(fo0, _mm_loadu_ps(&b.sx_[i]));
+                    const __m128 fy = _mm_sub_ps(fo1, _mm_loadu_ps(&b.sy_[i]));
+                    const __m128 fz = _mm_sub_ps(fo2, _mm_loadu_ps(&b.sz_[i]));
+                    const __m128 h = _mm_add_ps(
+                        _mm_add_ps(_mm_mul_ps(fx, fd0), _mm_mul_ps(fy, fd1)), _mm_mul_ps(fz, fd2));
+                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, fd0));
+                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, fd1));
+                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, fd2));
                     const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
                                                  _mm_mul_ps(lz, lz));
                     const __m128 rm = _mm_add_ps(_mm_loadu_ps(&b.sr_[i]),
-                                                 _mm_add_ps(r.om, _mm_loadu_ps(&b.sm_[i])));
+                                                 _mm_add_ps(L::low(r.om), _mm_loadu_ps(&b.sm_[i])));
                     // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
                     // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
                     mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
@@ -799,8 +850,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                         cur = nd.child[next];
                         continue;
                     }
-                    if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, nd.child[next], nd.count[next],
-                                                            flim, leaf))
+                    if (!visitLeaf<kLeafFloat, kFold, kTri, true>(b, r, nd.child[next],
+                                                                  nd.count[next], flim, leaf))
                         return;
                     flim = limitF();
                 }
@@ -812,7 +863,8 @@ template <class L, bool Q> struct Bvh::WideWalk {
                     if (e.t > flim) continue;
                     const std::uint32_t child = e.child, count = e.count;
                     if (count > 0) {
-                        if (!visitLeaf<kLeafFloat, kFold, kTri>(b, r, child, count, flim, leaf))
+                        if (!visitLeaf<kLeafFloat, kFold, kTri, true>(b, r, child, count, flim,
+                                                                      leaf))
                             return;
                         flim = limitF();
                         continue;
