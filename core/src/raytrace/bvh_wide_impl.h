@@ -62,6 +62,7 @@ template <class Tag> struct Sse4 {
     static int ltGt(V a, V b, V c, V d) {
         return _mm_movemask_ps(_mm_and_ps(_mm_cmplt_ps(a, b), _mm_cmpgt_ps(c, d)));
     }
+    static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
 };
 
 // Four lanes: SSE2 in bvh_wide.cpp, the same code VEX-encoded in bvh_wide_avx2.cpp; the
@@ -76,7 +77,6 @@ template <int Tag> struct Lanes4 : Sse4<std::integral_constant<int, Tag>> {
     // The packets' transposed leaf tests (one primitive against the lanes): the same
     // operations as the single ray's 4-wide leaf tests, lane by lane.
     static V abs(V a) { return _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff))); }
-    static int ngt(V a, V b) { return _mm_movemask_ps(_mm_cmpngt_ps(a, b)); } // true for NaN
 };
 
 // L::kFold: the node test takes the ray's values as broadcast memory operands (AVX-512).
@@ -290,6 +290,31 @@ template <class L, bool Q> struct Bvh::WideWalk {
         return S::ltGt(lo, S::sub(S::set1(0.0f), bound), hi, bound);
     }
 
+    // The sphere filter, written once for the single walk (S = Quad: four spheres against one
+    // ray; S = L on the 8-wide paths: eight) and the packets' transposed leaves (S = L: one
+    // sphere against the packet's rays): the squared distance of each centre from the ray's
+    // line, ll, against (r + (om + sm))², om the ray's |o|₁·margin and sm the sphere's; a
+    // sphere the exact code can hit (disc >= 0) is never rejected. sph(a) gives the spheres'
+    // values of the array a in the lanes (loads, or one sphere's broadcast); fo, fd, om the
+    // ray values. Returns the candidates' mask (cmpngt: NaN counts as a candidate). (Also
+    // rejecting spheres beyond the nearest hit, −h − r − margin > limit, measured no gain.)
+    template <class S, class Sph>
+    __attribute__((always_inline)) static int
+    sphereCandidates(const Bvh& b, Sph&& sph, const typename S::V* fo, const typename S::V* fd,
+                     typename S::V om) {
+        using SV = typename S::V;
+        const SV fx = S::sub(fo[0], sph(b.sx_.data()));
+        const SV fy = S::sub(fo[1], sph(b.sy_.data()));
+        const SV fz = S::sub(fo[2], sph(b.sz_.data()));
+        const SV h = S::add(S::add(S::mul(fx, fd[0]), S::mul(fy, fd[1])), S::mul(fz, fd[2]));
+        const SV lx = S::sub(fx, S::mul(h, fd[0]));
+        const SV ly = S::sub(fy, S::mul(h, fd[1]));
+        const SV lz = S::sub(fz, S::mul(h, fd[2]));
+        const SV ll = S::add(S::add(S::mul(lx, lx), S::mul(ly, ly)), S::mul(lz, lz));
+        const SV rm = S::add(sph(b.sr_.data()), S::add(om, sph(b.sm_.data())));
+        return S::ngt(ll, S::mul(rm, rm));
+    }
+
     // Runs the leaf's float tests and calls visit(i, r) for every candidate i (an index into
     // order_); stops and returns false as soon as visit does. `limit`: the walk's limit
     // when the leaf was entered (the other kinds' boxes beyond it are skipped).
@@ -349,26 +374,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
             }
             if constexpr (W == 8) {
                 if (runKind == kRunSphere) {
-                    // The 4-wide test below in eight lanes (the same operations lane by lane):
-                    // a leaf's run of up to eight spheres in one group.
+                    // sphereCandidates in eight lanes: a leaf's run of up to eight spheres
+                    // in one group.
                     for (std::uint32_t i = run; i < rEnd; i += 8) {
-                        const __m256 fx = _mm256_sub_ps(r.fo[0], _mm256_loadu_ps(&b.sx_[i]));
-                        const __m256 fy = _mm256_sub_ps(r.fo[1], _mm256_loadu_ps(&b.sy_[i]));
-                        const __m256 fz = _mm256_sub_ps(r.fo[2], _mm256_loadu_ps(&b.sz_[i]));
-                        const __m256 h = _mm256_add_ps(
-                            _mm256_add_ps(_mm256_mul_ps(fx, r.fd[0]), _mm256_mul_ps(fy, r.fd[1])),
-                            _mm256_mul_ps(fz, r.fd[2]));
-                        const __m256 lx = _mm256_sub_ps(fx, _mm256_mul_ps(h, r.fd[0]));
-                        const __m256 ly = _mm256_sub_ps(fy, _mm256_mul_ps(h, r.fd[1]));
-                        const __m256 lz = _mm256_sub_ps(fz, _mm256_mul_ps(h, r.fd[2]));
-                        const __m256 ll = _mm256_add_ps(
-                            _mm256_add_ps(_mm256_mul_ps(lx, lx), _mm256_mul_ps(ly, ly)),
-                            _mm256_mul_ps(lz, lz));
-                        const __m256 rm =
-                            _mm256_add_ps(_mm256_loadu_ps(&b.sr_[i]),
-                                          _mm256_add_ps(r.om, _mm256_loadu_ps(&b.sm_[i])));
-                        int mask = _mm256_movemask_ps(
-                            _mm256_cmp_ps(ll, _mm256_mul_ps(rm, rm), _CMP_NGT_UQ));
+                        auto sph = [&](const float* a) __attribute__((always_inline)) {
+                            return _mm256_loadu_ps(a + i);
+                        };
+                        int mask = sphereCandidates<L>(b, sph, r.fo, r.fd, r.om);
                         if (rEnd - i < 8) mask &= (1 << (rEnd - i)) - 1;
                         while (mask) {
                             const int l = __builtin_ctz(unsigned(mask));
@@ -383,26 +395,13 @@ template <class L, bool Q> struct Bvh::WideWalk {
             for (std::uint32_t i = run; i < rEnd; i += 4) {
                 int mask;
                 if (runKind == kRunSphere) {
-                    // Squared distance of each centre from the ray's line against (r +
-                    // margin)²: a sphere the exact code can hit (disc >= 0) is never rejected.
-                    const __m128 fo0 = L::low(r.fo[0]), fo1 = L::low(r.fo[1]),
-                                 fo2 = L::low(r.fo[2]), fd0 = L::low(r.fd[0]),
-                                 fd1 = L::low(r.fd[1]), fd2 = L::low(r.fd[2]);
-                    const __m128 fx = _mm_sub_ps(fo0, _mm_loadu_ps(&b.sx_[i]));
-                    const __m128 fy = _mm_sub_ps(fo1, _mm_loadu_ps(&b.sy_[i]));
-                    const __m128 fz = _mm_sub_ps(fo2, _mm_loadu_ps(&b.sz_[i]));
-                    const __m128 h = _mm_add_ps(
-                        _mm_add_ps(_mm_mul_ps(fx, fd0), _mm_mul_ps(fy, fd1)), _mm_mul_ps(fz, fd2));
-                    const __m128 lx = _mm_sub_ps(fx, _mm_mul_ps(h, fd0));
-                    const __m128 ly = _mm_sub_ps(fy, _mm_mul_ps(h, fd1));
-                    const __m128 lz = _mm_sub_ps(fz, _mm_mul_ps(h, fd2));
-                    const __m128 ll = _mm_add_ps(_mm_add_ps(_mm_mul_ps(lx, lx), _mm_mul_ps(ly, ly)),
-                                                 _mm_mul_ps(lz, lz));
-                    const __m128 rm = _mm_add_ps(_mm_loadu_ps(&b.sr_[i]),
-                                                 _mm_add_ps(L::low(r.om), _mm_loadu_ps(&b.sm_[i])));
-                    // cmpngt: NaN counts as a candidate. (Also rejecting spheres beyond the
-                    // nearest hit, −h − r − margin > limit, measured no gain: not kept.)
-                    mask = _mm_movemask_ps(_mm_cmpngt_ps(ll, _mm_mul_ps(rm, rm)));
+                    // sphereCandidates, four spheres against this ray.
+                    auto sph = [&](const float* a) __attribute__((always_inline)) {
+                        return _mm_loadu_ps(a + i);
+                    };
+                    const __m128 fo[3] = {L::low(r.fo[0]), L::low(r.fo[1]), L::low(r.fo[2])};
+                    const __m128 fd[3] = {L::low(r.fd[0]), L::low(r.fd[1]), L::low(r.fd[2])};
+                    mask = sphereCandidates<Quad>(b, sph, fo, fd, L::low(r.om));
                 } else if (runKind == kRunTriangle) {
                     if (!r.mtReady) r.mtSetup();
                     // The filter on the edges precomputed at the build (triangleRejects), four
@@ -1035,24 +1034,19 @@ template <class L, bool Q> struct Bvh::WideWalk {
         p.triLanes = lanes; // the filter has no per-ray axes: every lane is transposed
         p.triSet = true;
     }
-    // Sphere i against the lanes: visitLeaf's sphere test with ray j's values in lane j
-    // (fo − c, the dot, the rejection, (r + (om + sm))², cmpngt: NaN a candidate).
+    // Sphere i against the lanes: sphereCandidates with ray j's values in lane j (ray j's
+    // single-walk verdict: the same function).
     __attribute__((always_inline)) static unsigned sphereLanesTest(const Bvh& b, const Packet& p,
                                                                    std::uint32_t i) {
-        V f[3];
-        const float c[3] = {b.sx_[i], b.sy_[i], b.sz_[i]};
-        V fd[3];
+        auto sph = [i](const float* a) __attribute__((always_inline)) {
+            return L::set1(a[i]);
+        };
+        V fo[3], fd[3];
         for (int a = 0; a < 3; ++a) {
-            f[a] = L::sub(L::load(p.sfo[a]), L::set1(c[a]));
+            fo[a] = L::load(p.sfo[a]);
             fd[a] = L::load(p.sfd[a]);
         }
-        const V h = L::add(L::add(L::mul(f[0], fd[0]), L::mul(f[1], fd[1])), L::mul(f[2], fd[2]));
-        const V lx = L::sub(f[0], L::mul(h, fd[0]));
-        const V ly = L::sub(f[1], L::mul(h, fd[1]));
-        const V lz = L::sub(f[2], L::mul(h, fd[2]));
-        const V ll = L::add(L::add(L::mul(lx, lx), L::mul(ly, ly)), L::mul(lz, lz));
-        const V rm = L::add(L::set1(b.sr_[i]), L::add(L::load(p.som), L::set1(b.sm_[i])));
-        return unsigned(L::ngt(ll, L::mul(rm, rm)));
+        return unsigned(sphereCandidates<L>(b, sph, fo, fd, L::load(p.som)));
     }
     // Triangle i against the lanes of triLanes: triangleRejects with ray j's float origin,
     // direction and bound parts in lane j (ray j's single-walk verdict: the same function).
