@@ -54,7 +54,7 @@ struct WindowState {
     int downX = 0, downY = 0, lastX = 0, lastY = 0;
     XKeyboard xkb;          // key presses as X sees them: Cyrillic text, keys on any layout
     bool logKeys = false;   // WB_LOG_KEYS=1: print each lab key (the layout tests read it)
-    bool drewFrame = false; // the first frame is on screen (printed once with logKeys)
+    bool drewFrame = false; // logKeys: the first frame's line is printed
     std::string language;   // the language the window title was last set in
     std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
     // WB_FRAME_LOG=1: where a busy period's frames spent their time, printed when it ends.
@@ -359,8 +359,8 @@ void display() {
         // machine a lab's first frame (shaders, meshes) can take longer than any sleep.
         std::fprintf(stderr, "shell first frame\n");
         std::fflush(stderr);
+        g->drewFrame = true;
     }
-    g->drewFrame = true;
     if (g->frameLog) {
         auto msBetween = [](auto a, auto b) {
             return std::chrono::duration<double, std::milli>(b - a).count();

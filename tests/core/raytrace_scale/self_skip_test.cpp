@@ -121,6 +121,29 @@ class AsksEveryPrimitive : public Aggregate {
     const Aggregate& a_;
 };
 
+// The sphere cases' scene: a unit sphere (primitive 0) and a neighbour of radius 0.4 0.1 off.
+void addGrazingSpheres(Scene& sc) {
+    sc.add(Sphere({0.25, -0.5, 0.125}, 1.0), 0);
+    sc.add(Sphere({1.75, -0.5, 0.125}, 0.4), 0);
+}
+
+// An eye ray from above at addGrazingSpheres' unit sphere; true, with its hit, when that sphere
+// is what it meets first.
+bool eyeHitOnSphere(const Scene& sc, std::mt19937_64& g, Ray& eye, Hit& h) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    eye.origin = {0.25 + 3 * u(g), -0.5 + 3 * u(g), 6};
+    eye.direction =
+        glm::normalize(glm::dvec3(0.25, -0.5, 0.125) + 0.6 * rnd3(g, -1, 1) - eye.origin);
+    return sc.intersect(eye, 0.0, kInf, h) && h.primitive == sc.primitives[0].get();
+}
+
+// A point light 10 from the hit along a tangent direction tilted off the surface by cos.
+Light grazingLight(const Hit& h, double cos, std::mt19937_64& g) {
+    const glm::dvec3 t = glm::normalize(glm::cross(h.normal, rnd3(g, -1, 1)));
+    const glm::dvec3 dir = glm::normalize(t + cos * h.normal);
+    return Light::point(h.point + 10.0 * dir, glm::dvec3(1));
+}
+
 } // namespace
 
 TEST_CASE("shadow self-skip: only the flat primitive the feeler leaves is skipped", "[bvh][skip]") {
@@ -268,25 +291,16 @@ TEST_CASE("shadow self-skip: a sphere's feeler skips it only where its exact tes
     // be the exact tests' (every primitive asked, none skipped). A neighbour sphere 0.1
     // off blocks some feelers: skipping it instead of the feeler's own sphere fails too.
     Scene sc;
-    sc.add(Sphere({0.25, -0.5, 0.125}, 1.0), 0);
-    sc.add(Sphere({1.75, -0.5, 0.125}, 0.4), 0);
+    addGrazingSpheres(sc);
     const auto aggs = aggregates(sc);
     PhongModel model;
     std::mt19937_64 g(2112);
-    std::uniform_real_distribution<double> u(-1, 1);
     int selfBlocked = 0, lit = 0, neighbourBlocks = 0;
     for (int k = 0; k < 1200; ++k) {
         Ray eye;
-        eye.origin = {0.25 + 3 * u(g), -0.5 + 3 * u(g), 6};
-        eye.direction =
-            glm::normalize(glm::dvec3(0.25, -0.5, 0.125) + 0.6 * rnd3(g, -1, 1) - eye.origin);
         Hit h;
-        if (!sc.intersect(eye, 0.0, kInf, h) || h.primitive != sc.primitives[0].get()) continue;
-        // A tangent direction, tilted off the surface by cos.
-        const glm::dvec3 t = glm::normalize(glm::cross(h.normal, rnd3(g, -1, 1)));
-        const double cos = std::pow(10.0, -12 + (k % 12)) * 0.5;
-        const glm::dvec3 dir = glm::normalize(t + cos * h.normal);
-        sc.lights.assign(1, Light::point(h.point + 10.0 * dir, glm::dvec3(1)));
+        if (!eyeHitOnSphere(sc, g, eye, h)) continue;
+        sc.lights.assign(1, grazingLight(h, std::pow(10.0, -12 + (k % 12)) * 0.5, g));
         Tracer probe(sc, model);
         const auto s0 = probe.sampleLights(h);
         if (glm::dot(s0[0].toLight, h.normal) <= 0) continue; // faces away: no feeler
@@ -333,12 +347,10 @@ TEST_CASE("shadow self-skip: the packet path's lanes skip a sphere only where it
     // changes its light's diffuse and highlight terms (a grazing light's are ~cos, far above
     // a double's resolution at these colours).
     Scene sc;
-    sc.add(Sphere({0.25, -0.5, 0.125}, 1.0), 0);
-    sc.add(Sphere({1.75, -0.5, 0.125}, 0.4), 0);
+    addGrazingSpheres(sc);
     const auto aggs = aggregates(sc);
     PhongModel model;
     std::mt19937_64 g(2113);
-    std::uniform_real_distribution<double> u(-1, 1);
     int selfBlocked = 0, lit = 0, packets = 0;
     for (int k = 0; k < 150; ++k) {
         Ray rays[kMaxPacket];
@@ -346,15 +358,10 @@ TEST_CASE("shadow self-skip: the packet path's lanes skip a sphere only where it
         sc.lights.clear();
         for (int j = 0; j < kMaxPacket;) {
             Ray eye;
-            eye.origin = {0.25 + 3 * u(g), -0.5 + 3 * u(g), 6};
-            eye.direction =
-                glm::normalize(glm::dvec3(0.25, -0.5, 0.125) + 0.6 * rnd3(g, -1, 1) - eye.origin);
             Hit h;
-            if (!sc.intersect(eye, 0.0, kInf, h) || h.primitive != sc.primitives[0].get()) continue;
-            const glm::dvec3 t = glm::normalize(glm::cross(h.normal, rnd3(g, -1, 1)));
-            const double cos = std::pow(10.0, -12 + ((k * kMaxPacket + j) % 7)) * 0.5;
-            const glm::dvec3 dir = glm::normalize(t + cos * h.normal);
-            sc.lights.push_back(Light::point(h.point + 10.0 * dir, glm::dvec3(1)));
+            if (!eyeHitOnSphere(sc, g, eye, h)) continue;
+            sc.lights.push_back(
+                grazingLight(h, std::pow(10.0, -12 + ((k * kMaxPacket + j) % 7)) * 0.5, g));
             // The lane's own light: which of the exact tests block its feeler.
             Ray f;
             f.origin = h.point;
